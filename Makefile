@@ -1,0 +1,27 @@
+# Two-command quick start: `make demo` runs the main job, `make test` runs the tests.
+PY ?= python3.11
+VENV ?= .venv
+BIN := $(VENV)/bin
+OUT ?= out/demo
+
+.PHONY: install demo test bench clean
+
+$(BIN)/luminous: pyproject.toml
+	$(PY) -m venv $(VENV) || python3 -m venv $(VENV)
+	$(BIN)/pip install --quiet --upgrade pip
+	$(BIN)/pip install --quiet -e '.[test]'
+	touch $(BIN)/luminous
+
+install: $(BIN)/luminous
+
+demo: install
+	$(BIN)/luminous demo --out $(OUT) --seed 0
+
+test: install
+	$(BIN)/python -m pytest -q -m "not slow" tests
+
+bench: install
+	for f in benchmarks/bench_*.py; do $(BIN)/python $$f || exit 1; done
+
+clean:
+	rm -rf $(VENV) out .pytest_cache

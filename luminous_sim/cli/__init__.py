@@ -1,0 +1,1 @@
+"""The `luminous` command: thin shells over tested library functions."""
