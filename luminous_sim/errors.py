@@ -28,3 +28,7 @@ class InfeasibleSceneError(LuminousError):
 
 class PlanningError(LuminousError):
     """The oracle planner found no plan, or execution diverged beyond repair."""
+
+
+class RoomError(LuminousError):
+    """A room structure that is malformed, cannot be generated, converted or found in the library."""

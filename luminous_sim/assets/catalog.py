@@ -1,0 +1,113 @@
+"""The asset catalog: every asset's type, variant, size, abilities, regions, joints and files."""
+
+from __future__ import annotations
+
+import json
+from functools import cache
+from pathlib import Path
+from typing import Any
+
+from pydantic import BaseModel, ConfigDict
+
+from luminous_sim.assets.paths import asset_root, user_asset_root
+from luminous_sim.errors import AssetError
+
+CATALOG_NAME = "catalog.json"
+
+
+class AssetEntry(BaseModel):
+    """One asset as listed in a catalog (see urdf_writer.write_asset for how it is made)."""
+
+    model_config = ConfigDict(frozen=True, extra="allow")
+
+    id: str
+    type: str
+    variant: int
+    category: str
+    description: str = ""
+    urdf: str
+    files: list[str]
+    bbox_min: list[float]
+    bbox_max: list[float]
+    dims: list[float]
+    mass: float
+    abilities: dict[str, bool]
+    links: list[str]
+    link_origins: dict[str, list[float]]
+    joints: list[dict[str, Any]]
+    regions: list[dict[str, Any]]
+    visuals: list[dict[str, Any]]
+    palettes: dict[str, list[list[float]]]
+    slices: dict[str, Any] | None = None
+    anchors: list[dict[str, Any]] = []
+    collision_hulls: int = 0
+    visual_vertices: int = 0
+    root: str = ""
+    """Folder the relative paths are resolved against (filled in when loaded)."""
+
+    @property
+    def urdf_path(self) -> Path:
+        return Path(self.root) / self.urdf
+
+    def regions_of(self, kind: str) -> list[dict[str, Any]]:
+        return [r for r in self.regions if r["kind"] == kind]
+
+
+class Catalog:
+    """All assets of the built-in library plus the user's imported ones."""
+
+    def __init__(self, entries: list[AssetEntry]):
+        self._by_id = {e.id: e for e in entries}
+        self._by_type: dict[str, list[AssetEntry]] = {}
+        for e in sorted(entries, key=lambda e: (e.type, e.variant, e.id)):
+            self._by_type.setdefault(e.type, []).append(e)
+
+    @staticmethod
+    def read(root: Path) -> list[AssetEntry]:
+        """The entries of one library folder (empty if it has no catalog)."""
+        path = root / CATALOG_NAME
+        if not path.exists():
+            return []
+        try:
+            doc = json.loads(path.read_text())
+            return [AssetEntry(**{**e, "root": str(root)}) for e in doc["assets"]]
+        except (ValueError, KeyError, TypeError) as exc:
+            raise AssetError(f"{path}: not a valid asset catalog ({exc})") from exc
+
+    @classmethod
+    def load(cls, root: Path | None = None, include_user: bool = True) -> Catalog:
+        entries = cls.read(Path(root or asset_root()))
+        if include_user:
+            entries += cls.read(user_asset_root())
+        return cls(entries)
+
+    def __len__(self) -> int:
+        return len(self._by_id)
+
+    def __iter__(self):
+        return iter(sorted(self._by_id.values(), key=lambda e: e.id))
+
+    def __contains__(self, asset_id: str) -> bool:
+        return asset_id in self._by_id
+
+    def get(self, asset_id: str) -> AssetEntry:
+        try:
+            return self._by_id[asset_id]
+        except KeyError:
+            raise AssetError(f"no asset {asset_id!r} in the catalog") from None
+
+    def of_type(self, object_type: str) -> list[AssetEntry]:
+        """Every variant of a type (built-in first, then imported), possibly empty."""
+        return list(self._by_type.get(object_type, []))
+
+    def types(self) -> list[str]:
+        return sorted(self._by_type)
+
+    def to_json(self) -> list[dict[str, Any]]:
+        return [e.model_dump(exclude={"root"}) for e in self]
+
+
+@cache
+def default_catalog() -> Catalog:
+    """The catalog of the installed library plus the user library (cached per process)."""
+    return Catalog.load()

@@ -1,0 +1,72 @@
+"""Placement layers and priorities (data): CSSG places room structure, then furniture, then objects,
+then decorations; within a layer, a higher priority `q` is placed first (paper: q(desk) > q(chair))."""
+
+from __future__ import annotations
+
+from enum import IntEnum
+
+from luminous_sim.cdf.affordances import has_ability
+
+
+class Layer(IntEnum):
+    """The four placement layers, in placement order."""
+
+    STRUCTURE = 0
+    FURNITURE = 1
+    OBJECT = 2
+    DECORATION = 3
+
+
+STRUCTURE_TYPES: frozenset[str] = frozenset({"Window", "LightSwitch", "ShowerDoor", "ShowerGlass"})
+"""Types that belong to the room itself."""
+
+DECORATION_TYPES: frozenset[str] = frozenset({"Painting", "Poster", "Curtains", "Blinds", "Mirror"})
+"""Types placed last, on walls or windows."""
+
+PRIORITY: dict[str, int] = {
+    "CounterTop": 100, "Bed": 100, "Sofa": 95, "Fridge": 95, "Bathtub": 95, "DiningTable": 90,
+    "Toilet": 90, "Sink": 88, "Desk": 85, "Dresser": 80, "TVStand": 80, "Cabinet": 78,
+    "Shelf": 70, "StoveBurner": 70, "CoffeeTable": 60, "SideTable": 60, "Television": 58,
+    "ArmChair": 55, "Safe": 45, "Chair": 40, "Ottoman": 35, "Footstool": 30, "FloorLamp": 25,
+    "GarbageCan": 20, "LaundryHamper": 20, "HousePlant": 15,
+}
+"""Placement priority q(type) of furniture; types not listed get DEFAULT_PRIORITY."""
+
+DEFAULT_PRIORITY = 50
+RECEPTACLE_OBJECT_PRIORITY = 60
+"""Movable receptacles (Bowl, Plate, ...) go before the small objects that may sit in them."""
+
+_LAYER_NAMES: dict[str, Layer] = {
+    "structure": Layer.STRUCTURE,
+    "furniture": Layer.FURNITURE,
+    "object": Layer.OBJECT,
+    "decoration": Layer.DECORATION,
+}
+
+
+def layer_of(object_type: str, declared: str | None = None, supported: bool = False) -> Layer:
+    """The layer an object is placed in.
+
+    Args:
+        object_type: Its vocabulary type.
+        declared: The layer named in the CDF entry, which wins when given.
+        supported: Whether the object is on/in another one, which makes it at least an OBJECT.
+    """
+    if declared is not None:
+        return _LAYER_NAMES[declared]
+    if object_type in DECORATION_TYPES:
+        return Layer.DECORATION
+    if object_type in STRUCTURE_TYPES:
+        return Layer.STRUCTURE
+    if supported or has_ability(object_type, "pickupable"):
+        return Layer.OBJECT
+    return Layer.FURNITURE
+
+
+def priority(object_type: str) -> int:
+    """Placement priority q(type): higher is placed earlier within a layer."""
+    if object_type in PRIORITY:
+        return PRIORITY[object_type]
+    if has_ability(object_type, "movable_receptacle"):
+        return RECEPTACLE_OBJECT_PRIORITY
+    return DEFAULT_PRIORITY

@@ -1,0 +1,87 @@
+"""Load catalog assets into a PyBullet client: URDF, link lookup, colour randomisation, state visuals."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import pybullet as p
+from pybullet_utils.bullet_client import BulletClient
+
+from luminous_sim.assets.catalog import AssetEntry
+
+
+@dataclass
+class LoadedAsset:
+    """A catalog asset living in one client."""
+
+    entry: AssetEntry
+    body: int
+    link_index: dict[str, int]
+    joint_index: dict[str, int]
+    colors: dict[tuple[str, int], list[float]] = field(default_factory=dict)
+    """Current colour of each (link, visual index), alpha excluded from state toggling."""
+
+
+def load_asset(
+    client: BulletClient, entry: AssetEntry, position=(0.0, 0.0, 0.0), yaw: float = 0.0,
+    fixed: bool = False, rng: np.random.Generator | None = None,
+) -> LoadedAsset:
+    """Load `entry` at `position` turned by `yaw` (radians about z); with `rng`, randomise its colours."""
+    orn = client.getQuaternionFromEuler([0, 0, yaw])
+    body = client.loadURDF(
+        str(entry.urdf_path), list(position), orn, useFixedBase=fixed,
+        flags=p.URDF_USE_INERTIA_FROM_FILE | p.URDF_MAINTAIN_LINK_ORDER,
+    )
+    link_index = {"base": -1}
+    joint_index = {}
+    for j in range(client.getNumJoints(body)):
+        info = client.getJointInfo(body, j)
+        link_index[info[12].decode()] = j
+        joint_index[info[1].decode()] = j
+    loaded = LoadedAsset(entry, body, link_index, joint_index)
+    palettes = entry.palettes
+    for vis in entry.visuals:
+        choices = palettes[vis["slot"]]
+        idx = entry.variant % len(choices) if rng is None else int(rng.integers(len(choices)))
+        loaded.colors[(vis["link"], vis["index"])] = list(choices[idx])
+    if rng is not None:
+        for vis in entry.visuals:
+            set_visual_alpha(client, loaded, vis["link"], vis["index"], _default_alpha(vis["state"]))
+    return loaded
+
+
+def _default_alpha(state: str | None) -> float:
+    return 0.0 if state in ("on", "dirty", "open") else 1.0
+
+
+def set_visual_alpha(client: BulletClient, loaded: LoadedAsset, link: str, index: int, alpha: float) -> None:
+    """Show (alpha 1) or hide (alpha 0: gone from RGB and segmentation) one visual of an asset."""
+    rgba = list(loaded.colors[(link, index)][:3]) + [alpha]
+    client.changeVisualShape(loaded.body, loaded.link_index[link], shapeIndex=index, rgbaColor=rgba)
+
+
+def show_state(client: BulletClient, loaded: LoadedAsset, state: str, active: bool) -> None:
+    """Make the visuals tagged `state` visible iff `active` (and their opposite visible iff not)."""
+    opposite = {"on": "off", "off": "on", "dirty": "clean", "clean": "dirty", "open": "closed",
+                "closed": "open"}[state]
+    for vis in loaded.entry.visuals:
+        if vis["state"] == state:
+            set_visual_alpha(client, loaded, vis["link"], vis["index"], 1.0 if active else 0.0)
+        elif vis["state"] == opposite:
+            set_visual_alpha(client, loaded, vis["link"], vis["index"], 0.0 if active else 1.0)
+
+
+def set_joint(client: BulletClient, loaded: LoadedAsset, joint: str, value: float) -> None:
+    """Put a joint at `value` (rad or m) and hold it there with its motor."""
+    j = loaded.joint_index[joint]
+    client.resetJointState(loaded.body, j, value)
+    client.setJointMotorControl2(loaded.body, j, p.POSITION_CONTROL, targetPosition=value, force=200)
+
+
+def base_link_pose(client: BulletClient, body: int) -> tuple[tuple[float, ...], tuple[float, ...]]:
+    """The pose of the base *link* frame (PyBullet reports the base's inertial frame instead)."""
+    pos, orn = client.getBasePositionAndOrientation(body)
+    local_pos, local_orn = client.getDynamicsInfo(body, -1)[3:5]
+    inv_pos, inv_orn = client.invertTransform(local_pos, local_orn)
+    return client.multiplyTransforms(pos, orn, inv_pos, inv_orn)

@@ -1,0 +1,36 @@
+"""Camera images from PyBullet: RGB, depth in metres, and instance segmentation (TinyRenderer)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import pybullet as p
+from pybullet_utils.bullet_client import BulletClient
+
+
+@dataclass(frozen=True)
+class Frame:
+    """One rendered view: rgb (H,W,3) uint8, depth (H,W) float32 metres, seg (H,W) int32 raw PyBullet ids."""
+
+    rgb: np.ndarray
+    depth: np.ndarray
+    seg: np.ndarray
+
+
+def render(
+    client: BulletClient, eye, target, up=(0.0, 0.0, 1.0), width: int = 300, height: int = 300,
+    fov: float = 60.0, near: float = 0.05, far: float = 20.0, renderer: int = p.ER_TINY_RENDERER,
+    shadows: bool = False, light_direction=(0.4, -0.6, 1.0),
+) -> Frame:
+    """Render from `eye` looking at `target`; depth converted from the z-buffer to metres."""
+    view = client.computeViewMatrix(list(eye), list(target), list(up))
+    proj = client.computeProjectionMatrixFOV(fov, width / height, near, far)
+    _, _, rgba, zbuf, seg = client.getCameraImage(
+        width, height, view, proj, renderer=renderer, shadow=int(shadows), lightDirection=list(light_direction),
+        flags=p.ER_SEGMENTATION_MASK_OBJECT_AND_LINKINDEX,
+    )
+    rgb = np.asarray(rgba, dtype=np.uint8).reshape(height, width, 4)[:, :, :3]
+    z = np.asarray(zbuf, dtype=np.float32).reshape(height, width)
+    depth = (far * near / (far - (far - near) * z)).astype(np.float32)
+    return Frame(rgb, depth, np.asarray(seg, dtype=np.int32).reshape(height, width))
