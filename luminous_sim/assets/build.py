@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import fcntl
 import json
 import shutil
 import time
@@ -76,12 +77,15 @@ def build_library(
             bar.update()
     bar.close()
     catalog_path = out / CATALOG_NAME
-    kept = []
-    if catalog_path.exists() and types:
-        kept = [e for e in json.loads(catalog_path.read_text())["assets"] if e["type"] not in set(chosen)]
-    all_entries = sorted(kept + entries, key=lambda e: e["id"])
-    doc = {"version": CATALOG_VERSION, "assets": all_entries}
-    write_atomic(catalog_path, json.dumps(doc, indent=1, sort_keys=True) + "\n")
+    out.mkdir(parents=True, exist_ok=True)
+    with open(out / ".catalog.lock", "w") as lock:  # partial builds in parallel merge, never clobber
+        fcntl.flock(lock, fcntl.LOCK_EX)
+        kept = []
+        if catalog_path.exists() and types:
+            kept = [e for e in json.loads(catalog_path.read_text())["assets"] if e["type"] not in set(chosen)]
+        all_entries = sorted(kept + entries, key=lambda e: e["id"])
+        doc = {"version": CATALOG_VERSION, "assets": all_entries}
+        write_atomic(catalog_path, json.dumps(doc, indent=1, sort_keys=True) + "\n")
     computed = _cache_size(cache) - before
     return BuildReport(
         assets=len(entries),

@@ -62,6 +62,19 @@ PALETTES: dict[str, tuple[RGBA, ...]] = {
 }
 
 
+def add_palettes(**palettes: tuple[RGBA, ...]) -> None:
+    """Register palettes a builder module needs (at import time); redefining one differently is an error."""
+    for name, colours in palettes.items():
+        if name in PALETTES and PALETTES[name] != tuple(colours):
+            raise ValueError(f"palette {name!r} is already defined differently")
+        PALETTES[name] = tuple(colours)
+
+
+def hex_colours(*codes: str, alpha: float = 1.0) -> tuple[RGBA, ...]:
+    """Palette entries from hex codes such as "a0703c"."""
+    return _hex(*codes, alpha=alpha)
+
+
 def palette(slot: str) -> tuple[RGBA, ...]:
     """The palette of a material slot; an unknown slot is a programming error in a builder."""
     try:

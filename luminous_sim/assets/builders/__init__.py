@@ -1,3 +1,13 @@
 """Procedural builders, one module per family; importing this package registers them all."""
 
-from luminous_sim.assets.builders import decor_structure, food, kitchen, kitchenware, seating  # noqa: F401
+from luminous_sim.assets.builders import (  # noqa: F401
+    bathroom,
+    decor_structure,
+    food,
+    household,
+    kitchen,
+    kitchenware,
+    seating,
+    storage,
+    tables,
+)

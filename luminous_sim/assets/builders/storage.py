@@ -1,0 +1,3 @@
+"""Storage: cabinets, drawers, dressers, carts, safes, hampers, garbage cans, boxes."""
+
+from __future__ import annotations

@@ -1,0 +1,3 @@
+"""Tables, desks, TV stands and shelves (furniture)."""
+
+from __future__ import annotations
