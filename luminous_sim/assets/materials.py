@@ -59,6 +59,7 @@ PALETTES: dict[str, tuple[RGBA, ...]] = {
     "tomato": _hex("d62828", "e63946", "c1121f"),
     "tomato_flesh": _hex("e5383b", "f25c54"),
     "stem": _hex("5a3d1e", "3f6b22"),
+    "imported": _hex("b4b4b4", "8c9aa8", "c8b496", "a0a0a0"),
 }
 
 

@@ -1,0 +1,1 @@
+"""Layer L1: Constrained Stochastic Scene Generation (and the uniform-random baseline)."""

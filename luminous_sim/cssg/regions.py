@@ -1,0 +1,82 @@
+"""Putting small objects on support surfaces and into interior volumes of placed receptacles."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+from shapely.geometry import Point, Polygon
+
+from luminous_sim.assets.catalog import AssetEntry
+from luminous_sim.cssg.pose import rotate
+from luminous_sim.scene.model import SceneObject
+
+
+@dataclass(frozen=True)
+class RegionSpot:
+    """A receptacle region in world terms: centre, size, base height, yaw (of its host)."""
+
+    host: SceneObject
+    name: str
+    kind: str
+    center: tuple[float, float]
+    size: tuple[float, float]
+    floor_z: float
+    clearance: float
+    yaw: float
+
+
+def region_spots(host: SceneObject, entry: AssetEntry) -> list[RegionSpot]:
+    """Every region of a placed receptacle, with joints at zero (closed), in world coordinates."""
+    spots = []
+    for r in entry.regions:
+        c = np.array(r["center"]) + np.array(entry.link_origins[r["link"]])
+        sx, sy, sz = r["size"]
+        xy = rotate(c[:2][None], host.yaw)[0] + host.position[:2]
+        if r["kind"] == "surface":
+            floor_z, clearance = host.position[2] + c[2], sz
+        else:
+            floor_z, clearance = host.position[2] + c[2] - sz / 2, sz
+        spots.append(RegionSpot(host, r["name"], r["kind"], (float(xy[0]), float(xy[1])), (sx, sy),
+                                float(floor_z), float(clearance), host.yaw))
+    return spots
+
+
+def fits(entry: AssetEntry, spot: RegionSpot) -> bool:
+    """Whether the object could stand in the region at all (size and height)."""
+    w, d, h = entry.dims
+    return h <= spot.clearance + 1e-6 and min(w, d) <= min(spot.size) and max(w, d) <= max(spot.size)
+
+
+def sample_in_region(
+    entry: AssetEntry, spot: RegionSpot, rng: np.random.Generator, occupied: list[Polygon], tries: int = 20,
+    yaw_choices: int = 4,
+) -> tuple[float, float, float, float, Polygon] | None:
+    """A free pose (x, y, z, yaw) for `entry` inside `spot`, avoiding `occupied` footprints (world xy)."""
+    lo, hi = np.array(entry.bbox_min[:2]), np.array(entry.bbox_max[:2])
+    center_local = (lo + hi) / 2
+    half = (hi - lo) / 2
+    for _ in range(tries):
+        k = int(rng.integers(yaw_choices))
+        rel_yaw = k * 2 * math.pi / yaw_choices
+        ex, ey = (half if k % 2 == 0 else half[::-1]) if yaw_choices == 4 else (np.max(half),) * 2
+        room_x, room_y = spot.size[0] / 2 - ex, spot.size[1] / 2 - ey
+        if room_x < 0 or room_y < 0:
+            continue
+        px, py = rng.uniform(-room_x, room_x), rng.uniform(-room_y, room_y)
+        target = rotate(np.array([[px, py]]), spot.yaw)[0] + spot.center
+        yaw = spot.yaw + rel_yaw
+        origin = target - rotate(center_local[None], yaw)[0]
+        corners = np.array([[lo[0], lo[1]], [hi[0], lo[1]], [hi[0], hi[1]], [lo[0], hi[1]]])
+        fp = Polygon(rotate(corners, yaw) + origin)
+        if any(fp.intersects(o) for o in occupied):
+            continue
+        return float(origin[0]), float(origin[1]), spot.floor_z - entry.bbox_min[2] + 0.002, yaw, fp
+    return None
+
+
+def contains_point(spot: RegionSpot, x: float, y: float) -> bool:
+    """Whether a world point lies over the region's rectangle."""
+    local = rotate(np.array([[x - spot.center[0], y - spot.center[1]]]), -spot.yaw)[0]
+    return bool(abs(local[0]) <= spot.size[0] / 2 and abs(local[1]) <= spot.size[1] / 2) and Point(x, y).is_valid

@@ -1,0 +1,57 @@
+"""The placement rule tables (data files in `data/`), loaded once."""
+
+from __future__ import annotations
+
+import json
+from functools import cache
+from importlib import resources
+from typing import Any
+
+from luminous_sim.vocab import abilities, receptacle_objects
+
+
+@cache
+def _load(name: str) -> dict[str, Any]:
+    return json.loads(resources.files("luminous_sim.cssg").joinpath(f"data/{name}").read_text())
+
+
+def placement() -> dict[str, Any]:
+    return _load("placement.json")
+
+
+def room_defaults(room_type: str) -> dict[str, Any]:
+    return _load("room_defaults.json")[room_type]
+
+
+def layer_of(object_type: str) -> str:
+    """fixture, furniture, wall or object."""
+    p = placement()
+    if object_type in p["fixture"]:
+        return "fixture"
+    if object_type in p["furniture"]:
+        return "furniture"
+    if object_type in p["wall"]:
+        return "wall"
+    return "object"
+
+
+def wall_height(object_type: str) -> float:
+    """Height of the bottom of a wall-hung object above the floor."""
+    return float(placement()["wall"][object_type])
+
+
+def supports_for(object_type: str) -> frozenset[str]:
+    """Receptacle types an object may rest on/in: ALFRED's table for pickupables, else our supports table."""
+    extra = placement()["supports"].get(object_type)
+    if extra is not None:
+        return frozenset(extra)
+    if not abilities(object_type).pickupable:
+        return frozenset()
+    return frozenset(r for r in placement_receptacles() if object_type in receptacle_objects(r))
+
+
+@cache
+def placement_receptacles() -> tuple[str, ...]:
+    from luminous_sim.vocab import vocab_data
+
+    return tuple(sorted(vocab_data()["receptacle_objects"]))

@@ -1,0 +1,24 @@
+"""AI2-THOR style object ids: `Type|+x.xx|+h.hh|+y.yy` in THOR axes (x, height, depth)."""
+
+from __future__ import annotations
+
+
+def thor_object_id(object_type: str, position: tuple[float, float, float], taken: set[str]) -> str:
+    """The id ALFRED would give an object at `position` (ours: x, y, z up), unique among `taken`.
+
+    THOR's (x, y, z) is our (x, z, y); two decimals, sign always shown, zero padded ("+00.46").
+    A clash (two objects at the same rounded spot) gets a `|k` suffix.
+    """
+    x, y, z = position
+    base = f"{object_type}|{x:+06.2f}|{z:+06.2f}|{y:+06.2f}"
+    oid, k = base, 1
+    while oid in taken:
+        k += 1
+        oid = f"{base}|{k}"
+    taken.add(oid)
+    return oid
+
+
+def slice_object_id(parent_id: str, sliced_type: str, index: int) -> str:
+    """ALFRED's slice ids: `Apple|x|y|z|AppleSliced_1` (1-based)."""
+    return f"{parent_id}|{sliced_type}_{index + 1}"

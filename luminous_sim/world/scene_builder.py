@@ -1,0 +1,125 @@
+"""Build a Scene into one PyBullet client: floor, walls with openings, and every object; then settle."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+import numpy as np
+import pybullet as p
+from pybullet_utils.bullet_client import BulletClient
+
+from luminous_sim.assets.catalog import Catalog, default_catalog
+from luminous_sim.assets.materials import palette
+from luminous_sim.scene.model import Scene, SceneObject
+from luminous_sim.world.asset_loader import LoadedAsset, base_link_pose, load_asset, set_joint, show_state
+from luminous_sim.world.client import new_client
+
+
+@dataclass
+class BuiltScene:
+    """A scene living in a client: object id -> loaded asset, and the structure bodies."""
+
+    client: BulletClient
+    scene: Scene
+    objects: dict[str, LoadedAsset]
+    floor: int
+    walls: list[int] = field(default_factory=list)
+
+    def body_of(self, object_id: str) -> int:
+        return self.objects[object_id].body
+
+    def pose_of(self, object_id: str) -> tuple[np.ndarray, float]:
+        """Base-link position and yaw of an object now."""
+        pos, orn = base_link_pose(self.client, self.objects[object_id].body)
+        return np.array(pos), float(self.client.getEulerFromQuaternion(orn)[2])
+
+
+def _box(client: BulletClient, center, size, yaw: float, rgba) -> int:
+    half = [s / 2 for s in size]
+    shape = client.createCollisionShape(p.GEOM_BOX, halfExtents=half)
+    visual = client.createVisualShape(p.GEOM_BOX, halfExtents=half, rgbaColor=list(rgba))
+    return client.createMultiBody(0, shape, visual, list(center), client.getQuaternionFromEuler([0, 0, yaw]))
+
+
+def _apply_states(client: BulletClient, obj: SceneObject, loaded: LoadedAsset) -> None:
+    if obj.states.get("isOpen"):
+        for j in loaded.entry.joints:
+            if j["role"] in ("door", "drawer", "lid"):
+                set_joint(client, loaded, j["name"], j["upper"])
+    else:
+        for j in loaded.entry.joints:
+            if j["kind"] != "fixed":
+                set_joint(client, loaded, j["name"], j["lower"])
+    if obj.states.get("isToggled"):
+        show_state(client, loaded, "on", True)
+    if obj.states.get("isDirty"):
+        show_state(client, loaded, "dirty", True)
+
+
+def floor_rectangles(poly) -> list[tuple[tuple[float, float], tuple[float, float]]]:
+    """Cover a rectilinear floor polygon with axis-aligned rectangles (vertical strips between vertices)."""
+    from shapely.geometry import box
+
+    xs = sorted({round(x, 6) for x, _ in poly.exterior.coords})
+    miny, maxy = poly.bounds[1], poly.bounds[3]
+    out = []
+    for x0, x1 in zip(xs, xs[1:]):
+        piece = poly.intersection(box(x0, miny - 1, x1, maxy + 1))
+        for g in getattr(piece, "geoms", [piece]):
+            if g.area > 1e-9:
+                bx0, by0, bx1, by1 = g.bounds
+                out.append(((bx0, by0), (bx1, by1)))
+    return out
+
+
+def build_scene(scene: Scene, catalog: Catalog | None = None, client: BulletClient | None = None,
+                settle_steps: int = 240) -> BuiltScene:
+    """Create the room and objects in `client` (a new DIRECT one by default) and let them settle."""
+    catalog = catalog or default_catalog()
+    client = client or new_client()
+    room = scene.room
+    minx, miny, maxx, maxy = room.bounds
+    rng = np.random.default_rng(scene.seed)
+    floor_rgba = palette("floor")[int(rng.integers(len(palette("floor"))))]
+    wall_rgba = palette("wall")[int(rng.integers(len(palette("wall"))))]
+    t = room.wall_thickness
+    floor = _box(client, ((minx + maxx) / 2, (miny + maxy) / 2, -0.15),
+                 (maxx - minx + 2 * t, maxy - miny + 2 * t, 0.1), 0.0, (1, 1, 1, 0))
+    for lo, hi in floor_rectangles(room.polygon().buffer(t / 2, join_style="mitre")):
+        slab = _box(client, ((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, -0.05), (hi[0] - lo[0], hi[1] - lo[1], 0.1),
+                    0.0, floor_rgba)
+        client.changeDynamics(slab, -1, lateralFriction=0.9)
+    walls = [_box(client, w.center, w.size, w.yaw, wall_rgba) for w in room.wall_boxes()]
+    objects: dict[str, LoadedAsset] = {}
+    for obj in scene.objects:
+        entry = catalog.get(obj.asset)
+        loaded = load_asset(client, entry, obj.position, obj.yaw, fixed=obj.fixed,
+                            rng=np.random.default_rng(obj.color_seed))
+        _apply_states(client, obj, loaded)
+        objects[obj.id] = loaded
+    for _ in range(settle_steps):
+        client.stepSimulation()
+    return BuiltScene(client, scene, objects, floor, walls)
+
+
+@dataclass(frozen=True)
+class SettleReport:
+    """How far each movable object went while settling, and which ones fell or left their support."""
+
+    moved: dict[str, float]
+    fell: list[str]
+
+
+def settle_report(built: BuiltScene, moved_tol: float = 0.01) -> SettleReport:
+    """Compare every movable object's pose now with its scene pose."""
+    moved, fell = {}, []
+    for obj in built.scene.objects:
+        if obj.fixed:
+            continue
+        pos, _ = built.pose_of(obj.id)
+        d = float(np.linalg.norm(pos - np.array(obj.position)))
+        if d > moved_tol:
+            moved[obj.id] = round(d, 4)
+        if pos[2] < obj.position[2] - 0.05:
+            fell.append(obj.id)
+    return SettleReport(moved, fell)

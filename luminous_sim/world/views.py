@@ -1,0 +1,61 @@
+"""Pictures of a built scene: a labelled top-down view and egocentric snapshots."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+from PIL import Image, ImageDraw, ImageFont
+
+from luminous_sim.world.camera import Frame, render
+from luminous_sim.world.scene_builder import BuiltScene
+
+AGENT_EYE_HEIGHT = 1.5
+
+
+def _project(view: np.ndarray, proj: np.ndarray, pts: np.ndarray, w: int, h: int) -> np.ndarray:
+    homo = np.hstack([pts, np.ones((len(pts), 1))])
+    clip = homo @ view @ proj  # PyBullet matrices are column-major, i.e. row-vector convention
+    ndc = clip[:, :3] / clip[:, 3:4]
+    return np.stack([(ndc[:, 0] + 1) / 2 * w, (1 - ndc[:, 1]) / 2 * h], axis=1)
+
+
+def top_down(built: BuiltScene, px_per_m: int = 90, labels: bool = True, grid: np.ndarray | None = None) -> Image.Image:
+    """A near-orthographic view from high above (north up), with object types written on them."""
+    minx, miny, maxx, maxy = built.scene.room.bounds
+    margin = 0.4
+    span_x, span_y = maxx - minx + 2 * margin, maxy - miny + 2 * margin
+    w, h = int(span_x * px_per_m), int(span_y * px_per_m)
+    cx, cy = (minx + maxx) / 2, (miny + maxy) / 2
+    height = 40.0
+    fov = math.degrees(2 * math.atan(span_y / 2 / height))
+    client = built.client
+    eye, target = (cx, cy, height), (cx, cy, 0.0)
+    frame = render(client, eye, target, up=(0, 1, 0), width=w, height=h, fov=fov, near=height - 3.5,
+                   far=height + 1.0)
+    img = Image.fromarray(frame.rgb)
+    draw = ImageDraw.Draw(img)
+    view = np.array(client.computeViewMatrix(eye, target, [0, 1, 0])).reshape(4, 4)
+    proj = np.array(client.computeProjectionMatrixFOV(fov, w / h, height - 3.5, height + 1.0)).reshape(4, 4)
+    if grid is not None and len(grid):
+        pts = _project(view, proj, np.hstack([grid, np.zeros((len(grid), 1))]), w, h)
+        for x, y in pts:
+            draw.ellipse([x - 2, y - 2, x + 2, y + 2], fill=(40, 160, 255))
+    if labels:
+        font = ImageFont.load_default()
+        for obj in built.scene.objects:
+            if obj.layer == "object":
+                continue
+            pos, _ = built.pose_of(obj.id)
+            x, y = _project(view, proj, pos[None], w, h)[0]
+            draw.text((x - 3 * len(obj.type), y - 5), obj.type, fill=(0, 0, 0), font=font)
+    return img
+
+
+def egocentric(built: BuiltScene, x: float, y: float, yaw_deg: float, horizon_deg: float = 30.0,
+               width: int = 300, height: int = 300, fov: float = 60.0) -> Frame:
+    """What an agent standing at (x, y), facing yaw (0 = +y, 90 = +x), pitched down by `horizon`, sees."""
+    yaw, pitch = math.radians(yaw_deg), math.radians(horizon_deg)
+    eye = np.array([x, y, AGENT_EYE_HEIGHT])
+    forward = np.array([math.sin(yaw) * math.cos(pitch), math.cos(yaw) * math.cos(pitch), -math.sin(pitch)])
+    return render(built.client, eye, eye + forward, width=width, height=height, fov=fov, near=0.05, far=20)
