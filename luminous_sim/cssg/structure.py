@@ -59,7 +59,8 @@ def _tile_counter(draft: SceneDraft, wall: Wall, a: float, b: float) -> list[Sce
     return out
 
 
-def _stove(draft: SceneDraft, wall: Wall, slot: FixtureSlot, counter_top: float, depth: float) -> None:
+def _stove(draft: SceneDraft, wall: Wall, slot: FixtureSlot, counter_top: float, depth: float,
+           host: str | None) -> None:
     burner = draft.pick_variant("StoveBurner")
     knob = draft.pick_variant("StoveKnob")
     if burner is None:
@@ -69,11 +70,11 @@ def _stove(draft: SceneDraft, wall: Wall, slot: FixtureSlot, counter_top: float,
     for du in (-0.17, 0.17):
         for dv in (0.17, 0.42):
             x, y = wall.point(mid + du - (burner.bbox_min[0] + burner.bbox_max[0]) / 2, GAP + dv)
-            draft.add(burner, x, y, counter_top - burner.bbox_min[2], yaw, "fixture", True)
+            draft.add(burner, x, y, counter_top - burner.bbox_min[2], yaw, "fixture", True, parent=host)
             if knob is not None and dv == 0.17:
                 for k in (-0.05, 0.05):
                     kx, ky = wall.point(mid + du + k, GAP + depth - knob.bbox_min[1])
-                    draft.add(knob, kx, ky, counter_top - 0.12, yaw, "fixture", True)
+                    draft.add(knob, kx, ky, counter_top - 0.12, yaw, "fixture", True, parent=host)
 
 
 def _counter_top_height(draft: SceneDraft) -> float:
@@ -96,14 +97,15 @@ def place_fixtures(draft: SceneDraft) -> None:
         for slot in sorted(slots_in.get(run.id, []), key=lambda s: s.offset):
             if slot.type == "Sink":
                 _tile_counter(draft, wall, u, slot.offset)
-                sink = draft.pick_variant("Sink", lambda e, w=slot.width: _width(e) <= w + 0.25)
+                sink = draft.pick_variant("Sink", lambda e, w=slot.width: _width(e) <= w + 1e-6) or min(
+                    draft.catalog.of_type("Sink"), key=_width, default=None)
                 if sink is not None:
                     host = _add_against(draft, wall, sink, slot.offset + (slot.width - _width(sink)) / 2)
                     _add_anchors(draft, host, sink)
                 u = slot.offset + slot.width
             elif slot.type == "StoveBurner":
-                _tile_counter(draft, wall, u, slot.offset + slot.width)
-                _stove(draft, wall, slot, _counter_top_height(draft), run.depth)
+                under = _tile_counter(draft, wall, u, slot.offset + slot.width)
+                _stove(draft, wall, slot, _counter_top_height(draft), run.depth, under[-1].id if under else None)
                 u = slot.offset + slot.width
         _tile_counter(draft, wall, u, run.end)
     for slot in shell.fixtures.slots:

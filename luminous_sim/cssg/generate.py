@@ -1,0 +1,124 @@
+"""CSSG entry point: a CDF, a room and a seed give a validated Scene (or an InfeasibleSceneError).
+
+Stages (each a function of its own): room structure and fixtures -> furniture (score fields) ->
+objects on/in receptacles -> decorations on walls -> layout validation; a sample that fails
+validation is redrawn with the next sub-seed, up to `attempts` times.
+"""
+
+from __future__ import annotations
+
+from collections import Counter
+from dataclasses import dataclass
+
+import numpy as np
+
+from luminous_sim.assets.catalog import Catalog, default_catalog
+from luminous_sim.cdf.schema import ChallengeDefinition
+from luminous_sim.cssg.draft import SceneDraft
+from luminous_sim.cssg.furniture import FloorContext, place_piece
+from luminous_sim.cssg.objects import place_object
+from luminous_sim.cssg.requests import Request, requests_from_cdf
+from luminous_sim.cssg.structure import place_fixtures
+from luminous_sim.cssg.validate import LayoutReport, check_layout
+from luminous_sim.cssg.walls import place_wall_piece
+from luminous_sim.errors import InfeasibleSceneError
+from luminous_sim.rooms.shell import RoomShell
+from luminous_sim.scene.model import Scene
+
+ATTEMPTS = 12
+
+
+@dataclass(frozen=True)
+class Generated:
+    scene: Scene
+    report: LayoutReport
+
+
+def choose_room(cdf: ChallengeDefinition, rng: np.random.Generator) -> RoomShell:
+    """The CDF's room: a named library room, or a procedural shell of its room type meeting its constraints."""
+    from luminous_sim.rooms.generate import generate_shell
+
+    room = cdf.scene.room
+    room_type = cdf.scene.room_type[int(rng.integers(len(cdf.scene.room_type)))]
+    if isinstance(room, str):
+        from luminous_sim.rooms.library import shell_for
+
+        return shell_for(room, rng)
+    for _ in range(200):
+        shell = generate_shell(room_type, rng, shape=getattr(room, "shape", None))
+        if room is None or _meets(shell, room):
+            return shell
+    raise InfeasibleSceneError(f"no {room_type} room shell meets the CDF's room constraints {room}")
+
+
+def _meets(shell: RoomShell, c) -> bool:
+    minx, miny, maxx, maxy = shell.bounds
+    width = min(maxx - minx, maxy - miny)
+    return ((c.min_area is None or shell.area >= c.min_area) and (c.max_area is None or shell.area <= c.max_area)
+            and (c.min_width is None or width >= c.min_width) and (c.max_width is None or width <= c.max_width))
+
+
+def _bind_fixtures(draft: SceneDraft, req: Request, by_name: dict[str, str]) -> bool:
+    """A CDF object of a fixture type names a fixture the room already has (the kitchen's fridge)."""
+    taken = set(by_name.values())
+    hit = next((p for p in draft.placed if p.obj.type == req.type and p.obj.id not in taken), None)
+    if hit is None:
+        return False
+    by_name[req.name] = hit.obj.id
+    if req.states or req.name:
+        i = draft.placed.index(hit)
+        obj = hit.obj.model_copy(update={"name": req.name, "states": {**hit.obj.states, **req.states}})
+        draft.placed[i] = type(hit)(obj, hit.entry, hit.footprint)
+    return True
+
+
+def sample_layout(cdf: ChallengeDefinition, shell: RoomShell, rng: np.random.Generator, catalog: Catalog,
+                  attempt: int) -> tuple[SceneDraft, LayoutReport]:
+    """One CSSG sample and its validation report."""
+    draft = SceneDraft(shell, catalog, rng)
+    place_fixtures(draft)
+    requests = requests_from_cdf(cdf, shell.room_type, rng)
+    ctx = FloorContext.create(draft)
+    by_name: dict[str, str] = {}
+    occupied: dict = {}
+    unplaced: list[str] = []
+    for req in requests:
+        if req.layer == "fixture" and _bind_fixtures(draft, req, by_name):
+            ok = True
+        elif req.layer in ("furniture", "fixture"):
+            got = place_piece(ctx, req)
+            ok = got is not None
+            if ok:
+                by_name[req.name] = draft.placed[-1].obj.id
+        elif req.layer == "object":
+            ok = place_object(draft, req, by_name, occupied)
+        else:
+            ok = place_wall_piece(draft, req, by_name)
+            if ok:
+                by_name[req.name] = draft.placed[-1].obj.id
+        if not ok:
+            unplaced.append(req.name)
+    return draft, check_layout(draft, requests, ctx, unplaced, attempt)
+
+
+def generate(cdf: ChallengeDefinition, seed: int = 0, room: RoomShell | None = None,
+             catalog: Catalog | None = None, attempts: int = ATTEMPTS) -> Generated:
+    """Sample layouts until one passes validation; the same inputs give the same scene, byte for byte."""
+    catalog = catalog or default_catalog()
+    failures: Counter[str] = Counter()
+    shell = room
+    for attempt in range(attempts):
+        rng = np.random.default_rng(np.random.SeedSequence([seed, attempt]))
+        if room is None:
+            shell = choose_room(cdf, rng)
+        draft, report = sample_layout(cdf, shell, rng, catalog, attempt)
+        if report.ok:
+            scene = draft.to_scene("cssg", seed, source=cdf.name or "", notes={"attempt": attempt,
+                                                                               "unplaced": report.unplaced})
+            return Generated(scene, report)
+        failures.update(report.failed_relations())
+        failures.update(f"{n} could not be placed" for n in report.unplaced if n in report.required)
+        failures.update(f"{o} is out of the agent's reach" for o in report.unreachable)
+        failures.update(f"{a} overlaps {b}" for a, b in report.overlaps)
+    worst = "; ".join(f"{k} ({v}/{attempts})" for k, v in failures.most_common(6)) or "no valid sample"
+    raise InfeasibleSceneError(f"CDF {cdf.name or ''!s}: no valid layout in {attempts} samples: {worst}")

@@ -1,0 +1,51 @@
+"""The object layer: small things on support surfaces or inside receptacles, following the CDF's
+on/in relations, ALFRED's compatibility table, and stable, collision-free spots within each region."""
+
+from __future__ import annotations
+
+from shapely.geometry import Polygon
+
+from luminous_sim.cssg.draft import Placed, SceneDraft
+from luminous_sim.cssg.regions import RegionSpot, fits, region_spots, sample_in_region
+from luminous_sim.cssg.requests import Request
+from luminous_sim.cssg.tables import supports_for
+
+
+def _hosts(draft: SceneDraft, req: Request, by_name: dict[str, str]) -> tuple[list[Placed], str | None]:
+    """Candidate receptacles and the region kind wanted ("surface" for on, "volume" for in)."""
+    support = next((r for r in req.rels if r.relation in ("on", "in")), None)
+    if support is not None:
+        target = by_name.get(support.anchor or "")
+        hosts = [p for p in draft.placed if p.obj.id == target]
+        return hosts, ("surface" if support.relation == "on" else "volume")
+    allowed = supports_for(req.type)
+    return [p for p in draft.placed if p.obj.type in allowed and p.obj.layer != "object"], None
+
+
+def place_object(draft: SceneDraft, req: Request, by_name: dict[str, str],
+                 occupied: dict[tuple[str, str], list[Polygon]]) -> bool:
+    """Place one object request; False if no compatible region has room for it."""
+    hosts, kind = _hosts(draft, req, by_name)
+    variants = draft.catalog.of_type(req.type)
+    if req.asset:
+        variants = [e for e in variants if e.id == req.asset]
+    for _ in range(6):
+        if not variants:
+            return False
+        entry = variants[int(draft.rng.integers(len(variants)))]
+        spots: list[RegionSpot] = [s for h in hosts for s in region_spots(h.obj, h.entry)
+                                   if (kind is None or s.kind == kind) and fits(entry, s)]
+        if not spots:
+            continue
+        spot = spots[int(draft.rng.integers(len(spots)))]
+        key = (spot.host.id, spot.name)
+        got = sample_in_region(entry, spot, draft.rng, occupied.setdefault(key, []))
+        if got is None:
+            continue
+        x, y, z, yaw, fp = got
+        occupied[key].append(fp)
+        obj = draft.add(entry, x, y, z, yaw, "object", fixed=False, parent=spot.host.id, region=spot.name,
+                        name=req.name, states=req.states)
+        by_name[req.name] = obj.id
+        return True
+    return False

@@ -1,0 +1,144 @@
+"""What CSSG has to place: the CDF's objects and relations, completed with room-type defaults and the
+implicit rule table, in placement order (a DAG over relations, ties broken by type priority)."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from functools import cache
+from importlib import resources
+
+import networkx as nx
+import numpy as np
+
+from luminous_sim.cdf.graph import oriented_relations, resolve_order
+from luminous_sim.cdf.relations import RELATIONS, STRUCTURE_ELEMENTS
+from luminous_sim.cdf.schema import ChallengeDefinition
+from luminous_sim.cssg.tables import layer_of, room_defaults, supports_for
+from luminous_sim.vocab import room_objects
+
+
+@cache
+def implicit_table() -> dict:
+    return json.loads(resources.files("luminous_sim.cssg").joinpath("data/implicit_rules.json").read_text())
+
+
+@dataclass(frozen=True)
+class Rel:
+    """`relation` of the request to `anchor` (a request name, a room element, or None when unary)."""
+
+    relation: str
+    anchor: str | None
+    weight: float
+    hard: bool
+    explicit: bool
+    source: str  # "cdf:scene.relations[i]" or "implicit:<Type> <relation> <Target>"
+
+
+@dataclass
+class Request:
+    """One object instance to place."""
+
+    name: str
+    type: str
+    layer: str
+    explicit: bool
+    asset: str | None = None
+    states: dict[str, bool] = field(default_factory=dict)
+    rels: list[Rel] = field(default_factory=list)
+
+
+def _instances(cdf: ChallengeDefinition) -> dict[str, list[str]]:
+    """CDF name -> instance names (`mug`, or `pillow`, `pillow#2`, ... for count > 1)."""
+    return {o.name: [o.name] + [f"{o.name}#{i}" for i in range(2, o.count + 1)] for o in cdf.scene.objects}
+
+
+def requests_from_cdf(cdf: ChallengeDefinition, room_type: str, rng: np.random.Generator,
+                      defaults: bool = True) -> list[Request]:
+    """Every object instance to place, with its relations, in placement order."""
+    inst = _instances(cdf)
+    specs = {o.name: o for o in cdf.scene.objects}
+    reqs: dict[str, Request] = {}
+    for name in resolve_order(cdf):
+        spec = specs[name]
+        states = {k: v for k, v in (spec.state.model_dump() if spec.state else {}).items() if v is not None}
+        for iname in inst[name]:
+            reqs[iname] = Request(iname, spec.type, _layer(spec.type, spec.layer), True, spec.asset, dict(states))
+    for o in oriented_relations(cdf):
+        rel = o.relation
+        if o.flipped and cdf.scene.relations[o.index].relation == "in_front_of":
+            rel = "face"  # "desk in front of chair" with the desk first: the chair faces the desk
+        anchors = [o.anchor] if o.anchor is None or o.anchor in STRUCTURE_ELEMENTS else inst[o.anchor]
+        for sub in inst[o.subject]:
+            anchor = anchors[min(inst[o.subject].index(sub), len(anchors) - 1)] if anchors != [None] else None
+            reqs[sub].rels.append(Rel(rel, anchor, o.weight, o.hard, True, f"cdf:scene.relations[{o.index}]"))
+    if defaults:
+        _add_defaults(reqs, room_type, rng)
+    _add_implicit(reqs)
+    return _ordered(reqs)
+
+
+def _layer(object_type: str, declared: str | None) -> str:
+    own = layer_of(object_type)
+    if declared == "decoration" and own != "wall":
+        return own
+    return own if declared is None or own in ("fixture", "wall") else {"furniture": "furniture",
+                                                                      "object": "object"}.get(declared, own)
+
+
+def _add_defaults(reqs: dict[str, Request], room_type: str, rng: np.random.Generator) -> None:
+    """Room-type furniture and ALFRED-frequency objects that the CDF did not ask for."""
+    have = {r.type for r in reqs.values()}
+    for t, (lo, hi) in sorted(room_defaults(room_type)["furniture"].items()):
+        n = int(rng.integers(lo, hi + 1))
+        for i in range(n if t not in have else 0):
+            name = f"{t.lower()}_auto{i}"
+            reqs[name] = Request(name, t, "furniture", False)
+    for t, n in sorted(room_objects(room_type).items()):
+        if t in have or layer_of(t) not in ("object", "wall") or rng.random() >= n / 30:
+            continue
+        if layer_of(t) == "object" and not supports_for(t):
+            continue
+        name = f"{t.lower()}_auto0"
+        reqs[name] = Request(name, t, layer_of(t), False)
+
+
+def _add_implicit(reqs: dict[str, Request]) -> None:
+    by_type: dict[str, list[str]] = {}
+    for r in reqs.values():
+        by_type.setdefault(r.type, []).append(r.name)
+    for rule in implicit_table()["rules"]:
+        for name in by_type.get(rule["subject"], []):
+            req = reqs[name]
+            if any(x.relation == rule["relation"] for x in req.rels):
+                continue  # the CDF already says how this one relates
+            target = rule.get("target")
+            if target is None or target in STRUCTURE_ELEMENTS:
+                anchor = target
+            elif target in by_type:
+                anchor = by_type[target][0]
+            else:
+                continue
+            src = f"implicit:{rule['subject']} {rule['relation']} {target or ''}".strip()
+            req.rels.append(Rel(rule["relation"], anchor, float(rule["weight"]), False, False, src))
+
+
+def _ordered(reqs: dict[str, Request]) -> list[Request]:
+    """Topological order over anchors, ties by layer, then the priority table, then name."""
+    prio = {t: i for i, t in enumerate(implicit_table()["priority"])}
+    layer_rank = {"fixture": 0, "furniture": 1, "object": 2, "wall": 3}
+    g = nx.DiGraph()
+    g.add_nodes_from(reqs)
+    for r in reqs.values():
+        for rel in r.rels:
+            if rel.anchor in reqs and rel.anchor != r.name:
+                g.add_edge(rel.anchor, r.name)
+    if not nx.is_directed_acyclic_graph(g):  # implicit rules never override the CDF's order
+        for r in reqs.values():
+            for rel in list(r.rels):
+                if not rel.explicit and rel.anchor in reqs and g.has_edge(r.name, rel.anchor):
+                    r.rels.remove(rel)
+                    g.remove_edge(rel.anchor, r.name)
+    order = nx.lexicographical_topological_sort(
+        g, key=lambda n: (layer_rank[reqs[n].layer], prio.get(reqs[n].type, 99), not reqs[n].explicit, n))
+    return [reqs[n] for n in order]

@@ -1,0 +1,141 @@
+"""Relations as score fields: each relation gives a cost in metres for every candidate cell (lower is
+better) and, where it has one, a preferred heading per cell. CSSG sums weighted costs and samples
+P(p) proportional to exp(-s_p / TEMPERATURE); the heaviest relation with a heading sets the rotation."""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass
+
+import numpy as np
+
+from luminous_sim.assets.catalog import AssetEntry
+from luminous_sim.cssg.grid import RES, FloorGrid
+
+TEMPERATURE = 0.05
+"""metres of cost per e-fold of probability."""
+NEAR, FAR, AWAY, WALL_CLEAR = 1.2, 2.5, 1.5, 0.9
+GAP = 0.02
+TOLERANCE = {"against_wall": 0.12, "in_corner": 0.3, "in_centre": 0.6, "beside": 0.35, "near": 0.0, "far": 0.0,
+             "away_from": 0.0, "face": 0.8, "in_front_of": 0.4, "behind": 0.4, "left_of": 0.4, "right_of": 0.4,
+             "aligned_with": 0.3}
+"""Cost at or below which a relation counts as met (used by the validation report)."""
+
+
+@dataclass(frozen=True)
+class Placed2D:
+    """An already placed anchor, seen from above."""
+
+    type: str
+    x: float
+    y: float
+    yaw: float
+    entry: AssetEntry
+
+    @property
+    def front(self) -> np.ndarray:
+        return np.array([-math.sin(self.yaw), math.cos(self.yaw)])
+
+    @property
+    def lateral(self) -> np.ndarray:
+        return np.array([math.cos(self.yaw), math.sin(self.yaw)])
+
+    def half(self) -> tuple[float, float]:
+        """Half width (local x) and half depth (local y) of the footprint."""
+        return self.entry.dims[0] / 2, self.entry.dims[1] / 2
+
+    def center(self) -> np.ndarray:
+        lo, hi = np.array(self.entry.bbox_min[:2]), np.array(self.entry.bbox_max[:2])
+        c = (lo + hi) / 2
+        return np.array([self.x, self.y]) + c[0] * self.lateral + c[1] * self.front
+
+
+def heading_index(dx: np.ndarray, dy: np.ndarray) -> np.ndarray:
+    """Index into HEADINGS of the cardinal heading that turns an asset's front towards (dx, dy)."""
+    yaw = np.arctan2(-dx, dy)
+    return np.mod(np.round(yaw / (math.pi / 2)), 4).astype(int)
+
+
+def directional_wall_distance(grid: FloorGrid) -> np.ndarray:
+    """Distance (m) from each cell centre to the room edge towards -x, +x, -y, +y: shape (4, H, W)."""
+    room = grid.room
+    out = np.zeros((4,) + room.shape)
+    for i, (axis, rev) in enumerate(((1, False), (1, True), (0, False), (0, True))):
+        m = np.flip(room, axis) if rev else room
+        run = np.zeros(room.shape)
+        acc = np.zeros(room.shape[1 - axis])
+        for k in range(room.shape[axis]):
+            sl = (slice(None), k) if axis == 1 else (k, slice(None))
+            acc = np.where(m[sl], acc + 1, 0)
+            run[sl] = acc
+        run = np.flip(run, axis) if rev else run
+        out[i] = (run - 0.5) * RES
+    return out
+
+
+def _half_extents(entry: AssetEntry) -> tuple[float, float]:
+    return entry.dims[0] / 2, entry.dims[1] / 2
+
+
+def relation_field(
+    relation: str, grid: FloorGrid, subject: AssetEntry, anchor: Placed2D | None, wall_dirs: np.ndarray,
+    centroid: tuple[float, float],
+) -> tuple[np.ndarray, np.ndarray | None]:
+    """(cost per cell, preferred heading index per cell or None) of `subject relation anchor`."""
+    gx, gy = grid.coords()
+    hw, hd = _half_extents(subject)
+    back = -subject.bbox_min[1]
+    wall_heading = heading_index(grid.wall_normal[..., 0], grid.wall_normal[..., 1])
+    if relation == "against_wall":
+        return np.abs(grid.wall_dist - back - GAP), wall_heading
+    if relation == "in_corner":
+        ext = max(hw, hd)
+        dx = np.minimum(wall_dirs[0], wall_dirs[1])
+        dy = np.minimum(wall_dirs[2], wall_dirs[3])
+        return np.abs(dx - ext - GAP) + np.abs(dy - ext - GAP), wall_heading
+    if relation == "in_centre":
+        return np.hypot(gx - centroid[0], gy - centroid[1]), None
+    if anchor is None:  # relations to the room structure ("away_from wall")
+        if relation == "away_from":
+            return np.maximum(0.0, WALL_CLEAR - (grid.wall_dist - max(hw, hd))), None
+        return np.zeros(grid.shape), None
+    ac = anchor.center()
+    ahw, ahd = anchor.half()
+    dist = np.hypot(gx - ac[0], gy - ac[1])
+    same = np.full(grid.shape, heading_index(np.array(anchor.front[0]), np.array(anchor.front[1])))
+    if relation == "near":
+        return np.maximum(0.0, dist - (NEAR + max(ahw, ahd) + max(hw, hd))), None
+    if relation == "far":
+        return np.maximum(0.0, FAR - dist), None
+    if relation == "away_from":
+        return np.maximum(0.0, AWAY + max(ahw, ahd) - dist), None
+    lat, fr = anchor.lateral, anchor.front
+    side = ahw + hw + 0.05
+    ahead = ahd + hd + 0.15
+    ideals = {
+        "beside": [ac + lat * side, ac - lat * side],
+        "left_of": [ac - lat * side],
+        "right_of": [ac + lat * side],
+        "in_front_of": [ac + fr * ahead],
+        "behind": [ac - fr * ahead],
+        "face": [ac + fr * (ahd + hd * 0.3 + 0.1), ac - fr * (ahd + hd * 0.3 + 0.1),
+                 ac + lat * (ahw + hd * 0.3 + 0.1), ac - lat * (ahw + hd * 0.3 + 0.1)],
+    }
+    if relation in ideals:
+        cost = np.min([np.hypot(gx - p[0], gy - p[1]) for p in ideals[relation]], axis=0)
+        if relation in ("face", "in_front_of"):
+            return cost, heading_index(ac[0] - gx, ac[1] - gy)
+        return cost, same
+    if relation == "aligned_with":
+        rel = np.stack([gx - ac[0], gy - ac[1]], axis=-1)
+        return np.minimum(np.abs(rel @ lat), np.abs(rel @ fr)), same
+    return np.zeros(grid.shape), None  # support and wall-layer relations are not floor fields
+
+
+def point_cost(relation: str, grid: FloorGrid, subject: AssetEntry, anchor: Placed2D | None, wall_dirs: np.ndarray,
+               centroid: tuple[float, float], x: float, y: float) -> float:
+    """The relation's cost at one placed origin (for the validation report)."""
+    cost, _ = relation_field(relation, grid, subject, anchor, wall_dirs, centroid)
+    r, c = grid.cell(x, y)
+    r, c = min(max(r, 0), grid.shape[0] - 1), min(max(c, 0), grid.shape[1] - 1)
+    return float(cost[r, c])

@@ -1,0 +1,134 @@
+"""The decoration layer on walls: windows in the shell's window openings, blinds and curtains at
+windows, and paintings, posters, mirrors, switches and holders on free stretches of wall (above a
+named object when a CDF says so)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from luminous_sim.assets.catalog import AssetEntry
+from luminous_sim.cssg.draft import SceneDraft
+from luminous_sim.cssg.pose import footprint, yaw_facing
+from luminous_sim.cssg.requests import Request
+from luminous_sim.cssg.tables import wall_height
+from luminous_sim.rooms.shell import Wall
+
+MARGIN = 0.1
+ABOVE_GAP = 0.25
+IMPLICIT_ABOVE = {"Mirror": "Sink", "Painting": "Sofa", "ToiletPaperHanger": "Toilet", "TowelHolder": "Bathtub"}
+"""Where a wall piece goes by default when that fixture or furniture is in the room."""
+
+
+def _origin_for(wall: Wall, entry: AssetEntry, u_center: float, v_back: float) -> tuple[float, float, float]:
+    yaw = yaw_facing(wall.normal)
+    u0 = u_center - (entry.bbox_min[0] + entry.bbox_max[0]) / 2
+    v0 = v_back - entry.bbox_min[1]
+    x, y = wall.point(u0, v0)
+    return float(x), float(y), yaw
+
+
+def _openings(draft: SceneDraft, wall: Wall) -> list[tuple[float, float]]:
+    spans = [d.span for d in draft.shell.doors if d.wall == wall.id]
+    spans += [w.span for w in draft.shell.windows if w.wall == wall.id]
+    return spans
+
+
+def _clashes(draft: SceneDraft, entry: AssetEntry, x: float, y: float, yaw: float, z0: float) -> bool:
+    """Whether a wall piece at bottom height z0 would cut into furniture standing below it, or another piece."""
+    fp = footprint(entry, x, y, yaw, margin=0.02)
+    z1 = z0 + entry.dims[2]
+    for p in draft.placed:
+        if p.obj.parent is not None or p.obj.layer == "object":
+            continue
+        top = p.obj.position[2] + p.entry.bbox_max[2]
+        bottom = p.obj.position[2] + p.entry.bbox_min[2]
+        if fp.intersects(p.footprint) and bottom < z1 and top > z0:
+            return True
+    return False
+
+
+def _add(draft: SceneDraft, req: Request, entry: AssetEntry, wall: Wall, u_center: float, z0: float) -> bool:
+    x, y, yaw = _origin_for(wall, entry, u_center, 0.005)
+    if _clashes(draft, entry, x, y, yaw, z0):
+        return False
+    draft.add(entry, x, y, z0 - entry.bbox_min[2], yaw, "decoration", fixed=True, name=req.name, states=req.states)
+    return True
+
+
+def _above_target(draft: SceneDraft, req: Request, by_name: dict[str, str]) -> str | None:
+    rel = next((r for r in req.rels if r.relation == "above"), None)
+    if rel is not None:
+        return by_name.get(rel.anchor or "")
+    want = IMPLICIT_ABOVE.get(req.type)
+    hit = next((p.obj.id for p in draft.placed if p.obj.type == want), None)
+    return hit
+
+
+def _nearest_wall(draft: SceneDraft, x: float, y: float) -> tuple[Wall, float]:
+    best = None
+    for w in draft.shell.walls:
+        u, v = w.local(np.array([[x, y]]))[0]
+        if -0.2 <= u <= w.length + 0.2 and (best is None or abs(v) < best[2]):
+            best = (w, float(u), abs(v))
+    assert best is not None
+    return best[0], best[1]
+
+
+def place_wall_piece(draft: SceneDraft, req: Request, by_name: dict[str, str], tries: int = 40) -> bool:
+    """Place one wall-layer request; False if no wall stretch has room."""
+    rng = draft.rng
+    variants = draft.catalog.of_type(req.type)
+    if req.asset:
+        variants = [e for e in variants if e.id == req.asset]
+    if not variants:
+        return False
+    walls = {w.id: w for w in draft.shell.walls}
+    if req.type in ("Window", "Blinds", "Curtains"):
+        windows = list(draft.shell.windows)
+        rng.shuffle(windows)
+        for win in windows:
+            wall = walls[win.wall]
+            fitting = [e for e in variants if e.dims[0] <= win.width + (0.5 if req.type == "Curtains" else 0.02)]
+            if not fitting:
+                continue
+            entry = fitting[int(rng.integers(len(fitting)))]
+            z0 = win.sill_height if req.type == "Window" else (0.0 if req.type == "Curtains" else win.sill_height + 0.02)
+            if req.type == "Window":
+                x, y, yaw = _origin_for(wall, entry, win.offset + win.width / 2, -draft.shell.wall_thickness / 2
+                                        - (entry.dims[1] / 2))
+                draft.add(entry, x, y, z0 - entry.bbox_min[2], yaw, "decoration", fixed=True, name=req.name)
+                return True
+            if _add(draft, req, entry, wall, win.offset + win.width / 2, z0):
+                return True
+        return False
+    target = _above_target(draft, req, by_name)
+    for attempt in range(tries):
+        entry = variants[int(rng.integers(len(variants)))]
+        if target is not None and attempt < tries // 2:
+            host = next(p for p in draft.placed if p.obj.id == target)
+            wall, u = _nearest_wall(draft, host.obj.position[0], host.obj.position[1])
+            top = host.obj.position[2] + host.entry.bbox_max[2]
+            z0 = max(wall_height(req.type), top + ABOVE_GAP) if req.type != "ToiletPaperHanger" else wall_height(req.type)
+            u_center = u + float(rng.uniform(-0.05, 0.05))
+        else:
+            lengths = np.array([w.length for w in draft.shell.walls])
+            wall = draft.shell.walls[int(rng.choice(len(lengths), p=lengths / lengths.sum()))]
+            half = entry.dims[0] / 2
+            if wall.length < 2 * (half + MARGIN):
+                continue
+            u_center = float(rng.uniform(half + MARGIN, wall.length - half - MARGIN))
+            z0 = wall_height(req.type)
+            if req.type == "LightSwitch" and draft.shell.doors:
+                door = draft.shell.doors[int(rng.integers(len(draft.shell.doors)))]
+                wall = walls[door.wall]
+                u_center = door.offset - 0.2 if door.offset > 0.4 else door.offset + door.width + 0.2
+        half = entry.dims[0] / 2
+        if any(a - MARGIN < u_center + half and u_center - half < b + MARGIN for a, b in _openings(draft, wall)):
+            continue
+        if not (half <= u_center <= wall.length - half):
+            continue
+        if z0 + entry.dims[2] > draft.shell.wall_height - 0.05:
+            continue
+        if _add(draft, req, entry, wall, u_center, z0):
+            return True
+    return False
