@@ -1,7 +1,7 @@
-"""What an object type can do or hold, for CDF validation: ALFRED's tables plus a few sensible extras.
+"""What an object type can do or hold, for CDF validation: ALFRED's tables plus a few extras.
 
 `vocab.can_contain` lists only pickupable objects. Appliances and lamps stand on furniture too
-("a coffee machine on the counter top", paper section on CSSG), so `STANDS_ON` adds those placements.
+("a coffee machine on the counter top", paper section on CSSG): `STANDS_ON` adds those placements.
 """
 
 from __future__ import annotations
@@ -9,7 +9,9 @@ from __future__ import annotations
 from luminous_sim.errors import VocabularyError
 from luminous_sim.vocab import abilities, can_contain, receptacle_objects
 
-_TABLES = frozenset({"CounterTop", "DiningTable", "CoffeeTable", "SideTable", "Desk", "Dresser", "Shelf"})
+_TABLES = frozenset(
+    {"CounterTop", "DiningTable", "CoffeeTable", "SideTable", "Desk", "Dresser", "Shelf"}
+)
 
 STANDS_ON: dict[str, frozenset[str]] = {
     "CoffeeMachine": frozenset({"CounterTop", "DiningTable", "SideTable", "Shelf"}),
@@ -25,7 +27,17 @@ STANDS_ON: dict[str, frozenset[str]] = {
 """Object type -> receptacle types it may stand on, beyond ALFRED's compatibility table."""
 
 FILLABLE: frozenset[str] = frozenset(
-    {"Bowl", "Cup", "Mug", "Pot", "Kettle", "HousePlant", "WateringCan", "WineBottle", "Glassbottle"}
+    {
+        "Bowl",
+        "Cup",
+        "Mug",
+        "Pot",
+        "Kettle",
+        "HousePlant",
+        "WateringCan",
+        "WineBottle",
+        "Glassbottle",
+    }
 )
 """Types that can hold a liquid (AI2-THOR's canFillWithLiquid)."""
 
@@ -45,7 +57,7 @@ ABILITY_NAMES: tuple[str, ...] = (
 
 
 def has_ability(object_type: str, ability: str) -> bool:
-    """Whether a known object type has an ability (one of ABILITY_NAMES); False for unknown types."""
+    """Whether a known object type has an ability (one of ABILITY_NAMES); False when unknown."""
     try:
         if ability == "fillable":
             return object_type in FILLABLE

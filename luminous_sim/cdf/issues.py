@@ -1,4 +1,4 @@
-"""Problems found in a CDF document, and their one-line messages: `FILE: KEY.PATH[2]: what was expected`."""
+"""Problems found in a CDF document, one line each: `FILE: KEY.PATH[2]: what was expected`."""
 
 from __future__ import annotations
 
@@ -33,7 +33,7 @@ class Issue:
 
 
 class CDFValidationError(CDFError):
-    """A CDF document with one or more problems; `issues` lists them, `str()` gives one line each."""
+    """A CDF document with problems; `issues` lists them, `str()` gives one line each."""
 
     def __init__(self, source: str, issues: Sequence[Issue]) -> None:
         self.source = source
@@ -85,7 +85,9 @@ def _unwrap(annotation: Any, loc: Sequence[Any]) -> Any:
         if origin is typing.Annotated:
             annotation = typing.get_args(annotation)[0]
         elif origin in (typing.Union, types.UnionType):
-            models = [a for a in (_unwrap(x, loc) for x in typing.get_args(annotation)) if _is_model(a)]
+            models = [
+                a for a in (_unwrap(x, loc) for x in typing.get_args(annotation)) if _is_model(a)
+            ]
             tagged = [m for m in models if getattr(m, "union_tag", None) in loc]
             return (tagged or models or [None])[0]
         elif origin in (tuple, list):
@@ -101,6 +103,8 @@ def _is_model(x: Any) -> bool:
 
 def _message(err: dict[str, Any], root: type[BaseModel]) -> str:
     kind, msg, loc = err["type"], err["msg"], err["loc"]
+    if kind in ("model_type", "dict_type", "model_attributes_type"):
+        return f"expected a mapping, got {type(err.get('input')).__name__}"
     if kind == "missing":
         return "required key is missing"
     if kind == "extra_forbidden":
@@ -114,17 +118,23 @@ def _message(err: dict[str, Any], root: type[BaseModel]) -> str:
         return f"unknown key {key!r}{extra} (expected one of {', '.join(allowed)})"
     for prefix in ("Value error, ", "Assertion failed, "):
         if msg.startswith(prefix):
-            return msg[len(prefix):]
+            return msg[len(prefix) :]
     if msg.startswith("Input should be "):
-        msg = "expected " + msg[len("Input should be "):]
+        msg = "expected " + msg[len("Input should be ") :]
     elif msg.startswith("Input "):
         msg = msg[0].lower() + msg[1:]
-    if "input" in err and kind not in ("model_type", "dict_type") and not isinstance(err["input"], (dict, list)):
+    if (
+        "input" in err
+        and kind not in ("model_type", "dict_type")
+        and not isinstance(err["input"], (dict, list))
+    ):
         msg += f" (got {_short(err['input'])})"
     return msg
 
 
-def from_validation_error(exc: ValidationError, source: str, root: type[BaseModel], note: str = "") -> CDFValidationError:
+def from_validation_error(
+    exc: ValidationError, source: str, root: type[BaseModel], note: str = ""
+) -> CDFValidationError:
     """Turn a pydantic ValidationError into a CDFValidationError with key paths and expectations.
 
     Args:

@@ -1,5 +1,6 @@
 """Placement layers and priorities (data): CSSG places room structure, then furniture, then objects,
-then decorations; within a layer, a higher priority `q` is placed first (paper: q(desk) > q(chair))."""
+then decorations; within a layer, a higher priority `q` is placed first (paper: q(desk) > q(chair)).
+"""
 
 from __future__ import annotations
 
@@ -24,13 +25,39 @@ DECORATION_TYPES: frozenset[str] = frozenset({"Painting", "Poster", "Curtains", 
 """Types placed last, on walls or windows."""
 
 PRIORITY: dict[str, int] = {
-    "CounterTop": 100, "Bed": 100, "Sofa": 95, "Fridge": 95, "Bathtub": 95, "DiningTable": 90,
-    "Toilet": 90, "Sink": 88, "Desk": 85, "Dresser": 80, "TVStand": 80, "Cabinet": 78,
-    "Shelf": 70, "StoveBurner": 70, "CoffeeTable": 60, "SideTable": 60, "Television": 58,
-    "ArmChair": 55, "Safe": 45, "Chair": 40, "Ottoman": 35, "Footstool": 30, "FloorLamp": 25,
-    "GarbageCan": 20, "LaundryHamper": 20, "HousePlant": 15,
+    "CounterTop": 100,
+    "Bed": 100,
+    "Sofa": 95,
+    "Fridge": 95,
+    "Bathtub": 95,
+    "DiningTable": 90,
+    "Toilet": 90,
+    "Sink": 88,
+    "Desk": 85,
+    "Dresser": 80,
+    "TVStand": 80,
+    "Cabinet": 78,
+    "Shelf": 70,
+    "StoveBurner": 70,
+    "CoffeeTable": 60,
+    "SideTable": 60,
+    "Television": 58,
+    "ArmChair": 55,
+    "Safe": 45,
+    "Chair": 40,
+    "Ottoman": 35,
+    "Footstool": 30,
+    "FloorLamp": 25,
+    "GarbageCan": 20,
+    "LaundryHamper": 20,
+    "HousePlant": 15,
+    "Microwave": 66,
+    "CoffeeMachine": 65,
+    "Toaster": 64,
+    "DeskLamp": 62,
+    "Lamp": 62,
 }
-"""Placement priority q(type) of furniture; types not listed get DEFAULT_PRIORITY."""
+"""Placement priority q(type): furniture, then appliances; others get DEFAULT_PRIORITY."""
 
 DEFAULT_PRIORITY = 50
 RECEPTACLE_OBJECT_PRIORITY = 60

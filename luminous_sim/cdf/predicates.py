@@ -1,5 +1,5 @@
-"""Goal and initial-state expressions: a typed AST over ALFRED's predicates, read from an s-expression
-string or from a YAML/JSON structure, written back as an s-expression.
+"""Goal and initial-state expressions: a typed AST over ALFRED's predicates, read from an
+s-expression string or from a YAML/JSON structure, written back as an s-expression.
 
 Grammar (s-expression form; keywords and predicate names are case-insensitive)::
 
@@ -11,7 +11,7 @@ Grammar (s-expression form; keywords and predicate names are case-insensitive)::
 
 Structure form: a string (parsed as above); a list (a conjunction); or a one-key mapping:
 `{and: [..]}`, `{or: [..]}`, `{not: expr}`, `{exists: {vars: {"?o": Apple}, body: expr}}`
-(`forall` alike; `vars` may also be a list of names), or `{PRED: [args]}` (`{PRED: arg}` when unary).
+(`forall` alike; `vars` may be a list of names), or `{PRED: [args]}` (`{PRED: arg}` if unary).
 """
 
 from __future__ import annotations
@@ -42,7 +42,9 @@ class PredicateInfo:
 
 _PREDICATE_TABLE: tuple[PredicateInfo, ...] = (
     PredicateInfo("inReceptacle", (None, "receptacle"), "o is on/in receptacle r"),
-    PredicateInfo("inReceptacleObject", (None, "movable_receptacle"), "o is in movable receptacle m"),
+    PredicateInfo(
+        "inReceptacleObject", (None, "movable_receptacle"), "o is in movable receptacle m"
+    ),
     PredicateInfo("isHot", ("heatable",), "o was heated"),
     PredicateInfo("isCool", ("coolable",), "o was cooled"),
     PredicateInfo("isClean", ("cleanable",), "o was cleaned"),
@@ -118,7 +120,8 @@ EXPR_TYPES = (Atom, Not, And, Or, Exists, ForAll)
 
 
 class ExprError(ValueError):
-    """A malformed expression; the message says where (sub-path or character) and what was expected."""
+    """A malformed expression; the message says where (sub-path or character) and what was "
+    "expected."""
 
 
 def is_variable(arg: str) -> bool:
@@ -155,7 +158,9 @@ def to_sexpr(expr: Expr) -> str:
     return sexpr.to_text(_to_tree(expr))
 
 
-def atoms(expr: Expr, scope: Mapping[str, str | None] | None = None) -> Iterator[tuple[Atom, dict[str, str | None]]]:
+def atoms(
+    expr: Expr, scope: Mapping[str, str | None] | None = None
+) -> Iterator[tuple[Atom, dict[str, str | None]]]:
     """Every atom of an expression with the variables in scope there (variable -> type or None)."""
     env = dict(scope or {})
     if isinstance(expr, Atom):
@@ -171,7 +176,8 @@ def atoms(expr: Expr, scope: Mapping[str, str | None] | None = None) -> Iterator
 
 
 def is_ground_conjunction(expr: Expr) -> bool:
-    """Whether `expr` is an atom, a negated atom, or an `and` of those, with no variables (an init state)."""
+    """Whether `expr` is an atom, a negated atom, or an `and` of those, with no variables (an "
+    "init state)."""
     if isinstance(expr, And):
         return all(is_ground_conjunction(e) for e in expr.args)
     if isinstance(expr, Not):
@@ -224,10 +230,14 @@ def _atom(name: str, args: list[Any], bound: frozenset[str], path: str) -> Atom:
     out = []
     for i, a in enumerate(args):
         if not isinstance(a, str):
-            raise ExprError(f"{_where(path)}argument {i + 1} of {info.name} must be a name, got {a!r}")
+            raise ExprError(
+                f"{_where(path)}argument {i + 1} of {info.name} must be a name, got {a!r}"
+            )
         if _VAR.fullmatch(a):
             if a not in bound:
-                raise ExprError(f"{_where(path)}variable {a} is not bound by an enclosing exists/forall")
+                raise ExprError(
+                    f"{_where(path)}variable {a} is not bound by an enclosing exists/forall"
+                )
         elif not _NAME.fullmatch(a):
             raise ExprError(
                 f"{_where(path)}argument {a!r} of {info.name} is neither an object name "
@@ -259,7 +269,9 @@ def _params(items: list[Any], path: str) -> tuple[Param, ...]:
             i += 2
             continue
         if not isinstance(tok, str) or not _VAR.fullmatch(tok):
-            raise ExprError(f"{_where(path)}expected a ?variable in the parameter list, got {tok!r}")
+            raise ExprError(
+                f"{_where(path)}expected a ?variable in the parameter list, got {tok!r}"
+            )
         pending.append(tok)
         i += 1
     params += [Param(v) for v in pending]
@@ -280,7 +292,9 @@ def _from_sexpr(tree: sexpr.SExpr, bound: frozenset[str], path: str, depth: int)
     if depth > MAX_DEPTH:
         raise ExprError(f"{_where(path)}expression nested deeper than {MAX_DEPTH} levels")
     if isinstance(tree, str) or not tree or not isinstance(tree[0], str):
-        raise ExprError(f"{_where(path)}expected '(keyword-or-predicate ...)', got {sexpr.to_text(tree)!r}")
+        raise ExprError(
+            f"{_where(path)}expected '(keyword-or-predicate ...)', got {sexpr.to_text(tree)!r}"
+        )
     head, rest = tree[0], tree[1:]
     key = head.lower()
     sub = f"{path}.{key}" if path else key
@@ -301,7 +315,9 @@ def _from_sexpr(tree: sexpr.SExpr, bound: frozenset[str], path: str, depth: int)
         return Exists(params, body) if key == "exists" else ForAll(params, body)
     for a in rest:
         if not isinstance(a, str):
-            raise ExprError(f"{_where(path)}arguments of {head} must be names, got {sexpr.to_text(a)!r}")
+            raise ExprError(
+                f"{_where(path)}arguments of {head} must be names, got {sexpr.to_text(a)!r}"
+            )
     return _atom(head, list(rest), bound, path)
 
 
@@ -315,13 +331,16 @@ def _from_data(data: Any, bound: frozenset[str], path: str, depth: int) -> Expr:
             raise ExprError(f"{_where(path)}in {_clip(data)!r}: {exc}") from None
         return _from_sexpr(tree, bound, path, depth)
     if isinstance(data, list):
-        return And(tuple(_from_data(e, bound, f"{path}[{i}]", depth + 1) for i, e in enumerate(data)))
+        return And(
+            tuple(_from_data(e, bound, f"{path}[{i}]", depth + 1) for i, e in enumerate(data))
+        )
     if not isinstance(data, dict) or len(data) != 1:
         raise ExprError(
-            f"{_where(path)}expected an s-expression string, a list, or a mapping with exactly one key "
+            f"{_where(path)}expected an s-expression string, a list, or a mapping with exactly "
+            "one key "
             f"(and, or, not, exists, forall or a predicate), got {_clip(repr(data))}"
         )
-    (head, value), = data.items()
+    ((head, value),) = data.items()
     if not isinstance(head, str):
         raise ExprError(f"{_where(path)}expected a keyword or predicate name as key, got {head!r}")
     key = head.lower()

@@ -1,4 +1,4 @@
-"""References from a CDF to things outside it (room structures, assets): checked, never used as paths.
+"""References from a CDF to things outside it (rooms, assets): checked, never used as paths.
 
 A reference must match SAFE_REF, so it can never name a path (no separators, no `..`). Rooms resolve
 only through `luminous_sim.rooms.library.has_room` and assets only through
@@ -18,7 +18,12 @@ ROOM_NAME_FALLBACK = re.compile(r"FloorPlan\d+|(kitchen|living_room|bedroom|bath
 ASSET_NAME_FALLBACK = re.compile(r"[A-Z][A-Za-z]+_\d{2}")
 
 _FLOORPLAN = re.compile(r"FloorPlan(\d+)")
-_PROCEDURAL_PREFIX = {"kitchen": "Kitchen", "living_room": "LivingRoom", "bedroom": "Bedroom", "bathroom": "Bathroom"}
+_PROCEDURAL_PREFIX = {
+    "kitchen": "Kitchen",
+    "living_room": "LivingRoom",
+    "bedroom": "Bedroom",
+    "bathroom": "Bathroom",
+}
 _FLOORPLAN_HUNDREDS = {0: "Kitchen", 2: "LivingRoom", 3: "Bedroom", 4: "Bathroom"}
 
 
@@ -32,33 +37,65 @@ def check_safe_ref(value: str, what: str) -> str:
     return value
 
 
-def _lookup(module: str, func: str) -> Callable[[str], bool] | None:
+def _import(module: str) -> object | None:
     try:
-        mod = importlib.import_module(module)
+        return importlib.import_module(module)
     except Exception:  # noqa: BLE001 - a sibling module mid-development must not break CDF loading
         return None
-    found = getattr(mod, func, None)
-    return found if callable(found) else None
 
 
-def _resolve(name: str, module: str, func: str, fallback: re.Pattern[str]) -> bool:
-    lookup = _lookup(module, func)
-    if lookup is None:
-        return bool(fallback.fullmatch(name))
+def _safely(func: Callable[[str], object], name: str) -> object:
     try:
-        return bool(lookup(name))
+        return func(name)
     except Exception:  # noqa: BLE001 - a failing lookup means "not found", reported as a CDF error
-        return False
+        return None
 
 
 def room_exists(name: str) -> bool:
     """Whether the room-structure library has a room called `name` (a safe reference)."""
-    return _resolve(name, "luminous_sim.rooms.library", "has_room", ROOM_NAME_FALLBACK)
+    lookup = getattr(_import("luminous_sim.rooms.library"), "has_room", None)
+    if not callable(lookup):
+        return bool(ROOM_NAME_FALLBACK.fullmatch(name))
+    return bool(_safely(lookup, name))
+
+
+def _catalog() -> object | None:
+    """The asset catalog (`has_asset` or `default_catalog()`), or None when it cannot be had."""
+    module = _import("luminous_sim.assets.catalog")
+    if module is None:
+        return None
+    if callable(getattr(module, "has_asset", None)):
+        return module
+    factory = getattr(module, "default_catalog", None)
+    if not callable(factory):
+        return None
+    try:
+        return factory()
+    except Exception:  # noqa: BLE001 - an unreadable catalog is treated like a missing one
+        return None
 
 
 def asset_exists(name: str) -> bool:
     """Whether the asset catalog has an asset called `name` (a safe reference)."""
-    return _resolve(name, "luminous_sim.assets.catalog", "has_asset", ASSET_NAME_FALLBACK)
+    catalog = _catalog()
+    if catalog is None:
+        return bool(ASSET_NAME_FALLBACK.fullmatch(name))
+    has = getattr(catalog, "has_asset", None)
+    if callable(has):
+        return bool(_safely(has, name))
+    return bool(_safely(lambda n: n in catalog, name))  # type: ignore[operator]
+
+
+def asset_type(name: str) -> str | None:
+    """The object type of a known asset (from the catalog, else its `Type_NN` shape)."""
+    catalog = _catalog()
+    getter = getattr(catalog, "get", None)
+    if callable(getter):
+        entry_type = getattr(_safely(getter, name), "type", None)
+        return entry_type if isinstance(entry_type, str) else None
+    if catalog is None and ASSET_NAME_FALLBACK.fullmatch(name):
+        return name.rsplit("_", 1)[0]
+    return None
 
 
 def check_room(name: str) -> str:
@@ -81,7 +118,7 @@ def check_asset(name: str) -> str:
 
 
 def room_type_of(name: str) -> str | None:
-    """The room type a room name implies (ALFRED's FloorPlan numbering or a procedural prefix), if any."""
+    """The room type a room name implies (FloorPlan numbers or a procedural prefix)."""
     m = _FLOORPLAN.fullmatch(name)
     if m:
         n = int(m.group(1))

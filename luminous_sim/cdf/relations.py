@@ -1,10 +1,11 @@
 """The CDF's relation vocabulary, as data: arity, inverse, symmetry, category and default weight.
 
-A binary relation `r(subject, target)` places `subject` relative to `target`. Where `inverse` is set,
-`r(a, b)` holds exactly when `inverse(b, a)` does, so CSSG may rewrite one into the other to place the
-earlier object first (paper, appendix on CSSG: "a desk is in front of a chair" is resolved so that the
-desk is the anchor). Directions (left/right, in front/behind) are read in one fixed frame, which makes
-those pairs exact inverses. `face` has no inverse: "chair faces desk" says nothing about the desk.
+A binary relation `r(subject, target)` places `subject` relative to `target`. Where `inverse`
+is set, `r(a, b)` holds exactly when `inverse(b, a)` does, so CSSG may rewrite one into the
+other to place the earlier object first (paper, appendix on CSSG: "a desk is in front of a
+chair" is resolved so that the desk is the anchor). Directions (left/right, in front/behind)
+are read in one fixed frame, which makes those pairs exact inverses. `face` has no inverse:
+"chair faces desk" says nothing about the desk.
 """
 
 from __future__ import annotations
@@ -80,7 +81,7 @@ ALIASES: dict[str, str] = {
 """Accepted spellings that are rewritten to a canonical name on load."""
 
 STRUCTURE_ELEMENTS: tuple[str, ...] = ("wall", "window", "door")
-"""Room-structure elements a binary relation may target without declaring them ("bed beside window")."""
+"""Room elements a binary relation may target without declaring them ("bed beside window")."""
 
 EXCLUSIVE_UNARY: tuple[frozenset[str], ...] = (
     frozenset({"in_corner", "in_centre"}),
@@ -102,7 +103,7 @@ ORDER_AXES: tuple[tuple[str, str], ...] = (
 """Relation pairs that order objects along one axis: a cycle along an axis is a contradiction."""
 
 STRUCTURE_WEIGHT = 2.0
-"""Default weight of a relation to the room structure (paper, appendix: furniture vs room structure)."""
+"""Default weight of a relation to the room structure (paper appendix: furniture vs room)."""
 OBJECT_WEIGHT = 1.0
 """Default weight of a relation between two objects (paper: furniture vs furniture)."""
 

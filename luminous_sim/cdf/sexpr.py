@@ -1,4 +1,4 @@
-"""A small s-expression reader and writer for PDDL-like goal strings: `(and (isHot apple) (on a b))`.
+"""A small s-expression reader and writer for PDDL-like goals: `(and (isHot apple) (isOn lamp))`.
 
 An s-expression is an atom (a string) or a list of s-expressions. `;` starts a comment to the end
 of the line. The reader is iterative, so deep nesting cannot exhaust Python's stack.

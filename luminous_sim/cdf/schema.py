@@ -1,0 +1,424 @@
+"""The CDF document model (current version), validated with pydantic: unknown keys are errors.
+
+Structure (YAML)::
+
+    cdf_version: 2
+    name: apple_in_fridge                  # optional
+    scene:
+      room_type: Kitchen                   # or a list of room types
+      room: FloorPlan12                    # a room name, or constraints {shape, min_area, ...}
+      objects:   [{name, type, count, asset, layer, attributes, state}]
+      relations: [{subject, relation, target, weight, hard}]
+    task:                                  # optional
+      type: pick_cool_then_place_in_recep  # optional ALFRED task type
+      agent: {position: [x, z], rotation: 90, horizon: 30}
+      initial: "(isOpen fridge)"           # optional ground literals
+      goal: "(and (inReceptacle apple fridge) (isCool apple))"
+    execution:                             # optional: high-level and/or low-level steps
+      - {action: PickupObject, object: apple}
+      - {action: MoveAhead}
+
+Cross-field rules (names, receptacle compatibility, cycles) live in `validate.py`; they run when a
+ChallengeDefinition is built, so an invalid one cannot exist.
+"""
+
+from __future__ import annotations
+
+import re
+from typing import Annotated, Any, ClassVar, Literal, Union
+
+from pydantic import (
+    AliasChoices,
+    BaseModel,
+    BeforeValidator,
+    ConfigDict,
+    Discriminator,
+    Field,
+    PlainSerializer,
+    PlainValidator,
+    StrictBool,
+    Tag,
+    ValidationInfo,
+    WithJsonSchema,
+    field_serializer,
+    model_validator,
+)
+
+from luminous_sim.cdf import refs
+from luminous_sim.cdf.predicates import Expr, ExprError, expr_from_data, to_sexpr
+from luminous_sim.cdf.relations import ALIASES, RELATIONS, canonical, unknown_relation_message
+from luminous_sim.errors import VocabularyError
+from luminous_sim.vocab import ALL_TYPES, ROOM_TYPES, check_type
+
+CDF_VERSION = 2
+"""The version this model describes; older documents are upgraded on load (see upgrade.py)."""
+
+EXPRESSION_MARKER = {"$comment": "cdf-expression"}
+"""Placeholder in the generated JSON Schema, replaced by a recursive definition on export."""
+
+_NAME = re.compile(r"[A-Za-z][A-Za-z0-9_]*")
+NAME_PATTERN = r"^[A-Za-z][A-Za-z0-9_]*$"
+
+
+def _name(value: str) -> str:
+    if not _NAME.fullmatch(value) or len(value) > 64:
+        raise ValueError(
+            f"invalid name {value!r}; expected a letter then letters, digits or '_' (at most 64)"
+        )
+    return value
+
+
+def _object_type(value: str) -> str:
+    try:
+        return check_type(value)
+    except VocabularyError as exc:
+        raise ValueError(str(exc)) from None
+
+
+def _relation(value: Any) -> Any:
+    if isinstance(value, str):
+        canon = canonical(value)
+        if canon is None:
+            raise ValueError(unknown_relation_message(value))
+        return canon
+    return value
+
+
+_ROOM_TYPE_ALIASES = {t.lower(): t for t in ROOM_TYPES} | {"living_room": "LivingRoom"}
+
+
+def _room_types(value: Any) -> Any:
+    items = [value] if isinstance(value, str) else value
+    if isinstance(items, (list, tuple)):
+        return [_ROOM_TYPE_ALIASES.get(v.lower(), v) if isinstance(v, str) else v for v in items]
+    return value
+
+
+def _expression(value: Any) -> Expr:
+    try:
+        return expr_from_data(value)
+    except ExprError as exc:
+        raise ValueError(str(exc)) from None
+
+
+Name = Annotated[
+    str,
+    PlainValidator(lambda v: _name(_as_str(v))),
+    WithJsonSchema({"type": "string", "pattern": NAME_PATTERN}),
+]
+ObjectType = Annotated[
+    str,
+    PlainValidator(lambda v: _object_type(_as_str(v))),
+    WithJsonSchema({"type": "string", "enum": list(ALL_TYPES)}),
+]
+RoomName = Annotated[
+    str,
+    PlainValidator(lambda v: refs.check_room(_as_str(v))),
+    WithJsonSchema({"type": "string", "pattern": refs.SAFE_REF_PATTERN}),
+]
+AssetName = Annotated[
+    str,
+    PlainValidator(lambda v: refs.check_asset(_as_str(v))),
+    WithJsonSchema({"type": "string", "pattern": refs.SAFE_REF_PATTERN}),
+]
+RelationName = Annotated[
+    Literal[tuple(RELATIONS)],  # type: ignore[valid-type]
+    BeforeValidator(_relation),
+    WithJsonSchema({"type": "string", "enum": [*RELATIONS, *ALIASES]}),
+]
+RoomType = Literal["Kitchen", "LivingRoom", "Bedroom", "Bathroom"]
+assert set(RoomType.__args__) == set(ROOM_TYPES)  # type: ignore[attr-defined]
+Expression = Annotated[
+    Expr,
+    PlainValidator(_expression),
+    PlainSerializer(to_sexpr, return_type=str),
+    WithJsonSchema(EXPRESSION_MARKER),
+]
+PositiveFinite = Annotated[float, Field(gt=0, allow_inf_nan=False)]
+Finite = Annotated[float, Field(allow_inf_nan=False)]
+Text = Annotated[str, Field(min_length=1, max_length=200)]
+
+
+def _as_str(value: Any) -> str:
+    if not isinstance(value, str):
+        raise ValueError(f"expected a string, got {type(value).__name__} {value!r:.40}")
+    return value
+
+
+class _Model(BaseModel):
+    model_config = ConfigDict(extra="forbid", frozen=True, populate_by_name=True)
+
+
+class RoomConstraints(_Model):
+    """Room structure by constraints: CSSG picks or builds a room that satisfies them."""
+
+    union_tag: ClassVar[str] = "room-constraints"
+    shape: Literal["rect", "L", "two_zone"] | None = None
+    min_area: PositiveFinite | None = Field(None, description="m^2")
+    max_area: PositiveFinite | None = Field(None, description="m^2")
+    min_width: PositiveFinite | None = Field(None, description="m")
+    max_width: PositiveFinite | None = Field(None, description="m")
+
+    @model_validator(mode="after")
+    def _ranges(self) -> RoomConstraints:
+        for lo, hi in (("min_area", "max_area"), ("min_width", "max_width")):
+            a, b = getattr(self, lo), getattr(self, hi)
+            if a is not None and b is not None and a > b:
+                raise ValueError(f"{lo} ({a}) is larger than {hi} ({b}); expected {lo} <= {hi}")
+        return self
+
+
+def _room_tag(value: Any) -> str:
+    return "room-constraints" if isinstance(value, (dict, RoomConstraints)) else "room-name"
+
+
+RoomSpec = Annotated[
+    Union[
+        Annotated[RoomName, Tag("room-name")], Annotated[RoomConstraints, Tag("room-constraints")]
+    ],
+    Discriminator(_room_tag),
+]
+
+
+class Dims(_Model):
+    """Absolute size in metres."""
+
+    union_tag: ClassVar[str] = "size-dims"
+    width: PositiveFinite
+    depth: PositiveFinite
+    height: PositiveFinite
+
+
+def _size_tag(value: Any) -> str:
+    return "size-dims" if isinstance(value, (dict, Dims)) else "size-scale"
+
+
+Size = Annotated[
+    Union[
+        Annotated[Annotated[float, Field(gt=0, le=10, allow_inf_nan=False)], Tag("size-scale")],
+        Annotated[Dims, Tag("size-dims")],
+    ],
+    Discriminator(_size_tag),
+]
+
+
+class Attributes(_Model):
+    """Appearance (paper, after 3D-SLN): colour, material, size (scale factor or dimensions)."""
+
+    colour: Text | None = Field(None, validation_alias=AliasChoices("colour", "color"))
+    material: Text | None = None
+    size: Size | None = None
+
+
+class ObjectState(_Model):
+    """Initial object state (AI2-THOR's metadata names); unset flags are left to the generator."""
+
+    isOpen: StrictBool | None = None
+    isToggled: StrictBool | None = Field(None, validation_alias=AliasChoices("isToggled", "isOn"))
+    isDirty: StrictBool | None = None
+    isSliced: StrictBool | None = None
+    isHot: StrictBool | None = None
+    isCold: StrictBool | None = None
+    isFilled: StrictBool | None = None
+
+
+class ObjectSpec(_Model):
+    """A required object: `count` instances of `type`, referred to by `name` elsewhere."""
+
+    name: Name
+    type: ObjectType
+    count: int = Field(1, ge=1, le=50)
+    asset: AssetName | None = None
+    layer: Literal["furniture", "object", "decoration"] | None = None
+    attributes: Attributes | None = None
+    state: ObjectState | None = None
+
+
+class Relation(_Model):
+    """`subject relation [target]`; a target is a declared name or a room element (wall, ...)."""
+
+    subject: Name
+    relation: RelationName
+    target: Name | None = None
+    weight: PositiveFinite | None = None
+    hard: StrictBool = True
+
+
+_ROOM_TYPE_SCHEMA = {
+    "anyOf": [
+        {"type": "string", "enum": list(ROOM_TYPES)},
+        {"type": "array", "items": {"type": "string", "enum": list(ROOM_TYPES)}, "minItems": 1},
+    ]
+}
+
+
+class Scene(_Model):
+    """The indoor-layout section."""
+
+    room_type: Annotated[
+        tuple[RoomType, ...],
+        BeforeValidator(_room_types),
+        Field(min_length=1),
+        WithJsonSchema(_ROOM_TYPE_SCHEMA),
+    ]
+    room: RoomSpec | None = None
+    objects: tuple[ObjectSpec, ...] = ()
+    relations: tuple[Relation, ...] = ()
+
+    @field_serializer("room_type")
+    def _one_room_type(self, value: tuple[str, ...]) -> str | list[str]:
+        return value[0] if len(value) == 1 else list(value)
+
+
+TaskType = Literal[
+    "pick_and_place_simple",
+    "pick_two_obj_and_place",
+    "look_at_obj_in_light",
+    "pick_clean_then_place_in_recep",
+    "pick_heat_then_place_in_recep",
+    "pick_cool_then_place_in_recep",
+    "pick_and_place_with_movable_recep",
+]
+
+
+class AgentPose(_Model):
+    """The agent's start: position (x, z) in metres, yaw in degrees, horizon (positive = down)."""
+
+    position: tuple[Finite, Finite] | None = None
+    rotation: Literal[0, 90, 180, 270] | None = None
+    horizon: Literal[-30, -15, 0, 15, 30, 45, 60] | None = None
+
+
+class Task(_Model):
+    """The task-definition section: initial state and goal as PDDL-like expressions."""
+
+    type: TaskType | None = None
+    agent: AgentPose | None = None
+    initial: Expression | None = None
+    goal: Expression
+
+
+NAV_ACTIONS = ("MoveAhead", "RotateLeft", "RotateRight", "LookUp", "LookDown")
+HighLevelAction = Literal[
+    "GotoLocation",
+    "PickupObject",
+    "PutObject",
+    "OpenObject",
+    "CloseObject",
+    "ToggleObject",
+    "ToggleObjectOn",
+    "ToggleObjectOff",
+    "SliceObject",
+    "HeatObject",
+    "CoolObject",
+    "CleanObject",
+    "NoOp",
+]
+LowLevelAction = Literal[
+    "MoveAhead",
+    "RotateLeft",
+    "RotateRight",
+    "LookUp",
+    "LookDown",
+    "PickupObject",
+    "PutObject",
+    "OpenObject",
+    "CloseObject",
+    "ToggleObjectOn",
+    "ToggleObjectOff",
+    "SliceObject",
+]
+
+
+class HighLevelStep(_Model):
+    """A planner-level action on named objects (`GotoLocation fridge`, `PutObject -> fridge`)."""
+
+    union_tag: ClassVar[str] = "high-level"
+    action: HighLevelAction
+    object: Name | None = None
+    receptacle: Name | None = None
+
+    @model_validator(mode="after")
+    def _arguments(self) -> HighLevelStep:
+        if self.action == "NoOp":
+            wanted = (False, False)
+        elif self.action == "PutObject":
+            wanted = (self.object is not None, True)
+        else:
+            wanted = (True, False)
+        for key, need in zip(("object", "receptacle"), wanted):
+            have = getattr(self, key) is not None
+            if need and not have:
+                raise ValueError(f"{self.action} needs '{key}'")
+            if have and not need:
+                raise ValueError(f"{self.action} takes no '{key}'")
+        return self
+
+
+class LowLevelStep(_Model):
+    """An ALFRED low-level action; `objectId`/`receptacleObjectId` name declared objects."""
+
+    union_tag: ClassVar[str] = "low-level"
+    action: LowLevelAction
+    objectId: Name | None = None
+    receptacleObjectId: Name | None = None
+
+    @model_validator(mode="after")
+    def _arguments(self) -> LowLevelStep:
+        if self.action in NAV_ACTIONS:
+            if self.objectId is not None or self.receptacleObjectId is not None:
+                raise ValueError(f"{self.action} takes no objectId or receptacleObjectId")
+        elif self.action == "PutObject":
+            if self.receptacleObjectId is None:
+                raise ValueError("PutObject needs 'receptacleObjectId'")
+        elif self.objectId is None:
+            raise ValueError(f"{self.action} needs 'objectId'")
+        elif self.receptacleObjectId is not None:
+            raise ValueError(f"{self.action} takes no 'receptacleObjectId'")
+        return self
+
+
+def _step_tag(value: Any) -> str:
+    if isinstance(value, LowLevelStep):
+        return "low-level"
+    if isinstance(value, dict) and (
+        "objectId" in value or "receptacleObjectId" in value or value.get("action") in NAV_ACTIONS
+    ):
+        return "low-level"
+    return "high-level"
+
+
+Step = Annotated[
+    Union[Annotated[HighLevelStep, Tag("high-level")], Annotated[LowLevelStep, Tag("low-level")]],
+    Discriminator(_step_tag),
+]
+
+
+class ChallengeDefinition(_Model):
+    """A validated CDF document (current version).
+
+    Building one runs the cross-field checks of `validate.py` and raises CDFValidationError on a
+    problem; pass `context={"source": "file.yaml"}` to `model_validate` to name the file.
+    """
+
+    cdf_version: Literal[2]
+    name: Text | None = None
+    description: Annotated[str, Field(max_length=10_000)] | None = None
+    scene: Scene
+    task: Task | None = None
+    execution: tuple[Step, ...] | None = None
+
+    @model_validator(mode="after")
+    def _consistent(self, info: ValidationInfo) -> ChallengeDefinition:
+        from luminous_sim.cdf.validate import raise_for_issues
+
+        context = info.context if isinstance(info.context, dict) else {}
+        raise_for_issues(self, str(context.get("source", "<cdf>")), str(context.get("note", "")))
+        return self
+
+    def object_named(self, name: str) -> ObjectSpec | None:
+        """The declared object called `name`, if any."""
+        for obj in self.scene.objects:
+            if obj.name == name:
+                return obj
+        return None
