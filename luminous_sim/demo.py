@@ -13,8 +13,8 @@ from PIL import Image
 from shapely.geometry import Point
 
 from luminous_sim.assets.objio import write_atomic
-from luminous_sim.cssg.baseline import generate_uniform
-from luminous_sim.rooms.generate import generate_shell
+from luminous_sim.cssg.baseline import empty_cdf
+from luminous_sim.cssg.generate import generate
 from luminous_sim.scene.model import Scene
 from luminous_sim.vocab import ROOM_TYPES
 
@@ -85,11 +85,11 @@ def run_demo(out: Path, seed: int = 0, room_types: tuple[str, ...] = ROOM_TYPES)
     out = Path(out)
     results = []
     for i, room_type in enumerate(room_types):
-        rng = np.random.default_rng(np.random.SeedSequence([seed, i]))
-        shell = generate_shell(room_type, rng)
-        scene = generate_uniform(shell, seed)
+        generated = generate(empty_cdf(room_type), seed=seed)
+        scene = generated.scene
         stem = out / f"{i}_{room_type.lower()}"
         scene.save(stem / "scene.json")
+        write_atomic(stem / "layout_report.json", json.dumps(generated.report.to_dict(), indent=1) + "\n")
         built = build_scene(scene)
         try:
             report = settle_report(built)

@@ -65,7 +65,11 @@ def _inertial(hulls: list[trimesh.Trimesh], mass: float) -> tuple[np.ndarray, np
         inertia += h.moment_inertia * density + m * (d @ d * np.eye(3) - np.outer(d, d))
     # PyBullet diagonalises a full tensor into a rotated inertial frame, which then rotates the reported
     # base pose; the products of inertia of these near-symmetric assets are small, so keep the diagonal.
-    return com, np.diag(np.maximum(np.diag(inertia), 1e-6))
+    d = np.maximum(np.diag(inertia), 1e-6)
+    for i in range(3):  # keep the triangle inequality, which PyBullet enforces by zeroing the inertia
+        j, k = (i + 1) % 3, (i + 2) % 3
+        d[i] = min(d[i], d[j] + d[k])
+    return com, np.diag(d)
 
 
 def write_asset(spec: AssetSpec, out_dir: Path, cache_dir: Path) -> dict[str, Any]:

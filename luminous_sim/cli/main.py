@@ -14,6 +14,10 @@ from luminous_sim.errors import LuminousError
 
 SUBCOMMAND_MODULES: tuple[str, ...] = (
     "luminous_sim.cli.assets_cmd",
+    "luminous_sim.cli.cdf_cmd",
+    "luminous_sim.cli.demo_cmd",
+    "luminous_sim.cli.generate_cmd",
+    "luminous_sim.cli.rooms_cmd",
 )
 
 

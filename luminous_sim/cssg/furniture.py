@@ -11,7 +11,17 @@ import numpy as np
 from luminous_sim.cssg.draft import SceneDraft
 from luminous_sim.cssg.grid import HEADINGS, FloorGrid
 from luminous_sim.cssg.requests import Request
-from luminous_sim.cssg.scores import TEMPERATURE, Placed2D, directional_wall_distance, relation_field
+from luminous_sim.cssg.scores import (
+    TEMPERATURE,
+    TOLERANCE,
+    Placed2D,
+    directional_wall_distance,
+    point_cost,
+    relation_field,
+)
+
+SEGMENTED_FIXTURES = {"CounterTop"}
+"""Fixture types built from several segments that a CDF names as one object."""
 
 WRONG_HEADING_PENALTY = 0.5
 """metres of cost for standing at a heading other than the preferred one."""
@@ -26,6 +36,8 @@ class FloorContext:
     wall_dirs: np.ndarray
     centroid: tuple[float, float]
     placed: dict[str, Placed2D]
+    alternates: dict[str, list[Placed2D]] = None  # type: ignore[assignment]
+    """A name bound to one segment of a fixture (a kitchen's counter) relates to any of its segments."""
 
     @classmethod
     def create(cls, draft: SceneDraft) -> FloorContext:
@@ -37,10 +49,36 @@ class FloorContext:
             if p.obj.parent is None:
                 grid.block(p.footprint)
         c = poly.centroid
-        return cls(draft, grid, directional_wall_distance(grid), (c.x, c.y), {})
+        return cls(draft, grid, directional_wall_distance(grid), (c.x, c.y), {}, {})
 
     def anchor(self, name: str | None) -> Placed2D | None:
         return self.placed.get(name) if name else None
+
+    def anchors(self, name: str | None) -> list[Placed2D | None]:
+        """Every placed thing `name` may refer to (one, or all segments of a bound fixture)."""
+        if name and name in self.alternates:
+            return list(self.alternates[name])
+        return [self.anchor(name)]
+
+    def field(self, relation: str, entry, name: str | None) -> tuple[np.ndarray, np.ndarray | None]:
+        """The relation's cost field, the cheapest over everything `name` may refer to."""
+        best, heading = None, None
+        for anchor in self.anchors(name):
+            cost, head = relation_field(relation, self.grid, entry, anchor, self.wall_dirs, self.centroid)
+            if best is None:
+                best, heading = cost, head
+            else:
+                better = cost < best
+                best = np.where(better, cost, best)
+                if head is not None and heading is not None:
+                    heading = np.where(better, head, heading)
+        return best, heading
+
+    def cost_at(self, relation: str, entry, name: str | None, x: float, y: float) -> float:
+        r, c = self.grid.cell(x, y)
+        r, c = min(max(r, 0), self.grid.shape[0] - 1), min(max(c, 0), self.grid.shape[1] - 1)
+        return min(float(point_cost(relation, self.grid, entry, a, self.wall_dirs, self.centroid, x, y))
+                   for a in self.anchors(name))
 
 
 def score(ctx: FloorContext, req: Request, entry) -> tuple[np.ndarray, np.ndarray | None]:
@@ -51,15 +89,31 @@ def score(ctx: FloorContext, req: Request, entry) -> tuple[np.ndarray, np.ndarra
         anchor = ctx.anchor(rel.anchor)
         if rel.anchor and anchor is None and rel.anchor not in ("wall", "window", "door"):
             continue  # the anchor could not be placed; the report records the relation as unmet
-        cost, head = relation_field(rel.relation, ctx.grid, entry, anchor, ctx.wall_dirs, ctx.centroid)
+        cost, head = ctx.field(rel.relation, entry, rel.anchor)
         total += rel.weight * cost
         if head is not None and rel.weight > best_w:
             heading, best_w = head, rel.weight
     return total, heading
 
 
-def place_piece(ctx: FloorContext, req: Request, tries: int = 4) -> Placed2D | None:
-    """Place one furniture request; None if no variant fits anywhere."""
+def hard_relations_met(ctx: FloorContext, req: Request, entry, x: float, y: float) -> bool:
+    """Whether the CDF's hard floor relations of `req` hold with its origin at (x, y)."""
+    for rel in req.rels:
+        if not (rel.explicit and rel.hard) or rel.relation not in TOLERANCE:
+            continue
+        if rel.anchor and ctx.anchor(rel.anchor) is None and rel.anchor not in ("wall", "window", "door"):
+            return False
+        if ctx.cost_at(rel.relation, entry, rel.anchor, x, y) > TOLERANCE[rel.relation] + 1e-6:
+            return False
+    return True
+
+
+def place_piece(ctx: FloorContext, req: Request, tries: int = 6) -> Placed2D | None:
+    """Place one furniture request; None if no variant fits anywhere.
+
+    Cells are drawn with P proportional to exp(-cost / T); a draw that breaks one of the CDF's hard
+    relations is redrawn, and the last try takes the cheapest feasible cell instead.
+    """
     draft = ctx.draft
     rng = draft.rng
     variants = draft.catalog.of_type(req.type)
@@ -67,7 +121,7 @@ def place_piece(ctx: FloorContext, req: Request, tries: int = 4) -> Placed2D | N
         variants = [e for e in variants if e.id == req.asset]
     if not variants:
         return None
-    for _ in range(tries):
+    for attempt in range(tries):
         entry = variants[int(rng.integers(len(variants)))]
         cost, heading = score(ctx, req, entry)
         feas = np.stack([ctx.grid.feasible(entry, h) for h in HEADINGS])
@@ -83,9 +137,14 @@ def place_piece(ctx: FloorContext, req: Request, tries: int = 4) -> Placed2D | N
         logits = -(flat[finite] - flat[finite].min()) / TEMPERATURE
         prob = np.exp(logits)
         prob /= prob.sum()
-        pick = np.flatnonzero(finite)[int(rng.choice(len(prob), p=prob))]
+        if attempt < tries - 1:
+            pick = np.flatnonzero(finite)[int(rng.choice(len(prob), p=prob))]
+        else:
+            pick = int(np.argmin(flat))
         k, r, c = np.unravel_index(pick, per_heading.shape)
         x, y, yaw = float(ctx.grid.xs[c]), float(ctx.grid.ys[r]), HEADINGS[int(k)]
+        if attempt < tries - 1 and not hard_relations_met(ctx, req, entry, x, y):
+            continue
         obj = draft.add(entry, x, y, -entry.bbox_min[2], yaw, "furniture", fixed=True, name=req.name,
                         states=req.states)
         ctx.grid.block(draft.placed[-1].footprint)
@@ -94,6 +153,15 @@ def place_piece(ctx: FloorContext, req: Request, tries: int = 4) -> Placed2D | N
         ctx.placed[obj.id] = placed
         return placed
     return None
+
+
+def register(ctx: FloorContext, name: str, placed_obj, entry) -> None:
+    """Make an already placed object (a bound fixture) an anchor under a CDF name."""
+    p2 = Placed2D(placed_obj.type, placed_obj.position[0], placed_obj.position[1], placed_obj.yaw, entry)
+    ctx.placed[name] = p2
+    if placed_obj.type in SEGMENTED_FIXTURES:
+        ctx.alternates[name] = [Placed2D(p.obj.type, p.obj.position[0], p.obj.position[1], p.obj.yaw, p.entry)
+                                for p in ctx.draft.placed if p.obj.type == placed_obj.type]
 
 
 def heading_of(yaw: float) -> int:

@@ -15,7 +15,7 @@ import numpy as np
 from luminous_sim.assets.catalog import Catalog, default_catalog
 from luminous_sim.cdf.schema import ChallengeDefinition
 from luminous_sim.cssg.draft import SceneDraft
-from luminous_sim.cssg.furniture import FloorContext, place_piece
+from luminous_sim.cssg.furniture import FloorContext, hard_relations_met, place_piece, register
 from luminous_sim.cssg.objects import place_object
 from luminous_sim.cssg.requests import Request, requests_from_cdf
 from luminous_sim.cssg.structure import place_fixtures
@@ -25,7 +25,7 @@ from luminous_sim.errors import InfeasibleSceneError
 from luminous_sim.rooms.shell import RoomShell
 from luminous_sim.scene.model import Scene
 
-ATTEMPTS = 12
+ATTEMPTS = 20
 
 
 @dataclass(frozen=True)
@@ -58,11 +58,23 @@ def _meets(shell: RoomShell, c) -> bool:
             and (c.min_width is None or width >= c.min_width) and (c.max_width is None or width <= c.max_width))
 
 
-def _bind_fixtures(draft: SceneDraft, req: Request, by_name: dict[str, str]) -> bool:
-    """A CDF object of a fixture type names a fixture the room already has (the kitchen's fridge)."""
+def _bind_fixtures(draft: SceneDraft, req: Request, by_name: dict[str, str], ctx: FloorContext) -> bool:
+    """A CDF object of a fixture type names a fixture the room already has (the kitchen's fridge).
+
+    If that fixture breaks one of the object's hard relations, it (and what it brings along) is taken
+    out so that the furniture layer places the object by its relations instead.
+    """
     taken = set(by_name.values())
     hit = next((p for p in draft.placed if p.obj.type == req.type and p.obj.id not in taken), None)
     if hit is None:
+        return False
+    register(ctx, req.name, hit.obj, hit.entry)
+    if not hard_relations_met(ctx, req, hit.entry, hit.obj.position[0], hit.obj.position[1]):
+        del ctx.placed[req.name]
+        ctx.alternates.pop(req.name, None)
+        gone = {hit.obj.id} | {p.obj.id for p in draft.placed if p.obj.parent == hit.obj.id}
+        draft.placed[:] = [p for p in draft.placed if p.obj.id not in gone]
+        ctx.grid.unblock(hit.footprint)
         return False
     by_name[req.name] = hit.obj.id
     if req.states or req.name:
@@ -77,13 +89,13 @@ def sample_layout(cdf: ChallengeDefinition, shell: RoomShell, rng: np.random.Gen
     """One CSSG sample and its validation report."""
     draft = SceneDraft(shell, catalog, rng)
     place_fixtures(draft)
-    requests = requests_from_cdf(cdf, shell.room_type, rng)
+    requests = requests_from_cdf(cdf, shell.room_type, rng, area=shell.area)
     ctx = FloorContext.create(draft)
     by_name: dict[str, str] = {}
     occupied: dict = {}
     unplaced: list[str] = []
     for req in requests:
-        if req.layer == "fixture" and _bind_fixtures(draft, req, by_name):
+        if req.layer == "fixture" and _bind_fixtures(draft, req, by_name, ctx):
             ok = True
         elif req.layer in ("furniture", "fixture"):
             got = place_piece(ctx, req)

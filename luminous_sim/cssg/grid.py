@@ -54,19 +54,30 @@ class FloorGrid:
         return self.room.shape
 
     def coords(self) -> tuple[np.ndarray, np.ndarray]:
-        return np.meshgrid(self.xs, self.ys, indexing="xy")
+        if getattr(self, "_coords", None) is None:
+            self._coords = np.meshgrid(self.xs, self.ys, indexing="xy")
+        return self._coords
 
     def cell(self, x: float, y: float) -> tuple[int, int]:
         return int((y - self.y0) / RES), int((x - self.x0) / RES)
 
-    def block(self, poly: Polygon) -> None:
-        """Mark the cells under `poly` as occupied."""
+    def _cells(self, poly: Polygon) -> np.ndarray:
         gx, gy = self.coords()
         minx, miny, maxx, maxy = poly.bounds
         sel = (gx >= minx - RES) & (gx <= maxx + RES) & (gy >= miny - RES) & (gy <= maxy + RES)
         inside = np.zeros_like(self.free)
         inside[sel] = contains_xy(poly, gx[sel], gy[sel])
-        self.free &= ~inside
+        return inside
+
+    def block(self, poly: Polygon) -> None:
+        """Mark the cells under `poly` as occupied."""
+        self.free &= ~self._cells(poly)
+        self._sat = None
+
+    def unblock(self, poly: Polygon) -> None:
+        """Free the room cells under `poly` again (a removed piece)."""
+        self.free |= self._cells(poly) & self.room
+        self._sat = None
 
     def feasible(self, entry: AssetEntry, heading: float, margin: float = 0.02) -> np.ndarray:
         """Cells where the asset's origin can go at `heading` with its whole footprint on free floor."""
@@ -76,12 +87,19 @@ class FloorGrid:
         corners = np.array([[lo[0], lo[1]], [hi[0], lo[1]], [hi[0], hi[1]], [lo[0], hi[1]]])
         rot = corners @ np.array([[c, s], [-s, c]])
         (rx0, ry0), (rx1, ry1) = rot.min(axis=0), rot.max(axis=0)
-        # structuring element covering the footprint, offset so its origin is the asset origin
-        c0, c1 = math.floor(rx0 / RES), math.ceil(rx1 / RES)
-        r0, r1 = math.floor(ry0 / RES), math.ceil(ry1 / RES)
-        kernel = np.ones((r1 - r0 + 1, c1 - c0 + 1), dtype=bool)
-        origin = (-(r1 + r0) // 2, -(c1 + c0) // 2)
-        try:
-            return ndimage.binary_erosion(self.free, structure=kernel, origin=origin, border_value=0)
-        except ValueError:  # footprint larger than the room
-            return np.zeros_like(self.free)
+        # the footprint covers cell offsets r0..r1 (rows, y) and c0..c1 (columns, x) around the origin cell
+        c0, c1 = math.floor(rx0 / RES + 0.5), math.ceil(rx1 / RES - 0.5)
+        r0, r1 = math.floor(ry0 / RES + 0.5), math.ceil(ry1 / RES - 0.5)
+        h, w = self.free.shape
+        pad = max(abs(c0), abs(c1), abs(r0), abs(r1)) + 1
+        if getattr(self, "_sat", None) is None or self._sat[0] < pad:
+            occupied = np.pad(~self.free, pad, constant_values=True).astype(np.int32)
+            sat = np.zeros((occupied.shape[0] + 1, occupied.shape[1] + 1), dtype=np.int32)
+            sat[1:, 1:] = occupied.cumsum(0).cumsum(1)
+            self._sat = (pad, sat)
+        p, sat = self._sat
+        rows = np.arange(h)[:, None] + p
+        cols = np.arange(w)[None, :] + p
+        total = (sat[rows + r1 + 1, cols + c1 + 1] - sat[rows + r0, cols + c1 + 1]
+                 - sat[rows + r1 + 1, cols + c0] + sat[rows + r0, cols + c0])
+        return total == 0

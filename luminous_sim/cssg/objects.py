@@ -39,7 +39,9 @@ def place_object(draft: SceneDraft, req: Request, by_name: dict[str, str],
             continue
         spot = spots[int(draft.rng.integers(len(spots)))]
         key = (spot.host.id, spot.name)
-        got = sample_in_region(entry, spot, draft.rng, occupied.setdefault(key, []))
+        if key not in occupied:  # whatever already stands there (burners on a counter) takes room
+            occupied[key] = [p.footprint for p in draft.placed if p.obj.parent == spot.host.id]
+        got = sample_in_region(entry, spot, draft.rng, occupied[key])
         if got is None:
             continue
         x, y, z, yaw, fp = got

@@ -14,7 +14,7 @@ import numpy as np
 from luminous_sim.cdf.graph import oriented_relations, resolve_order
 from luminous_sim.cdf.relations import RELATIONS, STRUCTURE_ELEMENTS
 from luminous_sim.cdf.schema import ChallengeDefinition
-from luminous_sim.cssg.tables import layer_of, room_defaults, supports_for
+from luminous_sim.cssg.tables import layer_of, placement, room_defaults, supports_for
 from luminous_sim.vocab import room_objects
 
 
@@ -54,7 +54,7 @@ def _instances(cdf: ChallengeDefinition) -> dict[str, list[str]]:
 
 
 def requests_from_cdf(cdf: ChallengeDefinition, room_type: str, rng: np.random.Generator,
-                      defaults: bool = True) -> list[Request]:
+                      defaults: bool = True, area: float = 20.0) -> list[Request]:
     """Every object instance to place, with its relations, in placement order."""
     inst = _instances(cdf)
     specs = {o.name: o for o in cdf.scene.objects}
@@ -63,7 +63,8 @@ def requests_from_cdf(cdf: ChallengeDefinition, room_type: str, rng: np.random.G
         spec = specs[name]
         states = {k: v for k, v in (spec.state.model_dump() if spec.state else {}).items() if v is not None}
         for iname in inst[name]:
-            reqs[iname] = Request(iname, spec.type, _layer(spec.type, spec.layer), True, spec.asset, dict(states))
+            reqs[iname] = Request(iname, spec.type, _layer(spec.type, spec.layer, room_type), True, spec.asset,
+                                  dict(states))
     for o in oriented_relations(cdf):
         rel = o.relation
         if o.flipped and cdf.scene.relations[o.index].relation == "in_front_of":
@@ -73,12 +74,14 @@ def requests_from_cdf(cdf: ChallengeDefinition, room_type: str, rng: np.random.G
             anchor = anchors[min(inst[o.subject].index(sub), len(anchors) - 1)] if anchors != [None] else None
             reqs[sub].rels.append(Rel(rel, anchor, o.weight, o.hard, True, f"cdf:scene.relations[{o.index}]"))
     if defaults:
-        _add_defaults(reqs, room_type, rng)
+        _add_defaults(reqs, room_type, rng, area)
     _add_implicit(reqs)
     return _ordered(reqs)
 
 
-def _layer(object_type: str, declared: str | None) -> str:
+def _layer(object_type: str, declared: str | None, room_type: str) -> str:
+    if object_type in placement().get("wall_mounted_in", {}).get(room_type, []):
+        return "wall"
     own = layer_of(object_type)
     if declared == "decoration" and own != "wall":
         return own
@@ -86,14 +89,19 @@ def _layer(object_type: str, declared: str | None) -> str:
                                                                       "object": "object"}.get(declared, own)
 
 
-def _add_defaults(reqs: dict[str, Request], room_type: str, rng: np.random.Generator) -> None:
+ROOMY = 20.0
+"""m^2 from which a room gets its full share of optional furniture; smaller rooms get proportionally less."""
+
+
+def _add_defaults(reqs: dict[str, Request], room_type: str, rng: np.random.Generator, area: float) -> None:
     """Room-type furniture and ALFRED-frequency objects that the CDF did not ask for."""
     have = {r.type for r in reqs.values()}
+    room_share = min(1.0, area / ROOMY)
     for t, (lo, hi) in sorted(room_defaults(room_type)["furniture"].items()):
-        n = int(rng.integers(lo, hi + 1))
+        n = lo + int(rng.binomial(hi - lo, room_share * 0.6))
         for i in range(n if t not in have else 0):
             name = f"{t.lower()}_auto{i}"
-            reqs[name] = Request(name, t, "furniture", False)
+            reqs[name] = Request(name, t, _layer(t, None, room_type), False)
     for t, n in sorted(room_objects(room_type).items()):
         if t in have or layer_of(t) not in ("object", "wall") or rng.random() >= n / 30:
             continue

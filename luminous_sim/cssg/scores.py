@@ -14,10 +14,10 @@ from luminous_sim.cssg.grid import RES, FloorGrid
 
 TEMPERATURE = 0.05
 """metres of cost per e-fold of probability."""
-NEAR, FAR, AWAY, WALL_CLEAR = 1.2, 2.5, 1.5, 0.9
+NEAR, FAR, AWAY, WALL_CLEAR = 1.2, 2.5, 1.5, 0.6
 GAP = 0.02
 TOLERANCE = {"against_wall": 0.12, "in_corner": 0.3, "in_centre": 0.6, "beside": 0.35, "near": 0.0, "far": 0.0,
-             "away_from": 0.0, "face": 0.8, "in_front_of": 0.4, "behind": 0.4, "left_of": 0.4, "right_of": 0.4,
+             "away_from": 0.15, "face": 0.8, "in_front_of": 0.4, "behind": 0.4, "left_of": 0.4, "right_of": 0.4,
              "aligned_with": 0.3}
 """Cost at or below which a relation counts as met (used by the validation report)."""
 
@@ -112,10 +112,14 @@ def relation_field(
     lat, fr = anchor.lateral, anchor.front
     side = ahw + hw + 0.05
     ahead = ahd + hd + 0.15
+    if relation in ("beside", "left_of", "right_of"):
+        # next to the anchor's side, anywhere along its depth as long as the subject stays within it
+        u = (gx - ac[0]) * lat[0] + (gy - ac[1]) * lat[1]
+        v = (gx - ac[0]) * fr[0] + (gy - ac[1]) * fr[1]
+        along = {"beside": np.abs(u), "left_of": -u, "right_of": u}[relation]
+        slack = max(ahd - hd, 0.0) + 0.1
+        return np.abs(along - side) + np.maximum(0.0, np.abs(v) - slack), same
     ideals = {
-        "beside": [ac + lat * side, ac - lat * side],
-        "left_of": [ac - lat * side],
-        "right_of": [ac + lat * side],
         "in_front_of": [ac + fr * ahead],
         "behind": [ac - fr * ahead],
         "face": [ac + fr * (ahd + hd * 0.3 + 0.1), ac - fr * (ahd + hd * 0.3 + 0.1),

@@ -59,6 +59,17 @@ def _tile_counter(draft: SceneDraft, wall: Wall, a: float, b: float) -> list[Sce
     return out
 
 
+def _stove_counter(draft: SceneDraft, wall: Wall, slot: FixtureSlot) -> SceneObject | None:
+    """The counter segment the burners stand on: the narrowest one at least as wide as the cooktop."""
+    straight = [e for e in draft.catalog.of_type("CounterTop") if e.dims[1] < 0.9]
+    wide = [e for e in straight if _width(e) >= slot.width - 1e-6]
+    if not wide:
+        return None
+    narrowest = min(_width(e) for e in wide)
+    choice = [e for e in wide if abs(_width(e) - narrowest) < 1e-6]
+    return _add_against(draft, wall, choice[int(draft.rng.integers(len(choice)))], slot.offset)
+
+
 def _stove(draft: SceneDraft, wall: Wall, slot: FixtureSlot, counter_top: float, depth: float,
            host: str | None) -> None:
     burner = draft.pick_variant("StoveBurner")
@@ -66,15 +77,22 @@ def _stove(draft: SceneDraft, wall: Wall, slot: FixtureSlot, counter_top: float,
     if burner is None:
         return
     yaw = math.atan2(-wall.normal[0], wall.normal[1])
-    mid = slot.offset + slot.width / 2
-    for du in (-0.17, 0.17):
-        for dv in (0.17, 0.42):
-            x, y = wall.point(mid + du - (burner.bbox_min[0] + burner.bbox_max[0]) / 2, GAP + dv)
+    width = max(slot.width, 0.6)
+    mid = slot.offset + width / 2
+    bw, bd = burner.dims[0] + 0.02, burner.dims[1] + 0.02
+    cols = max(1, min(2, int(width // bw)))
+    rows = max(1, min(2, int((depth - 0.04) // bd)))
+    for i in range(cols):
+        du = (i - (cols - 1) / 2) * bw
+        for j in range(rows):
+            dv = 0.03 + bd / 2 + j * bd
+            x, y = wall.point(mid + du - (burner.bbox_min[0] + burner.bbox_max[0]) / 2,
+                              GAP + dv - (burner.bbox_min[1] + burner.bbox_max[1]) / 2)
             draft.add(burner, x, y, counter_top - burner.bbox_min[2], yaw, "fixture", True, parent=host)
-            if knob is not None and dv == 0.17:
-                for k in (-0.05, 0.05):
-                    kx, ky = wall.point(mid + du + k, GAP + depth - knob.bbox_min[1])
-                    draft.add(knob, kx, ky, counter_top - 0.12, yaw, "fixture", True, parent=host)
+        if knob is not None:
+            for k in (-0.05, 0.05):
+                kx, ky = wall.point(mid + du + k, GAP + depth - knob.bbox_min[1])
+                draft.add(knob, kx, ky, counter_top - 0.12, yaw, "fixture", True, parent=host)
 
 
 def _counter_top_height(draft: SceneDraft) -> float:
@@ -91,9 +109,14 @@ def place_fixtures(draft: SceneDraft) -> None:
         if slot.counter:
             slots_in.setdefault(slot.counter, []).append(slot)
     run: CounterRun
+    depth = max((e.dims[1] for e in draft.catalog.of_type("CounterTop") if e.dims[1] < 0.9), default=0.6)
     for run in shell.fixtures.counters:
         wall = walls[run.wall]
-        u = run.start
+        # a run that starts or ends at a corner leaves the perpendicular run's depth free; our
+        # counters may be a little deeper than the plan's depth
+        extra = max(0.0, depth - run.depth) + GAP + 0.01
+        u = run.start + (extra if run.start > 1e-6 else 0.0)
+        end = run.end - (extra if run.end < wall.length - 1e-6 else 0.0)
         for slot in sorted(slots_in.get(run.id, []), key=lambda s: s.offset):
             if slot.type == "Sink":
                 _tile_counter(draft, wall, u, slot.offset)
@@ -104,10 +127,15 @@ def place_fixtures(draft: SceneDraft) -> None:
                     _add_anchors(draft, host, sink)
                 u = slot.offset + slot.width
             elif slot.type == "StoveBurner":
-                under = _tile_counter(draft, wall, u, slot.offset + slot.width)
-                _stove(draft, wall, slot, _counter_top_height(draft), run.depth, under[-1].id if under else None)
-                u = slot.offset + slot.width
-        _tile_counter(draft, wall, u, run.end)
+                _tile_counter(draft, wall, u, slot.offset)
+                top = _stove_counter(draft, wall, slot)
+                if top is not None:
+                    _stove(draft, wall, slot, top.position[2] + draft.catalog.get(top.asset).bbox_max[2], run.depth,
+                           top.id)
+                    u = slot.offset + _width(draft.catalog.get(top.asset))
+                else:
+                    u = slot.offset + slot.width
+        _tile_counter(draft, wall, u, end)
     for slot in shell.fixtures.slots:
         if slot.counter:
             continue

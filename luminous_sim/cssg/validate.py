@@ -7,12 +7,13 @@ from dataclasses import asdict, dataclass, field
 
 import networkx as nx
 import numpy as np
+import shapely
 from shapely import distance as shp_distance
 from shapely.geometry import Point
 from shapely.strtree import STRtree
 
 from luminous_sim.cssg.draft import SceneDraft
-from luminous_sim.cssg.scores import TOLERANCE, point_cost
+from luminous_sim.cssg.scores import TOLERANCE
 
 AGENT_RADIUS = 0.2
 STEP = 0.25
@@ -64,12 +65,29 @@ class LayoutReport:
 
 def floor_obstacles(draft: SceneDraft) -> list[tuple[str, object]]:
     """Footprints of everything an agent bumps into: floor-standing things lower than its height."""
+    return [(p.obj.id, p.footprint) for p in draft.placed if _obstacle(p)]
+
+
+def _obstacle(p) -> bool:
+    if p.obj.parent is not None or p.obj.layer == "object":
+        return False
+    return p.obj.position[2] + p.entry.bbox_min[2] < AGENT_HEIGHT
+
+
+def _z_range(p) -> tuple[float, float]:
+    return p.obj.position[2] + p.entry.bbox_min[2], p.obj.position[2] + p.entry.bbox_max[2]
+
+
+def solid_overlaps(draft: SceneDraft, tol: float = 1e-4) -> list[tuple[str, str]]:
+    """Pairs of fixed, free-standing or wall-hung things whose boxes intersect in 3D."""
+    solid = [p for p in draft.placed if p.obj.parent is None and p.obj.layer != "object"]
     out = []
-    for p in draft.placed:
-        if p.obj.parent is not None or p.obj.layer == "object":
-            continue
-        if p.obj.position[2] + p.entry.bbox_min[2] < AGENT_HEIGHT:
-            out.append((p.obj.id, p.footprint))
+    for i, a in enumerate(solid):
+        za = _z_range(a)
+        for b in solid[i + 1:]:
+            zb = _z_range(b)
+            if za[0] < zb[1] - 0.005 and zb[0] < za[1] - 0.005 and a.footprint.intersection(b.footprint).area > tol:
+                out.append((a.obj.id, b.obj.id))
     return out
 
 
@@ -116,42 +134,23 @@ def check_layout(draft: SceneDraft, requests, ctx, unplaced: list[str], attempt:
                 met = anchor is not None and abs(_lateral(placed, anchor)) < 0.3
                 cost = 0.0
             else:
-                anchor2d = ctx.anchor(rel.anchor)
-                if rel.anchor and anchor2d is None and rel.anchor not in ("wall", "window", "door"):
+                if rel.anchor and ctx.anchor(rel.anchor) is None and rel.anchor not in ("wall", "window", "door"):
                     met, cost = False, float("inf")
                 else:
-                    cost = point_cost(rel.relation, ctx.grid, placed.entry, anchor2d, ctx.wall_dirs, ctx.centroid,
-                                      placed.obj.position[0], placed.obj.position[1])
+                    cost = ctx.cost_at(rel.relation, placed.entry, rel.anchor, placed.obj.position[0],
+                                       placed.obj.position[1])
                     met = cost <= TOLERANCE.get(rel.relation, 0.3) + 1e-6
             report.relations.append(RelationCheck(req.name, rel.relation, rel.anchor, rel.source, rel.hard,
                                                   rel.explicit, bool(met), round(float(cost), 4)))
-    obstacles = floor_obstacles(draft)
-    for i, (a, fa) in enumerate(obstacles):
-        for b, fb in obstacles[i + 1:]:
-            if fa.intersection(fb).area > 1e-4 and not _host_pair(draft, a, b):
-                report.overlaps.append((a, b))
+    report.overlaps = solid_overlaps(draft)
     grid = reachable_grid(draft)
     report.reachable_points = int(len(grid))
     if len(grid):
-        pts = [Point(p) for p in grid]
+        pts = shapely.points(grid)
         for p in draft.placed:
-            if p.obj.layer == "decoration":
-                continue
-            if min(shp_distance(p.footprint, pt) for pt in _near(pts, p.footprint)) > REACH - 1e-6:
+            if p.obj.layer != "decoration" and shp_distance(p.footprint, pts).min() > REACH - 1e-6:
                 report.unreachable.append(p.obj.id)
     return report
-
-
-def _near(points: list[Point], fp) -> list[Point]:
-    c = fp.centroid
-    near = [pt for pt in points if abs(pt.x - c.x) < 4 and abs(pt.y - c.y) < 4]
-    return near or points
-
-
-def _host_pair(draft: SceneDraft, a: str, b: str) -> bool:
-    """A fixture and the anchored part it brings (Sink and its SinkBasin) may overlap by design."""
-    objs = {p.obj.id: p.obj for p in draft.placed}
-    return objs[a].parent == b or objs[b].parent == a
 
 
 def _lateral(placed, anchor) -> float:

@@ -15,7 +15,10 @@ from luminous_sim.rooms.shell import Wall
 
 MARGIN = 0.1
 ABOVE_GAP = 0.25
-IMPLICIT_ABOVE = {"Mirror": "Sink", "Painting": "Sofa", "ToiletPaperHanger": "Toilet", "TowelHolder": "Bathtub"}
+IMPLICIT_ABOVE = {"Mirror": "Sink", "Painting": "Sofa", "ToiletPaperHanger": "Toilet", "TowelHolder": "Bathtub",
+                  "Cabinet": "CounterTop"}
+WALL_MOUNTED_MAX_DEPTH = 0.45
+"""Only shallow variants hang on a wall (wall cabinets, not base cabinets)."""
 """Where a wall piece goes by default when that fixture or furniture is in the room."""
 
 
@@ -60,8 +63,8 @@ def _above_target(draft: SceneDraft, req: Request, by_name: dict[str, str]) -> s
     if rel is not None:
         return by_name.get(rel.anchor or "")
     want = IMPLICIT_ABOVE.get(req.type)
-    hit = next((p.obj.id for p in draft.placed if p.obj.type == want), None)
-    return hit
+    hosts = [p.obj.id for p in draft.placed if p.obj.type == want]
+    return hosts[int(draft.rng.integers(len(hosts)))] if hosts else None
 
 
 def _nearest_wall(draft: SceneDraft, x: float, y: float) -> tuple[Wall, float]:
@@ -74,10 +77,14 @@ def _nearest_wall(draft: SceneDraft, x: float, y: float) -> tuple[Wall, float]:
     return best[0], best[1]
 
 
-def place_wall_piece(draft: SceneDraft, req: Request, by_name: dict[str, str], tries: int = 40) -> bool:
-    """Place one wall-layer request; False if no wall stretch has room."""
+def place_wall_piece(draft: SceneDraft, req: Request, by_name: dict[str, str], tries: int = 40,
+                     relations: bool = True) -> bool:
+    """Place one wall-layer request; False if no wall stretch has room.
+
+    With `relations` off (the baseline) nothing is put above anything on purpose.
+    """
     rng = draft.rng
-    variants = draft.catalog.of_type(req.type)
+    variants = [e for e in draft.catalog.of_type(req.type) if e.dims[1] <= WALL_MOUNTED_MAX_DEPTH]
     if req.asset:
         variants = [e for e in variants if e.id == req.asset]
     if not variants:
@@ -88,11 +95,15 @@ def place_wall_piece(draft: SceneDraft, req: Request, by_name: dict[str, str], t
         rng.shuffle(windows)
         for win in windows:
             wall = walls[win.wall]
-            fitting = [e for e in variants if e.dims[0] <= win.width + (0.5 if req.type == "Curtains" else 0.02)]
+            fitting = [e for e in variants if e.dims[0] <= win.width + (0.5 if req.type == "Curtains" else 0.02)
+                       and (req.type == "Curtains" or e.dims[2] <= win.height + 0.01)]
             if not fitting:
                 continue
             entry = fitting[int(rng.integers(len(fitting)))]
-            z0 = win.sill_height if req.type == "Window" else (0.0 if req.type == "Curtains" else win.sill_height + 0.02)
+            if req.type == "Window":  # centred in the opening
+                z0 = win.sill_height + (win.height - entry.dims[2]) / 2
+            else:
+                z0 = 0.0 if req.type == "Curtains" else win.sill_height + 0.02
             if req.type == "Window":
                 x, y, yaw = _origin_for(wall, entry, win.offset + win.width / 2, -draft.shell.wall_thickness / 2
                                         - (entry.dims[1] / 2))
@@ -101,7 +112,7 @@ def place_wall_piece(draft: SceneDraft, req: Request, by_name: dict[str, str], t
             if _add(draft, req, entry, wall, win.offset + win.width / 2, z0):
                 return True
         return False
-    target = _above_target(draft, req, by_name)
+    target = _above_target(draft, req, by_name) if relations else None
     for attempt in range(tries):
         entry = variants[int(rng.integers(len(variants)))]
         if target is not None and attempt < tries // 2:

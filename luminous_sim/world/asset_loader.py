@@ -9,6 +9,7 @@ import pybullet as p
 from pybullet_utils.bullet_client import BulletClient
 
 from luminous_sim.assets.catalog import AssetEntry
+from luminous_sim.errors import AssetError
 
 
 @dataclass
@@ -28,6 +29,9 @@ def load_asset(
     fixed: bool = False, rng: np.random.Generator | None = None,
 ) -> LoadedAsset:
     """Load `entry` at `position` turned by `yaw` (radians about z); with `rng`, randomise its colours."""
+    if not entry.urdf_path.is_file():
+        raise AssetError(f"asset {entry.id}: {entry.urdf_path} is missing; rebuild it with "
+                         f"`luminous assets build --types {entry.type}`")
     orn = client.getQuaternionFromEuler([0, 0, yaw])
     body = client.loadURDF(
         str(entry.urdf_path), list(position), orn, useFixedBase=fixed,

@@ -1,0 +1,79 @@
+"""Write what `luminous generate` produces for one scene: scene JSON, validation report (layout and
+physics), a labelled top-down picture with the reachable grid, and an egocentric snapshot."""
+
+from __future__ import annotations
+
+import io
+import json
+from pathlib import Path
+
+import numpy as np
+from PIL import Image
+
+from luminous_sim.assets.objio import write_atomic
+from luminous_sim.cssg.generate import Generated
+
+
+def png_bytes(img: Image.Image | np.ndarray) -> bytes:
+    if isinstance(img, np.ndarray):
+        img = Image.fromarray(img)
+    buf = io.BytesIO()
+    img.save(buf, format="PNG")
+    return buf.getvalue()
+
+
+def write_scene_outputs(generated: Generated, out_dir: Path, physics: bool = True) -> dict:
+    """Write the files for one generated scene into `out_dir`; returns the combined report."""
+    from luminous_sim.world.physics_check import check_physics
+    from luminous_sim.world.scene_builder import build_scene
+    from luminous_sim.world.views import egocentric, top_down
+
+    out_dir = Path(out_dir)
+    scene = generated.scene
+    report = {"layout": generated.report.to_dict()}
+    if physics:
+        report["physics"] = check_physics(scene).to_dict()
+    built = build_scene(scene)
+    try:
+        grid = _reachable(scene)
+        write_atomic(out_dir / "top_down.png", png_bytes(top_down(built, grid=grid)))
+        if len(grid):
+            x, y, yaw = _view_from(scene, grid)
+            frame = egocentric(built, x, y, yaw, horizon_deg=15.0, width=400, height=300, fov=75)
+            write_atomic(out_dir / "egocentric.png", png_bytes(frame.rgb))
+    finally:
+        built.client.disconnect()
+    scene.save(out_dir / "scene.json")
+    write_atomic(out_dir / "report.json", json.dumps(report, indent=1, sort_keys=True) + "\n")
+    return report
+
+
+def _reachable(scene) -> np.ndarray:
+    from luminous_sim.assets.catalog import default_catalog
+    from luminous_sim.cssg.draft import Placed, SceneDraft
+    from luminous_sim.cssg.pose import footprint
+    from luminous_sim.cssg.validate import reachable_grid
+
+    cat = default_catalog()
+    draft = SceneDraft(scene.room, cat, np.random.default_rng(0))
+    for o in scene.objects:
+        e = cat.get(o.asset)
+        draft.placed.append(Placed(o, e, footprint(e, o.position[0], o.position[1], o.yaw)))
+    return reachable_grid(draft)
+
+
+def _view_from(scene, grid: np.ndarray) -> tuple[float, float, float]:
+    """A standing point near the room's middle, facing the direction with the most room."""
+    from shapely.geometry import Point
+
+    poly = scene.room.polygon()
+    c = np.array(poly.centroid.coords[0])
+    x, y = grid[int(np.argmin(np.linalg.norm(grid - c, axis=1)))]
+
+    def depth(a: float) -> float:
+        d = 0.0
+        while d < 20 and poly.contains(Point(x + np.sin(np.radians(a)) * d, y + np.cos(np.radians(a)) * d)):
+            d += 0.25
+        return d
+
+    return float(x), float(y), float(max(range(0, 360, 90), key=depth))
