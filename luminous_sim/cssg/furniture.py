@@ -74,10 +74,8 @@ class FloorContext:
                     heading = np.where(better, head, heading)
         return best, heading
 
-    def cost_at(self, relation: str, entry, name: str | None, x: float, y: float) -> float:
-        r, c = self.grid.cell(x, y)
-        r, c = min(max(r, 0), self.grid.shape[0] - 1), min(max(c, 0), self.grid.shape[1] - 1)
-        return min(float(point_cost(relation, self.grid, entry, a, self.wall_dirs, self.centroid, x, y))
+    def cost_at(self, relation: str, entry, name: str | None, x: float, y: float, yaw: float | None = None) -> float:
+        return min(float(point_cost(relation, self.grid, entry, a, self.wall_dirs, self.centroid, x, y, yaw))
                    for a in self.anchors(name))
 
 
@@ -96,14 +94,16 @@ def score(ctx: FloorContext, req: Request, entry) -> tuple[np.ndarray, np.ndarra
     return total, heading
 
 
-def hard_relations_met(ctx: FloorContext, req: Request, entry, x: float, y: float) -> bool:
-    """Whether the CDF's hard floor relations of `req` hold with its origin at (x, y)."""
+def hard_relations_met(ctx: FloorContext, req: Request, entry, x: float, y: float, yaw: float | None = None,
+                       implicit: bool = False) -> bool:
+    """Whether the CDF's hard floor relations of `req` (and, with `implicit`, its implicit rules) hold
+    with its origin at (x, y) and heading `yaw`."""
     for rel in req.rels:
-        if not (rel.explicit and rel.hard) or rel.relation not in TOLERANCE:
+        if not ((rel.explicit and rel.hard) or (implicit and not rel.explicit)) or rel.relation not in TOLERANCE:
             continue
         if rel.anchor and ctx.anchor(rel.anchor) is None and rel.anchor not in ("wall", "window", "door"):
             return False
-        if ctx.cost_at(rel.relation, entry, rel.anchor, x, y) > TOLERANCE[rel.relation] + 1e-6:
+        if ctx.cost_at(rel.relation, entry, rel.anchor, x, y, yaw) > TOLERANCE[rel.relation] + 1e-6:
             return False
     return True
 
@@ -143,7 +143,8 @@ def place_piece(ctx: FloorContext, req: Request, tries: int = 6) -> Placed2D | N
             pick = int(np.argmin(flat))
         k, r, c = np.unravel_index(pick, per_heading.shape)
         x, y, yaw = float(ctx.grid.xs[c]), float(ctx.grid.ys[r]), HEADINGS[int(k)]
-        if attempt < tries - 1 and not hard_relations_met(ctx, req, entry, x, y):
+        # early draws must also honour the implicit rules; later ones only the CDF's hard relations
+        if attempt < tries - 1 and not hard_relations_met(ctx, req, entry, x, y, yaw, implicit=attempt < tries // 2):
             continue
         obj = draft.add(entry, x, y, -entry.bbox_min[2], yaw, "furniture", fixed=True, name=req.name,
                         states=req.states)

@@ -22,10 +22,21 @@ def _hosts(draft: SceneDraft, req: Request, by_name: dict[str, str]) -> tuple[li
     return [p for p in draft.placed if p.obj.type in allowed and p.obj.layer != "object"], None
 
 
+def _facing_point(draft: SceneDraft, req: Request, by_name: dict[str, str]) -> tuple[float, float] | None:
+    rel = next((r for r in req.rels if r.relation == "face"), None)
+    target = by_name.get(rel.anchor or "") if rel else None
+    hit = next((p for p in draft.placed if p.obj.id == target), None)
+    if hit is None:
+        return None
+    c = hit.footprint.centroid
+    return (c.x, c.y)
+
+
 def place_object(draft: SceneDraft, req: Request, by_name: dict[str, str],
                  occupied: dict[tuple[str, str], list[Polygon]]) -> bool:
     """Place one object request; False if no compatible region has room for it."""
     hosts, kind = _hosts(draft, req, by_name)
+    facing = _facing_point(draft, req, by_name)
     variants = draft.catalog.of_type(req.type)
     if req.asset:
         variants = [e for e in variants if e.id == req.asset]
@@ -41,7 +52,7 @@ def place_object(draft: SceneDraft, req: Request, by_name: dict[str, str],
         key = (spot.host.id, spot.name)
         if key not in occupied:  # whatever already stands there (burners on a counter) takes room
             occupied[key] = [p.footprint for p in draft.placed if p.obj.parent == spot.host.id]
-        got = sample_in_region(entry, spot, draft.rng, occupied[key])
+        got = sample_in_region(entry, spot, draft.rng, occupied[key], facing=facing)
         if got is None:
             continue
         x, y, z, yaw, fp = got

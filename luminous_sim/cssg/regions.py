@@ -51,14 +51,22 @@ def fits(entry: AssetEntry, spot: RegionSpot) -> bool:
 
 def sample_in_region(
     entry: AssetEntry, spot: RegionSpot, rng: np.random.Generator, occupied: list[Polygon], tries: int = 20,
-    yaw_choices: int = 4,
+    yaw_choices: int = 4, facing: tuple[float, float] | None = None,
 ) -> tuple[float, float, float, float, Polygon] | None:
-    """A free pose (x, y, z, yaw) for `entry` inside `spot`, avoiding `occupied` footprints (world xy)."""
+    """A free pose (x, y, z, yaw) for `entry` inside `spot`, avoiding `occupied` footprints (world xy).
+
+    With `facing` (a world point), the object is turned (in quarter turns) to face it.
+    """
     lo, hi = np.array(entry.bbox_min[:2]), np.array(entry.bbox_max[:2])
     center_local = (lo + hi) / 2
     half = (hi - lo) / 2
+    fixed_k = None
+    if facing is not None:
+        d = np.array(facing) - np.array(spot.center)
+        want = math.atan2(-d[0], d[1]) - spot.yaw
+        fixed_k = int(round(want / (math.pi / 2))) % 4
     for _ in range(tries):
-        k = int(rng.integers(yaw_choices))
+        k = fixed_k if fixed_k is not None else int(rng.integers(yaw_choices))
         rel_yaw = k * 2 * math.pi / yaw_choices
         ex, ey = (half if k % 2 == 0 else half[::-1]) if yaw_choices == 4 else (np.max(half),) * 2
         room_x, room_y = spot.size[0] / 2 - ex, spot.size[1] / 2 - ey

@@ -116,6 +116,8 @@ def _add_implicit(reqs: dict[str, Request]) -> None:
     for r in reqs.values():
         by_type.setdefault(r.type, []).append(r.name)
     for rule in implicit_table()["rules"]:
+        if any(t in by_type for t in rule.get("unless", ())):
+            continue
         for name in by_type.get(rule["subject"], []):
             req = reqs[name]
             if any(x.relation == rule["relation"] for x in req.rels):

@@ -16,8 +16,12 @@ TEMPERATURE = 0.05
 """metres of cost per e-fold of probability."""
 NEAR, FAR, AWAY, WALL_CLEAR = 1.2, 2.5, 1.5, 0.6
 GAP = 0.02
+CLOSE_FACERS = frozenset({"Chair", "Footstool", "Ottoman", "Stool"})
+"""Seats that face a table or desk from right beside it; everything else faces from viewing distance."""
+FACE_BANDS = {"close": (-0.15, 0.35), "view": (0.8, 3.0)}
+"""Distance band (m) from the subject's front edge to the anchor's footprint edge."""
 TOLERANCE = {"against_wall": 0.12, "in_corner": 0.3, "in_centre": 0.6, "beside": 0.35, "near": 0.0, "far": 0.0,
-             "away_from": 0.15, "face": 0.8, "in_front_of": 0.4, "behind": 0.4, "left_of": 0.4, "right_of": 0.4,
+             "away_from": 0.15, "face": 0.15, "in_front_of": 0.4, "behind": 0.4, "left_of": 0.4, "right_of": 0.4,
              "aligned_with": 0.3}
 """Cost at or below which a relation counts as met (used by the validation report)."""
 
@@ -122,12 +126,16 @@ def relation_field(
     ideals = {
         "in_front_of": [ac + fr * ahead],
         "behind": [ac - fr * ahead],
-        "face": [ac + fr * (ahd + hd * 0.3 + 0.1), ac - fr * (ahd + hd * 0.3 + 0.1),
-                 ac + lat * (ahw + hd * 0.3 + 0.1), ac - lat * (ahw + hd * 0.3 + 0.1)],
     }
+    if relation == "face":
+        u = (gx - ac[0]) * lat[0] + (gy - ac[1]) * lat[1]
+        v = (gx - ac[0]) * fr[0] + (gy - ac[1]) * fr[1]
+        edge = np.hypot(np.maximum(np.abs(u) - ahw, 0.0), np.maximum(np.abs(v) - ahd, 0.0)) - hd
+        lo, hi = FACE_BANDS["close" if subject.type in CLOSE_FACERS else "view"]
+        return np.maximum(0.0, lo - edge) + np.maximum(0.0, edge - hi), heading_index(ac[0] - gx, ac[1] - gy)
     if relation in ideals:
         cost = np.min([np.hypot(gx - p[0], gy - p[1]) for p in ideals[relation]], axis=0)
-        if relation in ("face", "in_front_of"):
+        if relation == "in_front_of":
             return cost, heading_index(ac[0] - gx, ac[1] - gy)
         return cost, same
     if relation == "aligned_with":
@@ -136,10 +144,19 @@ def relation_field(
     return np.zeros(grid.shape), None  # support and wall-layer relations are not floor fields
 
 
+HEADING_RELATIONS = frozenset({"face", "in_front_of", "against_wall"})
+"""Relations that are only met when the subject also has the heading they ask for."""
+WRONG_HEADING_COST = 1.0
+
+
 def point_cost(relation: str, grid: FloorGrid, subject: AssetEntry, anchor: Placed2D | None, wall_dirs: np.ndarray,
-               centroid: tuple[float, float], x: float, y: float) -> float:
-    """The relation's cost at one placed origin (for the validation report)."""
-    cost, _ = relation_field(relation, grid, subject, anchor, wall_dirs, centroid)
+               centroid: tuple[float, float], x: float, y: float, yaw: float | None = None) -> float:
+    """The relation's cost at one placed origin (for the validation report); with `yaw`, a relation
+    that asks for a heading costs WRONG_HEADING_COST more when the subject does not have it."""
+    cost, head = relation_field(relation, grid, subject, anchor, wall_dirs, centroid)
     r, c = grid.cell(x, y)
     r, c = min(max(r, 0), grid.shape[0] - 1), min(max(c, 0), grid.shape[1] - 1)
-    return float(cost[r, c])
+    extra = 0.0
+    if yaw is not None and head is not None and relation in HEADING_RELATIONS:
+        extra = WRONG_HEADING_COST * (int(head[r, c]) != int(round(yaw / (math.pi / 2))) % 4)
+    return float(cost[r, c]) + extra

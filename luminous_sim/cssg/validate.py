@@ -138,7 +138,7 @@ def check_layout(draft: SceneDraft, requests, ctx, unplaced: list[str], attempt:
                     met, cost = False, float("inf")
                 else:
                     cost = ctx.cost_at(rel.relation, placed.entry, rel.anchor, placed.obj.position[0],
-                                       placed.obj.position[1])
+                                       placed.obj.position[1], placed.obj.yaw)
                     met = cost <= TOLERANCE.get(rel.relation, 0.3) + 1e-6
             report.relations.append(RelationCheck(req.name, rel.relation, rel.anchor, rel.source, rel.hard,
                                                   rel.explicit, bool(met), round(float(cost), 4)))

@@ -12,7 +12,7 @@ OPENING_STRIP = 0.05
 """Depth of the floor strip in front of an opening used to find fixtures under a window."""
 
 REACH = 1.0
-"""Most distance from an agent grid point to a fixture footprint for the fixture to count as usable."""
+"""Most distance from an agent grid point to a fixture footprint for the fixture to be usable."""
 
 REQUIRED_SLOTS: dict[str, tuple[tuple[str, ...], ...]] = {
     "Kitchen": (("Sink",), ("StoveBurner",), ("Fridge",)),
@@ -35,7 +35,9 @@ def shell_problems(shell: RoomShell, reach: float = REACH) -> list[str]:
     t = shell.wall_thickness
     if not shell.doors:
         out.append("no door")
-    openings = [(d.id, d.wall, d.span) for d in shell.doors] + [(w.id, w.wall, w.span) for w in shell.windows]
+    openings = [(d.id, d.wall, d.span) for d in shell.doors] + [
+        (w.id, w.wall, w.span) for w in shell.windows
+    ]
     for oid, wid, (a, b) in openings:
         if a < t - 1e-6 or b > shell.wall(wid).length - t + 1e-6:
             out.append(f"{oid}: closer than the wall thickness to the end of wall {wid}")

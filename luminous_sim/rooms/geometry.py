@@ -1,4 +1,4 @@
-"""Small pure-geometry helpers shared by the room modules: rings, snapping, intervals along a wall."""
+"""Small geometry helpers shared by the room modules: rings, snapping, intervals along a wall."""
 
 from __future__ import annotations
 
@@ -99,7 +99,9 @@ def inside(a: BaseGeometry, b: BaseGeometry, tol: float = EPS) -> bool:
     return area_of(a.difference(b)) <= tol
 
 
-def merge_intervals(spans: Iterable[tuple[float, float]], gap: float = 0.0) -> list[tuple[float, float]]:
+def merge_intervals(
+    spans: Iterable[tuple[float, float]], gap: float = 0.0
+) -> list[tuple[float, float]]:
     """Merge overlapping (or closer than `gap`) intervals; returns them sorted."""
     out: list[tuple[float, float]] = []
     for a, b in sorted(spans):
@@ -110,7 +112,9 @@ def merge_intervals(spans: Iterable[tuple[float, float]], gap: float = 0.0) -> l
     return out
 
 
-def mask_to_intervals(mask: np.ndarray, step: float, origin: float = 0.0) -> list[tuple[float, float]]:
+def mask_to_intervals(
+    mask: np.ndarray, step: float, origin: float = 0.0
+) -> list[tuple[float, float]]:
     """Runs of True cells in a boolean row of cells `step` wide, as (start, end) intervals."""
     out: list[tuple[float, float]] = []
     start = None

@@ -1,13 +1,13 @@
-"""The `RoomShell` model: one room's fixed structure (floor, walls, doors, windows, zones, fixtures).
+"""The `RoomShell` model: a room's fixed structure (floor, walls, doors, windows, zones, fixtures).
 
-Coordinates are the project's world frame: metres, x/y on the floor (z = 0), z up. The outline is the
-inside face of the walls, counter-clockwise; wall `w<i>` runs from outline vertex i to vertex i+1, so
-the room lies on its left and its inward normal is the direction turned 90 degrees left. Walls are
-`wall_thickness` thick, outside the outline. Positions along a wall (`offset`, `start`, `end`) are
-metres from the wall's start vertex.
+Coordinates are the project's world frame: metres, x/y on the floor (z = 0), z up. The outline is
+the inside face of the walls, counter-clockwise; wall `w<i>` runs from outline vertex i to vertex
+i+1, so the room lies on its left and its inward normal is the direction turned 90 degrees left.
+Walls are `wall_thickness` thick, outside the outline. Positions along a wall (`offset`, `start`,
+`end`) are metres from the wall's start vertex.
 
-Every float is rounded to 4 decimals when a model is built, so `RoomShell.from_json(s.to_json()) == s`
-and `to_json` is byte-for-byte deterministic (sorted keys).
+Every float is rounded to 4 decimals when a model is built, so
+`RoomShell.from_json(s.to_json()) == s` and `to_json` is byte-for-byte deterministic (sorted keys).
 """
 
 from __future__ import annotations
@@ -36,12 +36,20 @@ Vec2 = tuple[R4, R4]
 RoomType = Literal["Kitchen", "LivingRoom", "Bedroom", "Bathroom"]
 Shape = Literal["rect", "L", "two_zone", "rectilinear", "polygon"]
 SlotType = Literal["Sink", "StoveBurner", "Fridge", "Toilet", "Bathtub", "Shower"]
-"""Fixture slot types. All but `Shower` are ALFRED object types; `Shower` is a stall (ShowerGlass/Door)."""
+"""Fixture slot types: ALFRED object types, and `Shower`, a stall (ShowerGlass/ShowerDoor)."""
 NAME_PATTERN = r"^[A-Za-z0-9_\-]+$"
 
 
 class _Model(BaseModel):
     model_config = ConfigDict(frozen=True, extra="forbid")
+
+    def model_copy(self, *, update: dict[str, Any] | None = None, deep: bool = False) -> Any:
+        """A copy with some fields replaced (not validated again), without stale cached values."""
+        copy = super().model_copy(update=update, deep=deep)
+        for name in dir(type(copy)):
+            if isinstance(getattr(type(copy), name, None), cached_property):
+                copy.__dict__.pop(name, None)
+        return copy
 
 
 class Wall(_Model):
@@ -52,11 +60,12 @@ class Wall(_Model):
     end: Vec2
     normal: Vec2 = Field(description="unit normal pointing into the room")
 
-    @property
+    @cached_property
     def length(self) -> float:
+        """Length of the inside face, metres."""
         return math.dist(self.start, self.end)
 
-    @property
+    @cached_property
     def direction(self) -> tuple[float, float]:
         """Unit vector from start to end."""
         n = self.length
@@ -80,7 +89,11 @@ class Wall(_Model):
 
     def rect(self, u0: float, u1: float, v0: float, v1: float) -> Polygon:
         """The rectangle [u0, u1] along the wall by [v0, v1] into the room, as a world polygon."""
-        return Polygon([self.point(u0, v0), self.point(u1, v0), self.point(u1, v1), self.point(u0, v1)])
+        pts = [self.point(u0, v0), self.point(u1, v0), self.point(u1, v1), self.point(u0, v1)]
+        if self.normal[0] == 0.0 or self.normal[1] == 0.0:  # axis-aligned: the fast constructor
+            xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+            return shapely.box(min(xs), min(ys), max(xs), max(ys))
+        return Polygon(pts)
 
 
 class Door(_Model):
@@ -125,7 +138,7 @@ class Zone(_Model):
 
 
 class CounterRun(_Model):
-    """A CounterTop run against a wall, from `start` to `end` along it; cabinets and drawers below."""
+    """A CounterTop run against a wall, from `start` to `end` along it; cabinets, drawers below."""
 
     id: str
     wall: str
@@ -161,7 +174,7 @@ class FixtureSlot(_Model):
 
 
 class FixturePlan(_Model):
-    """Kitchen and bathroom fixtures kept with the structure (LUMINOUS keeps them for those rooms)."""
+    """Kitchen and bathroom fixtures, kept with the structure (as LUMINOUS does for those rooms)."""
 
     layout: Literal["none", "I", "L", "U", "galley", "other"] = "none"
     counters: tuple[CounterRun, ...] = ()
@@ -174,7 +187,7 @@ class FixturePlan(_Model):
 
 @dataclass(frozen=True)
 class WallBox:
-    """One solid box of wall for building: centre (x, y, z), size (along, thickness, height), yaw."""
+    """A solid box of wall for building: centre (x, y, z), size (along, thickness, height), yaw."""
 
     wall: str
     kind: Literal["solid", "lintel", "sill", "head"]
@@ -197,7 +210,7 @@ def walls_from_outline(outline: Any) -> tuple[Wall, ...]:
 
 
 class RoomShell(_Model):
-    """One room's structure. Build it with `generate_shell`, the ALFRED converter, or a JSON file."""
+    """A room's structure. Build it with `generate_shell`, the ALFRED converter, or a JSON file."""
 
     format: Literal["luminous-room/1"] = FORMAT
     name: str = Field(pattern=NAME_PATTERN)
@@ -224,7 +237,9 @@ class RoomShell(_Model):
         if not poly.is_valid:
             raise ValueError(f"outline is not a simple polygon ({shapely.is_valid_reason(poly)})")
         if len(self.walls) != len(ring):
-            raise ValueError(f"expected {len(ring)} walls (one per outline edge), got {len(self.walls)}")
+            raise ValueError(
+                f"expected {len(ring)} walls (one per outline edge), got {len(self.walls)}"
+            )
         for i, (wall, ref) in enumerate(zip(self.walls, walls_from_outline(ring))):
             if (
                 wall.start != ref.start
@@ -356,9 +371,9 @@ class RoomShell(_Model):
         """Boxes that build the walls, with door and window openings cut out.
 
         A door leaves the wall open from the floor to the door height (a lintel above); a window
-        leaves a sill piece below and a head piece above. At a convex corner the wall ending there is
-        lengthened by the thickness to close the corner; at a reflex corner it is shortened so that
-        walls do not overlap. Openings should keep a thickness away from wall ends.
+        leaves a sill piece below and a head piece above. At a convex corner the wall ending there
+        is lengthened by the thickness to close the corner; at a reflex corner it is shortened so
+        that walls do not overlap. Openings should keep a thickness away from wall ends.
         """
         t, h = self.wall_thickness, self.wall_height
         ring = list(self.outline)
@@ -374,7 +389,13 @@ class RoomShell(_Model):
             for w in self.windows:
                 if w.wall == wall.id:
                     top = w.sill_height + w.height
-                    cuts.append((w.offset, w.offset + w.width, [("sill", 0.0, w.sill_height), ("head", top, h)]))
+                    cuts.append(
+                        (
+                            w.offset,
+                            w.offset + w.width,
+                            [("sill", 0.0, w.sill_height), ("head", top, h)],
+                        )
+                    )
             cuts.sort()
             pieces: list[tuple[str, float, float, float, float]] = []
             u = 0.0
@@ -395,7 +416,7 @@ class RoomShell(_Model):
                         kind=kind,  # type: ignore[arg-type]
                         center=(round(cx, 6), round(cy, 6), round((z0 + z1) / 2, 6)),
                         size=(round(b - a, 6), round(t, 6), round(z1 - z0, 6)),
-                        yaw=round(wall.yaw, 6),
+                        yaw=wall.yaw,
                     )
                 )
         return boxes
@@ -412,7 +433,7 @@ class RoomShell(_Model):
 
     @classmethod
     def from_dict(cls, data: Any, where: str = "room") -> RoomShell:
-        """Validate a dict into a RoomShell; a bad document raises RoomError naming `where` and the key."""
+        """Validate a dict into a RoomShell; a bad document raises RoomError naming `where`, key."""
         try:
             return cls.model_validate(data)
         except ValidationError as exc:

@@ -1,0 +1,144 @@
+"""CSSG quality and speed vs the uniform-random baseline, per room type, plus a picture grid.
+
+    python benchmarks/bench_cssg.py --n 100          # the issue's figures (slow: physics on every scene)
+    python benchmarks/bench_cssg.py --n 10 --no-physics
+
+Per room type it uses the example CDF of that room type (explicit relations) and reports, for CSSG
+and the baseline: explicit relations met, implicit rules met, scenes with interpenetrations > 1 cm,
+objects that moved (> 1 cm) or fell while settling, required objects reachable by the agent; then the
+median time of one layout sample, of one valid scene, and of layout + PyBullet build + settle.
+"""
+
+from __future__ import annotations
+
+import argparse
+import statistics
+import sys
+import time
+from pathlib import Path
+
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+from luminous_sim import cdf  # noqa: E402
+from luminous_sim.assets.catalog import default_catalog  # noqa: E402
+from luminous_sim.cssg.baseline import sample_uniform  # noqa: E402
+from luminous_sim.cssg.generate import Generated, choose_room, generate, sample_layout  # noqa: E402
+
+EXAMPLES = {
+    "Kitchen": "kitchen_coffee_mug",
+    "LivingRoom": "livingroom_painting_sofa",
+    "Bedroom": "bedroom_reading_desk",
+    "Bathroom": "bathroom_soap",
+}
+
+
+def _rate(hits: int, total: int) -> str:
+    return f"{100 * hits / total:5.1f}% ({hits}/{total})" if total else "  n/a"
+
+
+def run(room_type: str, n: int, physics: bool, grid_dir: Path | None) -> None:
+    from luminous_sim.world.physics_check import check_physics
+
+    doc = cdf.load(Path(__file__).resolve().parents[1] / "cdf" / "examples" / f"{EXAMPLES[room_type]}.yaml")
+    catalog = default_catalog()
+    rows = {}
+    tops = []
+    for method in ("cssg", "baseline"):
+        exp = imp = req_ok = req_total = pen_scenes = moved = fell = infeasible = 0
+        exp_total = imp_total = 0
+        sample_times, scene_times, full_times = [], [], []
+        for seed in range(n):
+            t0 = time.perf_counter()
+            if method == "cssg":
+                try:
+                    g = generate(doc, seed=seed, catalog=catalog)
+                except Exception:
+                    infeasible += 1
+                    continue
+                scene_times.append(time.perf_counter() - t0)
+                sample_times.append(scene_times[-1] / (g.report.attempt + 1))
+            else:
+                rng = np.random.default_rng(np.random.SeedSequence([seed, 0]))
+                draft, report = sample_uniform(doc, choose_room(doc, rng), rng, catalog)
+                g = Generated(draft.to_scene("uniform", seed), report)
+                sample_times.append(time.perf_counter() - t0)
+            rels = g.report.relations
+            exp += sum(r.met for r in rels if r.explicit)
+            exp_total += sum(1 for r in rels if r.explicit)
+            imp += sum(r.met for r in rels if not r.explicit)
+            imp_total += sum(1 for r in rels if not r.explicit)
+            required = [o for o in g.scene.objects if o.name and not o.name.endswith(tuple(f"_auto{i}" for i in range(5)))]
+            req_total += len(required)
+            req_ok += sum(o.id not in g.report.unreachable for o in required) - sum(
+                1 for nme in g.report.unplaced if nme in g.report.required)
+            if physics:
+                t1 = time.perf_counter()
+                ph = check_physics(g.scene)
+                full_times.append(time.perf_counter() - t1 + sample_times[-1])
+                pen_scenes += bool(ph.interpenetrations)
+                moved += len(ph.moved)
+                fell += len(ph.fell)
+            if method == "cssg" and grid_dir is not None and len(tops) < 6:
+                tops.append(g)
+        rows[method] = (exp, exp_total, imp, imp_total, req_ok, req_total, pen_scenes, moved, fell, infeasible,
+                        sample_times, scene_times, full_times)
+    print(f"\n== {room_type} ({EXAMPLES[room_type]}.yaml, {n} seeds) ==")
+    print(f"{'':34}{'CSSG':>22}{'baseline':>22}")
+    c, b = rows["cssg"], rows["baseline"]
+    print(f"{'explicit relations met':34}{_rate(c[0], c[1]):>22}{_rate(b[0], b[1]):>22}")
+    print(f"{'implicit rules met':34}{_rate(c[2], c[3]):>22}{_rate(b[2], b[3]):>22}")
+    print(f"{'required objects reachable':34}{_rate(c[4], c[5]):>22}{_rate(b[4], b[5]):>22}")
+    if physics:
+        print(f"{'scenes with interpenetration>1cm':34}{c[6]:>22}{b[6]:>22}")
+        print(f"{'objects moved >1cm while settling':34}{c[7]:>22}{b[7]:>22}")
+        print(f"{'objects fell while settling':34}{c[8]:>22}{b[8]:>22}")
+    print(f"{'infeasible (no valid layout)':34}{c[9]:>22}{'-':>22}")
+    med = lambda xs: f"{1000 * statistics.median(xs):.0f} ms" if xs else "n/a"  # noqa: E731
+    print(f"{'median time per layout sample':34}{med(c[10]):>22}{med(b[10]):>22}")
+    print(f"{'median time per valid scene':34}{med(c[11]):>22}{'-':>22}")
+    if physics:
+        print(f"{'median layout+build+settle':34}{med(c[12]):>22}{med(b[12]):>22}")
+    if grid_dir is not None and tops:
+        _grid(tops, grid_dir / f"cssg_{room_type}.png")
+
+
+def _grid(generated: list, out: Path) -> None:
+    from PIL import Image
+
+    from luminous_sim.world.scene_builder import build_scene
+    from luminous_sim.world.views import top_down
+
+    tiles = []
+    for g in generated:
+        built = build_scene(g.scene, settle_steps=0)
+        try:
+            img = top_down(built, px_per_m=50, labels=False)
+        finally:
+            built.client.disconnect()
+        img.thumbnail((360, 360))
+        tiles.append(img)
+    cols = 3
+    rows = (len(tiles) + cols - 1) // cols
+    sheet = Image.new("RGB", (cols * 360, rows * 360), "white")
+    for i, t in enumerate(tiles):
+        sheet.paste(t, ((i % cols) * 360, (i // cols) * 360))
+    out.parent.mkdir(parents=True, exist_ok=True)
+    sheet.save(out)
+    print(f"picture grid: {out}")
+
+
+def main() -> None:
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--n", type=int, default=20, help="scenes per room type and method")
+    ap.add_argument("--rooms", nargs="*", default=list(EXAMPLES))
+    ap.add_argument("--no-physics", action="store_true")
+    ap.add_argument("--grid-dir", type=Path, default=Path("out/bench"))
+    args = ap.parse_args()
+    for room in args.rooms:
+        run(room, args.n, not args.no_physics, args.grid_dir)
+
+
+if __name__ == "__main__":
+    main()

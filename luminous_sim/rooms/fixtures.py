@@ -1,0 +1,472 @@
+"""Fixture plans for kitchens (counter runs in I, L or U layouts, sink, stove, fridge), bathrooms.
+
+The planners draw every random choice from the Generator they are given, and return None when the
+room cannot take a plan (the caller then redraws the room or its doors). Dimensions are data
+(`KITCHEN`, `BATHROOM`); offsets are multiples of 5 cm.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+import numpy as np
+from shapely.geometry import Polygon
+from shapely.geometry.base import BaseGeometry
+
+from luminous_sim.rooms.geometry import is_convex_vertex, r4
+from luminous_sim.rooms.placement import STEP, footprint, free_intervals, free_offsets
+from luminous_sim.rooms.shell import CounterRun, FixturePlan, FixtureSlot, Wall
+
+
+@dataclass(frozen=True)
+class KitchenDims:
+    """Kitchen fixture sizes, metres."""
+
+    counter_depth: float = 0.6
+    counter_height: float = 0.9
+    aisle: float = 1.0
+    sink_widths: tuple[float, ...] = (0.6, 0.8, 0.9)
+    stove_widths: tuple[float, ...] = (0.6, 0.75)
+    fridge_widths: tuple[float, ...] = (0.75, 0.8, 0.9)
+    fridge_depth: float = 0.7
+    fridge_height: float = 1.8
+    fridge_front: float = 0.9
+    end_gap: float = 0.1
+    stove_side: float = 0.3
+    sink_stove_gap: float = 0.4
+    min_run: float = 1.2
+
+
+@dataclass(frozen=True)
+class BathroomDims:
+    """Bathroom fixture sizes, metres."""
+
+    tub_lengths: tuple[float, ...] = (1.5, 1.6, 1.7)
+    tub_alcove_max: float = 1.85
+    tub_depth: float = 0.75
+    tub_height: float = 0.55
+    tub_front: float = 0.6
+    toilet_width: float = 0.75
+    toilet_depth: float = 0.7
+    toilet_height: float = 0.8
+    toilet_front: float = 0.55
+    sink_width: float = 0.6
+    sink_depth: float = 0.5
+    vanity_widths: tuple[float, ...] = (0.8, 1.0, 1.2)
+    vanity_depth: float = 0.55
+    vanity_height: float = 0.85
+    vanity_probability: float = 0.7
+    sink_front: float = 0.6
+
+
+KITCHEN = KitchenDims()
+BATHROOM = BathroomDims()
+
+
+@dataclass(frozen=True)
+class _Run:
+    wall: Wall
+    start: float
+    end: float
+    corner_start: bool  # the run starts against the corner square of the previous run
+    corner_end: bool  # the run ends with a corner square (the next run starts against it)
+
+
+def corner_convex(walls: Sequence[Wall], i: int) -> bool:
+    """Whether the corner between wall i and wall i+1 is convex (turns left)."""
+    a, b = walls[i], walls[(i + 1) % len(walls)]
+    return is_convex_vertex(a.start, a.end, b.end)
+
+
+def _pick(rng: np.random.Generator, items: Sequence, p: Sequence[float] | None = None):
+    if p is not None:
+        w = np.asarray(p, dtype=float)
+        return items[int(rng.choice(len(items), p=w / w.sum()))]
+    return items[int(rng.integers(len(items)))]
+
+
+def _kitchen_candidates(
+    walls: Sequence[Wall], avail: list[list[tuple[float, float]]], d: KitchenDims
+):
+    """Every I, L and U layout the free wall stretches allow, as lists of _Run."""
+    n = len(walls)
+    cd = d.counter_depth
+    cands: dict[str, list[list[_Run]]] = {"I": [], "L": [], "U": []}
+    longest = [
+        max(avail[i], key=lambda s: (s[1] - s[0], -s[0])) if avail[i] else None for i in range(n)
+    ]
+    for i, w in enumerate(walls):
+        s = longest[i]
+        if s and s[1] - s[0] >= 2.4:
+            cands["I"].append([_Run(w, s[0], s[1], False, False)])
+
+    def ends_at_end(i: int) -> tuple[float, float] | None:
+        return next((s for s in avail[i] if s[1] >= walls[i].length - 1e-6), None)
+
+    def starts_at_zero(i: int) -> tuple[float, float] | None:
+        return next((s for s in avail[i] if s[0] <= 1e-6), None)
+
+    for i in range(n):
+        j = (i + 1) % n
+        if n < 3 or not corner_convex(walls, i):
+            continue
+        a, b = ends_at_end(i), starts_at_zero(j)
+        if a and b and a[1] - a[0] >= d.min_run and b[1] - cd >= d.min_run:
+            cands["L"].append(
+                [_Run(walls[i], a[0], a[1], False, True), _Run(walls[j], cd, b[1], True, False)]
+            )
+        k = (j + 1) % n
+        if n >= 4 and corner_convex(walls, j):
+            full = next(
+                (s for s in avail[j] if s[0] <= 1e-6 and s[1] >= walls[j].length - 1e-6), None
+            )
+            c = starts_at_zero(k)
+            if a and full and c and a[1] - a[0] >= d.min_run and c[1] - cd >= d.min_run:
+                cands["U"].append(
+                    [
+                        _Run(walls[i], a[0], a[1], False, True),
+                        _Run(walls[j], cd, full[1], True, True),
+                        _Run(walls[k], cd, c[1], True, False),
+                    ]
+                )
+    return cands
+
+
+def _trim_runs(runs: list[_Run], rng: np.random.Generator, d: KitchenDims) -> list[_Run]:
+    """Shorten free run ends at random (a run need not fill its whole wall)."""
+    out = []
+    for r in runs:
+        start, end = r.start, r.end
+        length = end - start
+        spare = max(0.0, length - max(d.min_run, 2.4 if len(runs) == 1 else d.min_run))
+        cut = r4(np.floor(rng.uniform(0, min(spare, 1.0)) / STEP) * STEP) if spare > 0 else 0.0
+        if not r.corner_start and not r.corner_end:
+            first = r4(np.floor(rng.uniform(0, cut) / STEP) * STEP) if cut > 0 else 0.0
+            start, end = start + first, end - (cut - first)
+        elif not r.corner_start:
+            start += cut
+        elif not r.corner_end:
+            end -= cut
+        out.append(_Run(r.wall, r4(start), r4(end), r.corner_start, r.corner_end))
+    return out
+
+
+def _usable(run: _Run, d: KitchenDims) -> tuple[float, float]:
+    """Part of a run where an appliance can go: away from corner squares and run ends."""
+    a = run.start + d.end_gap
+    b = run.end - d.end_gap - (d.counter_depth if run.corner_end else 0.0)
+    return a, b
+
+
+def _grid(a: float, b: float, width: float) -> np.ndarray:
+    lo, hi = np.ceil(a / STEP - 1e-9), np.floor((b - width) / STEP + 1e-9)
+    return np.round(np.arange(lo, hi + 1) * STEP, 4) if hi >= lo else np.zeros(0)
+
+
+def plan_kitchen(
+    walls: Sequence[Wall],
+    floor: Polygon,
+    rng: np.random.Generator,
+    region: BaseGeometry | None = None,
+    keepouts: Sequence[BaseGeometry] = (),
+    dims: KitchenDims = KITCHEN,
+) -> FixturePlan | None:
+    """Draw a kitchen plan: counter runs in an I, L or U layout, a sink, a stove and a fridge.
+
+    Args:
+        walls: the room's walls.
+        floor: the floor polygon.
+        rng: source of every random choice.
+        region: where fixtures may go (a kitchen's work zone); default the whole floor.
+        keepouts: areas fixtures must not touch (door clearance zones).
+        dims: fixture sizes.
+
+    Returns:
+        The plan, or None if no layout fits.
+    """
+    d = dims
+    region = floor if region is None else region.intersection(floor)
+    avail = [
+        free_intervals(w, d.counter_depth, region, keepouts, front=d.aisle, front_allowed=floor)
+        for w in walls
+    ]
+    cands = _kitchen_candidates(walls, avail, d)
+    kinds = [k for k in ("I", "L", "U") if cands[k]]
+    if not kinds:
+        return None
+    weights = {"I": 1.0, "L": 1.5, "U": 1.0 if floor.area >= 11 else 0.3}
+    kind = _pick(rng, kinds, [weights[k] for k in kinds])
+    runs = _trim_runs(list(_pick(rng, cands[kind])), rng, d)
+
+    # The fridge stands at a free end of a run, which gets shorter by its width.
+    fw = float(_pick(rng, d.fridge_widths))
+    ends = [
+        (i, e)
+        for i, r in enumerate(runs)
+        for e in ("start", "end")
+        if not getattr(r, f"corner_{e}")
+    ]
+    rng.shuffle(ends)
+    fridge = None
+    for i, e in ends:
+        r = runs[i]
+        if r.end - r.start - fw < d.min_run - 1e-6:
+            continue
+        u = r.start if e == "start" else r4(r.end - fw)
+        ok = free_offsets(
+            r.wall, fw, d.fridge_depth, region, keepouts, front=d.fridge_front, front_allowed=floor
+        )
+        if not np.any(np.isclose(ok, u)):
+            continue
+        fridge = FixtureSlot(
+            id="Fridge_0",
+            type="Fridge",
+            wall=r.wall.id,
+            offset=u,
+            width=fw,
+            depth=d.fridge_depth,
+            height=d.fridge_height,
+        )
+        runs[i] = _Run(
+            r.wall,
+            r4(r.start + fw) if e == "start" else r.start,
+            u if e == "end" else r.end,
+            r.corner_start,
+            r.corner_end,
+        )
+        break
+    if fridge is None:
+        return None
+
+    # The U layout needs an aisle between facing runs.
+    if kind == "U":
+        a = footprint(runs[0].wall, runs[0].start, runs[0].end - runs[0].start, d.counter_depth)
+        c = footprint(runs[2].wall, runs[2].start, runs[2].end - runs[2].start, d.counter_depth)
+        if a.distance(c) < d.aisle - 1e-6:
+            return None
+
+    counters = tuple(
+        CounterRun(
+            id=f"CounterTop_{i}",
+            wall=r.wall.id,
+            start=r.start,
+            end=r.end,
+            depth=d.counter_depth,
+            height=d.counter_height,
+        )
+        for i, r in enumerate(runs)
+    )
+    sink_w = float(_pick(rng, d.sink_widths))
+    stove_w = float(_pick(rng, d.stove_widths))
+    order = list(range(len(runs)))
+    rng.shuffle(order)
+    sink = None
+    for i in order:
+        us = _grid(*_usable(runs[i], d), sink_w)
+        if len(us):
+            sink = (i, float(_pick(rng, list(us))))
+            break
+    if sink is None:
+        return None
+    si, su = sink
+    stove_opts: list[tuple[int, float]] = []
+    for i, r in enumerate(runs):
+        a, b = _usable(r, d)
+        a, b = max(a, r.start + d.stove_side), min(b, r.end - d.stove_side)
+        for u in _grid(a, b, stove_w):
+            if i == si and not (
+                u + stove_w <= su - d.sink_stove_gap + 1e-6
+                or u >= su + sink_w + d.sink_stove_gap - 1e-6
+            ):
+                continue
+            stove_opts.append((i, float(u)))
+    if not stove_opts:
+        return None
+    other = [o for o in stove_opts if o[0] != si]
+    pool = other if other and rng.random() < 0.7 else stove_opts
+    ti, tu = _pick(rng, pool)
+    slots = (
+        FixtureSlot(
+            id="Sink_0",
+            type="Sink",
+            wall=runs[si].wall.id,
+            offset=su,
+            width=sink_w,
+            depth=d.counter_depth,
+            height=d.counter_height,
+            counter=counters[si].id,
+        ),
+        FixtureSlot(
+            id="StoveBurner_0",
+            type="StoveBurner",
+            wall=runs[ti].wall.id,
+            offset=tu,
+            width=stove_w,
+            depth=d.counter_depth,
+            height=d.counter_height,
+            counter=counters[ti].id,
+        ),
+        fridge,
+    )
+    return FixturePlan(layout=kind, counters=counters, slots=slots)
+
+
+def plan_bathroom(
+    walls: Sequence[Wall],
+    floor: Polygon,
+    rng: np.random.Generator,
+    keepouts: Sequence[BaseGeometry] = (),
+    bath_region: BaseGeometry | None = None,
+    vanity_region: BaseGeometry | None = None,
+    dims: BathroomDims = BATHROOM,
+) -> FixturePlan | None:
+    """Draw a bathroom plan: a bathtub in a corner, a toilet, a sink (often in a vanity counter).
+
+    Args:
+        walls: the room's walls.
+        floor: the floor polygon.
+        rng: source of every random choice.
+        keepouts: areas fixtures must not touch (door clearance zones).
+        bath_region: where the tub and toilet go (a two-zone bathroom's `bath` zone).
+        vanity_region: where the sink goes (its `vanity` zone).
+        dims: fixture sizes.
+
+    Returns:
+        The plan, or None if the fixtures do not fit.
+    """
+    d = dims
+    bath = floor if bath_region is None else bath_region.intersection(floor)
+    vanity = floor if vanity_region is None else vanity_region.intersection(floor)
+    n = len(walls)
+    tub_opts: list[tuple[Wall, float, float]] = []
+    for i, w in enumerate(walls):
+        if w.length < min(d.tub_lengths) - 1e-6:
+            continue
+        lengths = [r4(w.length)] if w.length <= d.tub_alcove_max else list(d.tub_lengths)
+        start_convex = corner_convex(walls, (i - 1) % n)
+        end_convex = corner_convex(walls, i)
+        for tl in lengths:
+            ok = free_offsets(
+                w, tl, d.tub_depth, bath, keepouts, front=d.tub_front, front_allowed=floor
+            )
+            for u in ok:
+                at_start, at_end = (
+                    u <= 1e-6 and start_convex,
+                    u + tl >= w.length - 1e-6 and end_convex,
+                )
+                if at_start or at_end:
+                    tub_opts.append((w, float(u), tl))
+    if not tub_opts:
+        return None
+    tw, tu, tl = _pick(rng, tub_opts)
+    tub = FixtureSlot(
+        id="Bathtub_0",
+        type="Bathtub",
+        wall=tw.id,
+        offset=tu,
+        width=tl,
+        depth=d.tub_depth,
+        height=d.tub_height,
+    )
+    tub_foot = footprint(tw, tu, tl, d.tub_depth)
+    obstacles = list(keepouts) + [tub_foot]
+
+    toilet_opts = [
+        (w, float(u))
+        for w in walls
+        for u in free_offsets(
+            w,
+            d.toilet_width,
+            d.toilet_depth,
+            bath,
+            obstacles,
+            front=d.toilet_front,
+            front_allowed=floor,
+            front_obstacles=[tub_foot],
+        )
+    ]
+    if not toilet_opts:
+        return None
+    ow, ou = _pick(rng, toilet_opts)
+    toilet = FixtureSlot(
+        id="Toilet_0",
+        type="Toilet",
+        wall=ow.id,
+        offset=ou,
+        width=d.toilet_width,
+        depth=d.toilet_depth,
+        height=d.toilet_height,
+    )
+    toilet_foot = footprint(ow, ou, d.toilet_width, d.toilet_depth)
+    obstacles.append(toilet_foot)
+    fixed = [tub_foot, toilet_foot]
+
+    counters: tuple[CounterRun, ...] = ()
+    if rng.random() < d.vanity_probability:
+        for vw in sorted(d.vanity_widths, reverse=True):
+            opts = [
+                (w, float(u))
+                for w in walls
+                for u in free_offsets(
+                    w,
+                    vw,
+                    d.vanity_depth,
+                    vanity,
+                    obstacles,
+                    front=d.sink_front,
+                    front_allowed=floor,
+                    front_obstacles=fixed,
+                )
+            ]
+            if opts:
+                w, u = _pick(rng, opts)
+                counters = (
+                    CounterRun(
+                        id="CounterTop_0",
+                        wall=w.id,
+                        start=u,
+                        end=r4(u + vw),
+                        depth=d.vanity_depth,
+                        height=d.vanity_height,
+                    ),
+                )
+                sink = FixtureSlot(
+                    id="Sink_0",
+                    type="Sink",
+                    wall=w.id,
+                    offset=r4(u + (vw - d.sink_width) / 2),
+                    width=d.sink_width,
+                    depth=d.sink_depth,
+                    height=d.vanity_height,
+                    counter="CounterTop_0",
+                )
+                break
+    if not counters:
+        opts = [
+            (w, float(u))
+            for w in walls
+            for u in free_offsets(
+                w,
+                d.sink_width,
+                d.sink_depth,
+                vanity,
+                obstacles,
+                front=d.sink_front,
+                front_allowed=floor,
+                front_obstacles=fixed,
+            )
+        ]
+        if not opts:
+            return None
+        w, u = _pick(rng, opts)
+        sink = FixtureSlot(
+            id="Sink_0",
+            type="Sink",
+            wall=w.id,
+            offset=u,
+            width=d.sink_width,
+            depth=d.sink_depth,
+            height=d.vanity_height,
+        )
+    return FixturePlan(layout="none", counters=counters, slots=(sink, tub, toilet))
