@@ -25,6 +25,11 @@ def _r(x: float) -> str:
     return f"{round(float(x), 6) + 0.0:g}"
 
 
+def _sig(x: float) -> str:
+    """Mass and inertia with 8 significant digits: light objects have tiny but valid moments."""
+    return f"{float(x):.8g}"
+
+
 def _vec(v: Any) -> str:
     return " ".join(_r(x) for x in v)
 
@@ -65,7 +70,7 @@ def _inertial(hulls: list[trimesh.Trimesh], mass: float) -> tuple[np.ndarray, np
         inertia += h.moment_inertia * density + m * (d @ d * np.eye(3) - np.outer(d, d))
     # PyBullet diagonalises a full tensor into a rotated inertial frame, which then rotates the reported
     # base pose; the products of inertia of these near-symmetric assets are small, so keep the diagonal.
-    d = np.maximum(np.diag(inertia), 1e-6)
+    d = np.maximum(np.diag(inertia), 1e-9)
     for i in range(3):  # keep the triangle inequality, which PyBullet enforces by zeroing the inertia
         j, k = (i + 1) % 3, (i + 2) % 3
         d[i] = min(d[i], d[j] + d[k])
@@ -97,9 +102,9 @@ def write_asset(spec: AssetSpec, out_dir: Path, cache_dir: Path) -> dict[str, An
             f'<spinning_friction value="{FRICTION["spinning"]}"/></contact>'
         )
         xml.append(
-            f'    <inertial><origin xyz="{_vec(com)}" rpy="0 0 0"/><mass value="{_r(link.mass)}"/>'
-            f'<inertia ixx="{_r(inertia[0, 0])}" ixy="{_r(inertia[0, 1])}" ixz="{_r(inertia[0, 2])}" '
-            f'iyy="{_r(inertia[1, 1])}" iyz="{_r(inertia[1, 2])}" izz="{_r(inertia[2, 2])}"/></inertial>'
+            f'    <inertial><origin xyz="{_vec(com)}" rpy="0 0 0"/><mass value="{_sig(link.mass)}"/>'
+            f'<inertia ixx="{_sig(inertia[0, 0])}" ixy="0" ixz="0" '
+            f'iyy="{_sig(inertia[1, 1])}" iyz="0" izz="{_sig(inertia[2, 2])}"/></inertial>'
         )
         for index, (slot, state, mesh) in enumerate(_visual_groups(link)):
             slots.add(slot)

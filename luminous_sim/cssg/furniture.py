@@ -10,6 +10,7 @@ import numpy as np
 
 from luminous_sim.cssg.draft import SceneDraft
 from luminous_sim.cssg.grid import HEADINGS, FloorGrid
+from luminous_sim.cssg.pose import front_zone
 from luminous_sim.cssg.requests import Request
 from luminous_sim.cssg.scores import (
     TEMPERATURE,
@@ -24,6 +25,8 @@ SEGMENTED_FIXTURES = {"CounterTop"}
 """Fixture types built from several segments that a CDF names as one object."""
 
 WRONG_HEADING_PENALTY = 0.5
+WORK_ZONE = 0.7
+"""metres kept free in front of every fixture (counters, sink, stove, fridge, toilet, bathtub)."""
 """metres of cost for standing at a heading other than the preferred one."""
 
 
@@ -48,6 +51,8 @@ class FloorContext:
         for p in draft.placed:
             if p.obj.parent is None:
                 grid.block(p.footprint)
+                if p.obj.layer == "fixture":  # keep the work zone in front of counters and appliances
+                    grid.block(front_zone(p.entry, p.obj.position[0], p.obj.position[1], p.obj.yaw, WORK_ZONE))
         c = poly.centroid
         return cls(draft, grid, directional_wall_distance(grid), (c.x, c.y), {}, {})
 

@@ -54,3 +54,10 @@ def local_to_world(x: float, y: float, yaw: float, local: tuple[float, float]) -
     """A point given in an asset's frame, in world coordinates."""
     p = rotate(np.array([local]), yaw)[0] + [x, y]
     return float(p[0]), float(p[1])
+
+
+def front_zone(entry: AssetEntry, x: float, y: float, yaw: float, depth: float) -> Polygon:
+    """The strip of floor `depth` deep in front of an asset (where a person stands to use it)."""
+    lo, hi = entry.bbox_min[:2], entry.bbox_max[:2]
+    corners = np.array([[lo[0], hi[1]], [hi[0], hi[1]], [hi[0], hi[1] + depth], [lo[0], hi[1] + depth]])
+    return Polygon(rotate(corners, yaw) + [x, y])

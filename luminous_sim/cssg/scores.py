@@ -22,7 +22,7 @@ FACE_BANDS = {"close": (-0.15, 0.35), "view": (0.8, 3.0)}
 """Distance band (m) from the subject's front edge to the anchor's footprint edge."""
 TOLERANCE = {"against_wall": 0.12, "in_corner": 0.3, "in_centre": 0.6, "beside": 0.35, "near": 0.0, "far": 0.0,
              "away_from": 0.15, "face": 0.15, "in_front_of": 0.4, "behind": 0.4, "left_of": 0.4, "right_of": 0.4,
-             "aligned_with": 0.3}
+             "aligned_with": 0.15}
 """Cost at or below which a relation counts as met (used by the validation report)."""
 
 
@@ -115,7 +115,6 @@ def relation_field(
         return np.maximum(0.0, AWAY + max(ahw, ahd) - dist), None
     lat, fr = anchor.lateral, anchor.front
     side = ahw + hw + 0.05
-    ahead = ahd + hd + 0.15
     if relation in ("beside", "left_of", "right_of"):
         # next to the anchor's side, anywhere along its depth as long as the subject stays within it
         u = (gx - ac[0]) * lat[0] + (gy - ac[1]) * lat[1]
@@ -123,24 +122,28 @@ def relation_field(
         along = {"beside": np.abs(u), "left_of": -u, "right_of": u}[relation]
         slack = max(ahd - hd, 0.0) + 0.1
         return np.abs(along - side) + np.maximum(0.0, np.abs(v) - slack), same
-    ideals = {
-        "in_front_of": [ac + fr * ahead],
-        "behind": [ac - fr * ahead],
-    }
+    if relation in ("in_front_of", "behind"):
+        # within the anchor's width, and from touching its front (back) to half a metre away
+        u = (gx - ac[0]) * lat[0] + (gy - ac[1]) * lat[1]
+        v = (gx - ac[0]) * fr[0] + (gy - ac[1]) * fr[1]
+        out = (v if relation == "in_front_of" else -v) - ahd - hd
+        cost = np.maximum(0.0, np.abs(u) - max(ahw - hw / 2, 0.05)) + np.maximum(0.0, -0.15 - out) + \
+            np.maximum(0.0, out - 0.5)
+        if relation == "in_front_of":
+            return cost, heading_index(ac[0] - gx, ac[1] - gy)
+        return cost, same
     if relation == "face":
         u = (gx - ac[0]) * lat[0] + (gy - ac[1]) * lat[1]
         v = (gx - ac[0]) * fr[0] + (gy - ac[1]) * fr[1]
         edge = np.hypot(np.maximum(np.abs(u) - ahw, 0.0), np.maximum(np.abs(v) - ahd, 0.0)) - hd
         lo, hi = FACE_BANDS["close" if subject.type in CLOSE_FACERS else "view"]
         return np.maximum(0.0, lo - edge) + np.maximum(0.0, edge - hi), heading_index(ac[0] - gx, ac[1] - gy)
-    if relation in ideals:
-        cost = np.min([np.hypot(gx - p[0], gy - p[1]) for p in ideals[relation]], axis=0)
-        if relation == "in_front_of":
-            return cost, heading_index(ac[0] - gx, ac[1] - gy)
-        return cost, same
     if relation == "aligned_with":
-        rel = np.stack([gx - ac[0], gy - ac[1]], axis=-1)
-        return np.minimum(np.abs(rel @ lat), np.abs(rel @ fr)), same
+        # centres on a line (either axis), or backs or fronts flush
+        u = (gx - ac[0]) * lat[0] + (gy - ac[1]) * lat[1]
+        v = (gx - ac[0]) * fr[0] + (gy - ac[1]) * fr[1]
+        options = [np.abs(u), np.abs(v), np.abs(v - hd + ahd), np.abs(v + hd - ahd)]
+        return np.min(options, axis=0), same
     return np.zeros(grid.shape), None  # support and wall-layer relations are not floor fields
 
 
