@@ -84,9 +84,68 @@ def _bind_fixtures(draft: SceneDraft, req: Request, by_name: dict[str, str], ctx
     return True
 
 
+@dataclass
+class _Checkpoint:
+    """Everything a sample changes, saved before one request is placed."""
+
+    index: int
+    placed: int
+    free: np.ndarray
+    anchors: dict
+    alternates: dict
+    by_name: dict
+    occupied: dict
+    unplaced: list
+
+
+def _save(i: int, draft: SceneDraft, ctx: FloorContext, by_name: dict, occupied: dict, unplaced: list) -> _Checkpoint:
+    return _Checkpoint(i, len(draft.placed), ctx.grid.free.copy(), dict(ctx.placed), dict(ctx.alternates),
+                       dict(by_name), {k: list(v) for k, v in occupied.items()}, list(unplaced))
+
+
+def _restore(cp: _Checkpoint, draft: SceneDraft, ctx: FloorContext, by_name: dict, occupied: dict,
+             unplaced: list) -> None:
+    del draft.placed[cp.placed:]
+    draft.taken_ids = {p.obj.id for p in draft.placed}
+    ctx.grid.free = cp.free.copy()
+    ctx.grid._sat = None
+    ctx.placed, ctx.alternates = dict(cp.anchors), dict(cp.alternates)
+    by_name.clear()
+    by_name.update(cp.by_name)
+    occupied.clear()
+    occupied.update({k: list(v) for k, v in cp.occupied.items()})
+    unplaced[:] = cp.unplaced
+
+
+def _place(draft: SceneDraft, ctx: FloorContext, req: Request, by_name: dict, occupied: dict) -> bool:
+    if req.layer == "fixture" and _bind_fixtures(draft, req, by_name, ctx):
+        return True
+    if req.layer in ("furniture", "fixture"):
+        if place_piece(ctx, req) is None:
+            return False
+        by_name[req.name] = draft.placed[-1].obj.id
+        last = draft.placed[-1].obj
+        return hard_relations_met(ctx, req, draft.placed[-1].entry, last.position[0], last.position[1], last.yaw)
+    if req.layer == "object":
+        return place_object(draft, req, by_name, occupied)
+    ok = place_wall_piece(draft, req, by_name)
+    if ok:
+        by_name[req.name] = draft.placed[-1].obj.id
+    return ok
+
+
+BACKTRACKS = 3
+"""Times one sample may go back and re-place the anchor of a piece that could not meet its relations."""
+
+
 def sample_layout(cdf: ChallengeDefinition, shell: RoomShell, rng: np.random.Generator, catalog: Catalog,
                   attempt: int) -> tuple[SceneDraft, LayoutReport]:
-    """One CSSG sample and its validation report."""
+    """One CSSG sample and its validation report.
+
+    Requests are placed in order; when a piece of furniture cannot meet a hard relation to an anchor
+    placed earlier in this sample, the sample goes back to just before that anchor and draws it again
+    (at most BACKTRACKS times), so that an anchor drawn into a corner does not doom its dependents.
+    """
     draft = SceneDraft(shell, catalog, rng)
     place_fixtures(draft)
     requests = requests_from_cdf(cdf, shell.room_type, rng, area=shell.area)
@@ -94,22 +153,25 @@ def sample_layout(cdf: ChallengeDefinition, shell: RoomShell, rng: np.random.Gen
     by_name: dict[str, str] = {}
     occupied: dict = {}
     unplaced: list[str] = []
-    for req in requests:
-        if req.layer == "fixture" and _bind_fixtures(draft, req, by_name, ctx):
-            ok = True
-        elif req.layer in ("furniture", "fixture"):
-            got = place_piece(ctx, req)
-            ok = got is not None
-            if ok:
-                by_name[req.name] = draft.placed[-1].obj.id
-        elif req.layer == "object":
-            ok = place_object(draft, req, by_name, occupied)
-        else:
-            ok = place_wall_piece(draft, req, by_name)
-            if ok:
-                by_name[req.name] = draft.placed[-1].obj.id
-        if not ok:
+    checkpoints: dict[str, _Checkpoint] = {}
+    backtracks = 0
+    i = 0
+    while i < len(requests):
+        req = requests[i]
+        if req.layer in ("furniture", "fixture"):
+            checkpoints[req.name] = _save(i, draft, ctx, by_name, occupied, unplaced)
+        ok = _place(draft, ctx, req, by_name, occupied)
+        if not ok and backtracks < BACKTRACKS and req.layer in ("furniture", "fixture"):
+            anchors = [r.anchor for r in req.rels if r.explicit and r.hard and r.anchor in checkpoints]
+            if anchors:
+                cp = checkpoints[anchors[0]]
+                _restore(cp, draft, ctx, by_name, occupied, unplaced)
+                backtracks += 1
+                i = cp.index
+                continue
+        if not ok and req.name not in by_name:
             unplaced.append(req.name)
+        i += 1
     return draft, check_layout(draft, requests, ctx, unplaced, attempt)
 
 
