@@ -25,6 +25,7 @@ class AssetEntry(BaseModel):
     variant: int
     category: str
     description: str = ""
+    tags: list[str] = []
     urdf: str
     files: list[str]
     bbox_min: list[float]

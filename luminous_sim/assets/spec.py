@@ -116,6 +116,8 @@ class AssetSpec:
     slices: SliceSpec | None = None
     anchors: list[Anchor] = field(default_factory=list)
     description: str = ""
+    tags: list[str] = field(default_factory=list)
+    """Where the variant belongs when that matters, e.g. ["kitchen"] or ["bathroom"] for sinks."""
 
     @property
     def asset_id(self) -> str:

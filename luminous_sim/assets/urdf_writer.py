@@ -151,6 +151,7 @@ def write_asset(spec: AssetSpec, out_dir: Path, cache_dir: Path) -> dict[str, An
         "variant": spec.variant,
         "category": spec.category,
         "description": spec.description,
+        "tags": sorted(spec.tags),
         "urdf": str(rel_dir / urdf),
         "files": sorted(files),
         "bbox_min": [round(float(x), 4) for x in lo],

@@ -59,6 +59,20 @@ def _tile_counter(draft: SceneDraft, wall: Wall, a: float, b: float) -> list[Sce
     return out
 
 
+def _room_tag(draft: SceneDraft) -> str:
+    return {"LivingRoom": "living_room"}.get(draft.shell.room_type, draft.shell.room_type.lower())
+
+
+def _pick_sink(draft: SceneDraft, width: float) -> AssetEntry | None:
+    """A sink of this room's kind (kitchen unit or bathroom vanity) that fits the slot, else the narrowest."""
+    tag = _room_tag(draft)
+    ours = [e for e in draft.catalog.of_type("Sink") if tag in e.tags] or draft.catalog.of_type("Sink")
+    fitting = [e for e in ours if _width(e) <= width + 1e-6]
+    if fitting:
+        return fitting[int(draft.rng.integers(len(fitting)))]
+    return min(ours, key=_width, default=None)
+
+
 def _stove_counter(draft: SceneDraft, wall: Wall, slot: FixtureSlot) -> SceneObject | None:
     """The counter segment the burners stand on: the narrowest one at least as wide as the cooktop."""
     straight = [e for e in draft.catalog.of_type("CounterTop") if e.dims[1] < 0.9]
@@ -120,8 +134,7 @@ def place_fixtures(draft: SceneDraft) -> None:
         for slot in sorted(slots_in.get(run.id, []), key=lambda s: s.offset):
             if slot.type == "Sink":
                 _tile_counter(draft, wall, u, slot.offset)
-                sink = draft.pick_variant("Sink", lambda e, w=slot.width: _width(e) <= w + 1e-6) or min(
-                    draft.catalog.of_type("Sink"), key=_width, default=None)
+                sink = _pick_sink(draft, slot.width)
                 if sink is not None:
                     host = _add_against(draft, wall, sink, slot.offset + (slot.width - _width(sink)) / 2)
                     _add_anchors(draft, host, sink)

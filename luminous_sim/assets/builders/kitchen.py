@@ -503,7 +503,8 @@ def sink(v: int, rng: np.random.Generator) -> AssetSpec:
     faucet_y = round(by - od / 2 - faucet_gap, 3)
     anchors = [Anchor("SinkBasin", (bx, by, round(top_z - BASIN_H, 4), 0.0)),
                Anchor("Faucet", (bx, faucet_y, top_z, 0.0))]
-    return AssetSpec("Sink", v, "fixture", [Link("base", parts, mass)], anchors=anchors, description=desc)
+    return AssetSpec("Sink", v, "fixture", [Link("base", parts, mass)], anchors=anchors, description=desc,
+                     tags=["kitchen"] if v in (0, 1) else ["bathroom"])
 
 
 def _tub(x0: float, x1: float, y0: float, y1: float, t: float, bottom: float, slot: str) -> list[Part]:
