@@ -49,17 +49,9 @@ def write_scene_outputs(generated: Generated, out_dir: Path, physics: bool = Tru
 
 
 def _reachable(scene) -> np.ndarray:
-    from luminous_sim.assets.catalog import default_catalog
-    from luminous_sim.cssg.draft import Placed, SceneDraft
-    from luminous_sim.cssg.pose import footprint
-    from luminous_sim.cssg.validate import reachable_grid
+    from luminous_sim.cssg.validate import scene_reachable_grid
 
-    cat = default_catalog()
-    draft = SceneDraft(scene.room, cat, np.random.default_rng(0))
-    for o in scene.objects:
-        e = cat.get(o.asset)
-        draft.placed.append(Placed(o, e, footprint(e, o.position[0], o.position[1], o.yaw)))
-    return reachable_grid(draft)
+    return scene_reachable_grid(scene)
 
 
 def _view_from(scene, grid: np.ndarray) -> tuple[float, float, float]:

@@ -158,3 +158,17 @@ def _lateral(placed, anchor) -> float:
     yaw = anchor.obj.yaw
     axis = np.array([np.cos(yaw), np.sin(yaw)])
     return float((np.array(placed.footprint.centroid.coords[0]) - np.array(anchor.footprint.centroid.coords[0])) @ axis)
+
+
+def scene_reachable_grid(scene, catalog=None) -> np.ndarray:
+    """The reachable 0.25 m grid of a finished Scene (same rule as during generation)."""
+    from luminous_sim.assets.catalog import default_catalog
+    from luminous_sim.cssg.draft import Placed
+    from luminous_sim.cssg.pose import footprint
+
+    catalog = catalog or default_catalog()
+    draft = SceneDraft(scene.room, catalog, np.random.default_rng(0))
+    for o in scene.objects:
+        e = catalog.get(o.asset)
+        draft.placed.append(Placed(o, e, footprint(e, o.position[0], o.position[1], o.yaw)))
+    return reachable_grid(draft)
