@@ -90,3 +90,37 @@ def test_every_room_type_object_has_an_asset():
         needed |= set(room_objects(room))
     missing = sorted(needed - set(CATALOG.types()))
     assert not missing, f"no asset for: {missing}"
+
+
+def test_every_receptacle_declares_where_things_go():
+    from luminous_sim.vocab import receptacle_objects
+
+    missing = [e.id for e in ENTRIES if receptacle_objects(e.type) and not e.regions]
+    assert not missing, f"receptacles without support surfaces or volumes: {missing}"
+
+
+def test_state_visuals_exist_for_toggleable_and_dirtyable_types():
+    on_types = {"DeskLamp", "FloorLamp", "Lamp", "Microwave", "Faucet", "StoveBurner", "StoveKnob", "Television",
+                "Laptop", "LightSwitch", "CoffeeMachine", "Toaster"}
+    dirty_types = {"Bed", "Bowl", "Cloth", "Cup", "Mirror", "Mug", "Pan", "Plate", "Pot"}
+    for e in ENTRIES:
+        states = {v["state"] for v in e.visuals}
+        if e.type in on_types:
+            assert "on" in states, f"{e.id} looks the same switched on"
+        if e.type in dirty_types:
+            assert "dirty" in states, f"{e.id} looks the same dirty"
+
+
+def test_sliceable_types_know_their_slices():
+    for e in ENTRIES:
+        if e.type in {"Apple", "Bread", "Lettuce", "Potato", "Tomato"}:
+            assert e.slices and e.slices["count"] == len(e.slices["poses"]) >= 2, e.id
+            assert CATALOG.of_type(e.slices["type"]), f"no {e.slices['type']} asset"
+
+
+def test_articulated_types_have_their_joints():
+    want = {"Fridge": "door", "Microwave": "door", "Cabinet": "door", "Safe": "door", "Drawer": "drawer",
+            "Box": "lid", "Laptop": "lid", "Toilet": "lid"}
+    for e in ENTRIES:
+        if e.type in want:
+            assert any(j["role"] == want[e.type] and j["kind"] != "fixed" for j in e.joints), e.id
