@@ -1,0 +1,314 @@
+"""ALFRED's interaction actions in the PyBullet world: target resolution, visibility and reach, the
+pure object-state rules (`luminous_sim.states`), and their physical side (joints, holding, placing,
+slicing, state visuals)."""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+import pybullet as p
+
+from luminous_sim.cssg.regions import region_spots, sample_in_region
+from luminous_sim.states import effects as fx
+from luminous_sim.states import rules
+from luminous_sim.states.model import ObjectState, WorldState
+from luminous_sim.world.asset_loader import base_link_pose, load_asset, set_joint, show_state
+from luminous_sim.world.masks import rle_to_mask, resolve_point, resolve_target
+
+if TYPE_CHECKING:
+    from luminous_sim.world.world import StepResult, World
+
+HAND_AHEAD, HAND_DROP = 0.45, 0.35
+"""Where a held object floats: ahead of and below the camera, as AI2-THOR shows it."""
+
+
+def initial_state(world: World) -> WorldState:
+    """The pure state of a freshly built scene."""
+    objs = {}
+    for o in world.scene.objects:
+        objs[o.id] = ObjectState(
+            o.id, o.type, isOpen=bool(o.states.get("isOpen", False)), isToggled=bool(o.states.get("isToggled", False)),
+            isDirty=bool(o.states.get("isDirty", False)), parent=o.parent,
+        )
+    slices = {oid: loaded.entry.slices["count"] for oid, loaded in world.built.objects.items() if loaded.entry.slices}
+    return WorldState(objs, held=None, heated=frozenset(), cooled=frozenset(), cleaned=frozenset(),
+                      controls=_controls(world), faucet_basin=_faucet_basins(world), slice_counts=slices)
+
+
+def _nearest(world: World, oid: str, candidates: list[str]) -> str | None:
+    if not candidates:
+        return None
+    here = np.array(world.scene.object(oid).position)
+    return min(candidates, key=lambda c: (float(np.linalg.norm(np.array(world.scene.object(c).position) - here)), c))
+
+
+def _faucet_basins(world: World) -> dict[str, str]:
+    basins = [o.id for o in world.scene.objects if o.type in ("SinkBasin", "BathtubBasin")]
+    return {o.id: b for o in world.scene.objects if o.type == "Faucet" for b in [_nearest(world, o.id, basins)] if b}
+
+
+def _controls(world: World) -> dict[str, str]:
+    burners = [o.id for o in world.scene.objects if o.type == "StoveBurner"]
+    out = {}
+    for o in world.scene.objects:
+        if o.type == "StoveKnob":
+            free = [b for b in burners if b not in out.values()] or burners
+            b = _nearest(world, o.id, free)
+            if b:
+                out[o.id] = b
+    return out
+
+
+class Interactions:
+    """The interaction half of a World; keeps the pure state in step with the physics."""
+
+    def __init__(self, world: World):
+        self.world = world
+        self.state = initial_state(world)
+        self.rng = np.random.default_rng(np.random.SeedSequence([world.scene.seed, 7]))
+
+    # ------------------------------------------------------------------ queries
+
+    @property
+    def held(self) -> str | None:
+        return self.state.held
+
+    def type_of(self, oid: str | None) -> str:
+        return self.state.objects[oid].object_type if oid in self.state.objects else ""
+
+    def _interactable(self, oid: str) -> bool:
+        from luminous_sim.vocab import abilities
+
+        ab = abilities(self.type_of(oid))
+        return ab.pickupable or ab.receptacle or ab.openable or ab.toggleable or ab.sliceable
+
+    def _resolve(self, act: dict[str, Any], key: str = "objectId") -> str | None:
+        """An object id from the action: given directly, or from a mask (RLE) or a point."""
+        if act.get(key):
+            return str(act[key])
+        seg = self.world.instance_ids()
+        inst = {b: o for b, o in self.world.body_to_object().items()}
+        if act.get("mask") is not None:
+            mask = rle_to_mask(act["mask"], seg.shape) if not isinstance(act["mask"], np.ndarray) else act["mask"]
+            return resolve_target(mask, seg, inst, self.held, self._interactable)
+        if act.get("point") is not None:
+            return resolve_point(tuple(act["point"]), seg, inst, self.held, self._interactable)
+        return None
+
+    def _in_reach(self, oid: str) -> str | None:
+        """None if the object is visible and within reach, else why not."""
+        if oid not in self.world.built.objects:
+            return f"unknown object id {oid!r}"
+        visible = self.world.visible_objects()
+        if oid not in visible:
+            d = self.world.object_distance(oid)
+            if d > self.world.config.visibility_distance:
+                return f"{oid} is too far away ({d:.2f} m > {self.world.config.visibility_distance} m)"
+            return f"{oid} is not visible from here"
+        return None
+
+    # ------------------------------------------------------------------ dispatch
+
+    def run(self, name: str, act: dict[str, Any]) -> StepResult:
+        from luminous_sim.world.world import StepResult
+
+        if name == "PutObject":
+            target = act.get("objectId") or self.held
+            receptacle = self._resolve(act, "receptacleObjectId")
+            if target is None:
+                return StepResult(False, "nothing is held", act)
+            if receptacle is None:
+                return StepResult(False, "PutObject needs receptacleObjectId, a mask or a point", act)
+            if target != self.held:
+                return StepResult(False, f"{target} is not the held object", act)
+            why = self._in_reach(receptacle)
+        else:
+            target = self._resolve(act)
+            receptacle = None
+            if target is None:
+                return StepResult(False, f"{name} needs an objectId, a mask or a point on an object", act)
+            why = self._in_reach(target)
+        if why:
+            return StepResult(False, why, act)
+        err = rules.check(name, self.state, target, receptacle)
+        if err:
+            return StepResult(False, err, act)
+        effects = rules.effects(name, self.state, target, receptacle)
+        err = self._apply_physical(name, effects, target, receptacle)
+        if err:
+            return StepResult(False, err, act)
+        self.state = rules.apply(self.state, effects)
+        self._settle()
+        return StepResult(True, "", act)
+
+    # ------------------------------------------------------------------ physical side
+
+    def _settle(self) -> None:
+        for _ in range(self.world.config.interaction_steps):
+            self.world.client.stepSimulation()
+        if self.held:
+            self._carry(self.held)
+
+    def _apply_physical(self, name: str, effects: list, target: str, receptacle: str | None) -> str | None:
+        if name == "PutObject":
+            err = self._place(target, receptacle)
+            if err:
+                return err
+        for e in effects:
+            if isinstance(e, fx.MoveJoint):
+                self._move_joint(e.object_id, e.open)
+            elif isinstance(e, fx.ShowVisual):
+                loaded = self.world.built.objects.get(e.object_id)
+                if loaded is not None:
+                    show_state(self.world.client, loaded, e.state, e.visible)
+            elif isinstance(e, fx.Attach):
+                self._grab(e.object_id)
+            elif isinstance(e, fx.Slice):
+                self._slice(e.object_id, e.sliced_type)
+        return None
+
+    def _family(self, oid: str) -> list[str]:
+        """The object and everything resting in or on it, recursively."""
+        out = [oid]
+        for c in self.state.contents(oid, recursive=True):
+            if c in self.world.built.objects:
+                out.append(c)
+        return out
+
+    def _move_rigidly(self, oids: list[str], old: tuple, new: tuple) -> None:
+        """Move bodies as one rigid group from frame `old` to frame `new` (pos, orn)."""
+        c = self.world.client
+        inv = c.invertTransform(*old)
+        for oid in oids:
+            body = self.world.built.objects[oid].body
+            pos, orn = c.getBasePositionAndOrientation(body)
+            rel = c.multiplyTransforms(inv[0], inv[1], pos, orn)
+            npos, norn = c.multiplyTransforms(new[0], new[1], rel[0], rel[1])
+            c.resetBasePositionAndOrientation(body, npos, norn)
+            c.resetBaseVelocity(body, [0, 0, 0], [0, 0, 0])
+
+    def _set_held_physics(self, oid: str, held: bool) -> None:
+        c = self.world.client
+        loaded = self.world.built.objects[oid]
+        links = [-1] + list(range(c.getNumJoints(loaded.body)))
+        for link in links:
+            c.setCollisionFilterGroupMask(loaded.body, link, 0 if held else 1, 0 if held else -1)
+        mass = 0.0 if held else loaded.entry.mass
+        c.changeDynamics(loaded.body, -1, mass=mass)
+
+    def _hand_frame(self) -> tuple:
+        pose = self.world.agent
+        fx_, fy_ = pose.forward()
+        eye = np.array(pose.eye())
+        pos = eye + np.array([fx_, fy_, 0.0]) * HAND_AHEAD - np.array([0, 0, HAND_DROP])
+        orn = self.world.client.getQuaternionFromEuler([0, 0, -math.radians(pose.rotation)])
+        return tuple(pos), orn
+
+    def _grab(self, oid: str) -> None:
+        family = self._family(oid)
+        for o in family:
+            self._set_held_physics(o, True)
+        body = self.world.built.objects[oid].body
+        old = base_link_pose(self.world.client, body)
+        self._move_rigidly(family, old, self._hand_frame())
+
+    def _carry(self, oid: str) -> None:
+        """Keep the held object (and what it carries) in front of the camera after the agent moves."""
+        body = self.world.built.objects[oid].body
+        self._move_rigidly(self._family(oid), base_link_pose(self.world.client, body), self._hand_frame())
+
+    def _host_now(self, receptacle: str):
+        """The receptacle as a SceneObject at its current pose (movable receptacles move)."""
+        obj = self.world.scene.object(receptacle) if receptacle in {o.id for o in self.world.scene.objects} else None
+        body = self.world.built.objects[receptacle].body
+        pos, orn = base_link_pose(self.world.client, body)
+        yaw = self.world.client.getEulerFromQuaternion(orn)[2]
+        from luminous_sim.scene.model import SceneObject
+
+        base = obj or SceneObject(id=receptacle, type=self.type_of(receptacle),
+                                  asset=self.world.built.objects[receptacle].entry.id, position=pos, layer="object")
+        return base.model_copy(update={"position": tuple(round(v, 4) for v in pos), "yaw": round(yaw, 5)})
+
+    def _place(self, oid: str, receptacle: str) -> str | None:
+        """Put the held object at a free, stable spot of the receptacle's open regions."""
+        loaded_r = self.world.built.objects[receptacle]
+        entry = self.world.built.objects[oid].entry
+        joints_open = self.state.objects[receptacle].isOpen
+        host = self._host_now(receptacle)
+        spots = [s for s in region_spots(host, loaded_r.entry)
+                 if not (s.name and _needs_open(loaded_r.entry, s.name) and not joints_open)]
+        if not spots:
+            return f"{receptacle} has no place to put things"
+        occupied = []
+        for other in self.state.contents(receptacle):
+            b = self.world.built.objects[other].body
+            lo, hi = self.world.client.getAABB(b, -1)
+            from shapely.geometry import box as sbox
+
+            occupied.append(sbox(lo[0], lo[1], hi[0], hi[1]))
+        order = list(range(len(spots)))
+        self.rng.shuffle(order)
+        for i in order:
+            spot = spots[i]
+            if entry.dims[2] > spot.clearance + 1e-6:
+                continue
+            got = sample_in_region(entry, spot, self.rng, occupied, tries=25)
+            if got is None:
+                continue
+            x, y, z, yaw, _ = got
+            body = self.world.built.objects[oid].body
+            c = self.world.client
+            new = ((x, y, z), c.getQuaternionFromEuler([0, 0, yaw]))
+            family = self._family(oid)
+            self._move_rigidly(family, base_link_pose(c, body), new)
+            for o in family:
+                self._set_held_physics(o, False)
+            return None
+        return f"{receptacle} is full: no free, stable spot for {oid}"
+
+    def _move_joint(self, oid: str, open_: bool) -> None:
+        loaded = self.world.built.objects[oid]
+        c = self.world.client
+        for j in loaded.entry.joints:
+            if j["role"] not in ("door", "drawer", "lid"):
+                continue
+            link = loaded.link_index[j["child"]]
+            before = c.getLinkState(loaded.body, link, computeForwardKinematics=True)[4:6]
+            set_joint(c, loaded, j["name"], j["upper"] if open_ else j["lower"])
+            after = c.getLinkState(loaded.body, link, computeForwardKinematics=True)[4:6]
+            if j["role"] == "drawer":  # what lies in a drawer slides out with it
+                inside = [o for o in self.state.contents(oid, recursive=True) if self._in_link(o, oid, j["child"])]
+                self._move_rigidly(inside, before, after)
+
+    def _in_link(self, oid: str, host: str, link: str) -> bool:
+        """Whether an object sits in a region that belongs to `link` of `host` (a drawer's inside)."""
+        scene_ids = {o.id: o for o in self.world.scene.objects}
+        region = scene_ids[oid].region if oid in scene_ids else None
+        entry = self.world.built.objects[host].entry
+        return any(r["name"] == region and r["link"] == link for r in entry.regions)
+
+    def _slice(self, oid: str, sliced_type: str | None) -> None:
+        """Replace the object by its slices, laid out as its catalog SliceSpec says."""
+        loaded = self.world.built.objects[oid]
+        spec = loaded.entry.slices
+        if not spec or sliced_type is None:
+            return
+        variants = self.world.catalog.of_type(spec["type"])
+        if not variants:
+            return
+        slice_entry = next((e for e in variants if e.variant == loaded.entry.variant), variants[0])
+        c = self.world.client
+        pos, orn = base_link_pose(c, loaded.body)
+        c.removeBody(loaded.body)
+        del self.world.built.objects[oid]
+        for i, (sx, sy, sz, syaw) in enumerate(spec["poses"]):
+            wpos, _ = c.multiplyTransforms(pos, orn, [sx, sy, sz + 0.002], [0, 0, 0, 1])
+            yaw = c.getEulerFromQuaternion(orn)[2] + syaw
+            new = load_asset(c, slice_entry, wpos, yaw, rng=np.random.default_rng(i))
+            self.world.built.objects[f"{oid}|{sliced_type}_{i + 1}"] = new
+
+
+def _needs_open(entry, region_name: str) -> bool:
+    return any(r["name"] == region_name and r.get("requires_open") for r in entry.regions)

@@ -1,0 +1,50 @@
+"""AI2-THOR-style object metadata from a World (ids, types, poses, states, containment, visibility)."""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING, Any
+
+from luminous_sim.vocab import abilities
+
+if TYPE_CHECKING:
+    from luminous_sim.world.world import World
+
+
+def _xyz(v) -> dict[str, float]:
+    """Our (x, y, z-up) as THOR's {x, y (up), z}."""
+    return {"x": round(float(v[0]), 4), "y": round(float(v[2]), 4), "z": round(float(v[1]), 4)}
+
+
+def object_metadata(world: World, visible: dict[str, int]) -> list[dict[str, Any]]:
+    """One dict per object, with AI2-THOR's field names."""
+    inter = world.interactions
+    out = []
+    for oid in sorted(world.built.objects):
+        st = inter.state.objects[oid]
+        ab = abilities(st.object_type)
+        pos, yaw = world.built.pose_of(oid)
+        children = [c for c, s in inter.state.objects.items() if s.parent == oid]
+        out.append({
+            "objectId": oid,
+            "objectType": st.object_type,
+            "name": world.built.objects[oid].entry.id,
+            "position": _xyz(pos),
+            "rotation": {"x": 0.0, "y": round(math.degrees(-yaw) % 360, 2), "z": 0.0},
+            "visible": oid in visible,
+            "visiblePixels": visible.get(oid, 0),
+            "distance": round(world.object_distance(oid), 4),
+            "pickupable": ab.pickupable, "receptacle": ab.receptacle, "openable": ab.openable,
+            "toggleable": ab.toggleable, "sliceable": ab.sliceable, "dirtyable": ab.dirtyable,
+            "cookable": ab.heatable, "canFillWithLiquid": st.object_type in _FILLABLE,
+            "moveable": ab.movable_receptacle,
+            "isOpen": st.isOpen, "isToggled": st.isToggled, "isDirty": st.isDirty, "isSliced": st.isSliced,
+            "isCooked": st.isCooked, "isFilledWithLiquid": st.isFilledWithLiquid, "isPickedUp": st.isPickedUp,
+            "temperature": st.temperature,
+            "parentReceptacles": [st.parent] if st.parent else [],
+            "receptacleObjectIds": children,
+        })
+    return out
+
+
+_FILLABLE = {"Mug", "Cup", "Bowl", "Pot", "Kettle", "WateringCan", "Glassbottle", "WineBottle", "HousePlant"}

@@ -1,0 +1,51 @@
+"""Interaction poses: grid poses from which an object is visible and within reach (ALFRED's planner
+computes the same kind of target `loc|x|z|rot|horizon` for GotoLocation)."""
+
+from __future__ import annotations
+
+import math
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from luminous_sim.world.agent import CAMERA_HEIGHT, HORIZON_MAX, HORIZON_MIN, AgentPose
+
+if TYPE_CHECKING:
+    from luminous_sim.world.world import World
+
+
+def candidate_poses(world: World, object_id: str, reach: float | None = None) -> list[AgentPose]:
+    """Grid poses near the object, facing it (cardinal heading), pitched at it; nearest first."""
+    reach = reach or world.config.visibility_distance
+    pos, _ = world.built.pose_of(object_id)
+    body = world.built.objects[object_id].body
+    lo, hi = map(np.array, world.client.getAABB(body, -1))
+    center = (lo + hi) / 2
+    out = []
+    for x, y in world.nav.points():
+        d = math.hypot(center[0] - x, center[1] - y)
+        if d > reach + 0.3:
+            continue
+        yaw = math.degrees(math.atan2(center[0] - x, center[1] - y)) % 360
+        rot = int(round(yaw / 90)) % 4 * 90
+        pitch = math.degrees(math.atan2(CAMERA_HEIGHT - center[2], max(d, 0.05)))
+        base = int(np.clip(round(pitch / 15) * 15, HORIZON_MIN, HORIZON_MAX))
+        for h in dict.fromkeys([base, min(base + 15, HORIZON_MAX), max(base - 15, HORIZON_MIN)]):
+            out.append((abs(d - 1.0), d, AgentPose(float(x), float(y), rot, h)))
+    out.sort(key=lambda t: (t[0], t[1], t[2].x, t[2].y, t[2].horizon))
+    return [p for _, _, p in out]
+
+
+def find_interaction_pose(world: World, object_id: str, limit: int = 60) -> AgentPose | None:
+    """The first candidate pose from which the object is visible (>= 10 px) and within reach."""
+    saved = world.agent
+    try:
+        for pose in candidate_poses(world, object_id)[:limit]:
+            world.agent = pose
+            world._frame = None
+            if object_id in world.visible_objects():
+                return pose
+        return None
+    finally:
+        world.agent = saved
+        world._frame = None

@@ -1,0 +1,223 @@
+"""A World: one scene in one PyBullet client, ALFRED's agent in it, and its low-level actions.
+
+Every action returns a StepResult; a failed or invalid action never raises and leaves the world as
+it was (lastActionSuccess false, errorMessage set), as AI2-THOR does.
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any, Literal
+
+import numpy as np
+
+from luminous_sim.assets.catalog import Catalog, default_catalog
+from luminous_sim.scene.model import Scene
+from luminous_sim.world.agent import AgentPose
+from luminous_sim.world.camera import Frame, render
+from luminous_sim.world.navigation import NavGrid
+from luminous_sim.world.scene_builder import BuiltScene, build_scene
+
+NAVIGATION = ("MoveAhead", "RotateLeft", "RotateRight", "LookUp", "LookDown", "Teleport", "TeleportFull", "Pass",
+              "NoOp")
+INTERACTION = ("PickupObject", "PutObject", "OpenObject", "CloseObject", "ToggleObjectOn", "ToggleObjectOff",
+               "SliceObject")
+
+
+@dataclass(frozen=True)
+class WorldConfig:
+    """Sensor and agent settings (ALFRED's by default)."""
+
+    width: int = 300
+    height: int = 300
+    fov: float = 60.0
+    render: bool = True
+    renderer: Literal["auto", "tiny", "egl"] = "auto"
+    visibility_distance: float = 1.5
+    min_visible_pixels: int = 10
+    settle_steps: int = 240
+    interaction_steps: int = 60
+
+
+@dataclass(frozen=True)
+class StepResult:
+    """What AI2-THOR reports after an action."""
+
+    success: bool
+    error: str = ""
+    action: dict[str, Any] = field(default_factory=dict)
+
+
+def _action_dict(action: str | dict[str, Any], kwargs: dict[str, Any]) -> dict[str, Any]:
+    if isinstance(action, str):
+        return {"action": action, **kwargs}
+    if isinstance(action, dict) and isinstance(action.get("action"), str):
+        return {**action, **kwargs}
+    return {"action": repr(action)}
+
+
+class World:
+    """A scene built in its own PyBullet client, with an agent and ALFRED's action set."""
+
+    def __init__(self, scene: Scene, config: WorldConfig | None = None, catalog: Catalog | None = None,
+                 agent: AgentPose | None = None):
+        self.config = config or WorldConfig()
+        self.catalog = catalog or default_catalog()
+        self.scene = scene
+        self.built: BuiltScene = build_scene(scene, self.catalog, settle_steps=self.config.settle_steps)
+        self.client = self.built.client
+        self.nav = NavGrid.from_scene(scene)
+        self.agent = agent or self.default_start()
+        self._frame: Frame | None = None
+        self.last = StepResult(True, "", {"action": "Initialize"})
+        from luminous_sim.world.interaction import Interactions
+
+        self.interactions = Interactions(self)
+
+    # ------------------------------------------------------------------ life cycle
+
+    def close(self) -> None:
+        if self.client is not None:
+            self.client.disconnect()
+            self.client = None
+
+    def __enter__(self) -> World:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    def default_start(self) -> AgentPose:
+        """The reachable point nearest the room's centre, facing north, looking 30 degrees down."""
+        pts = self.nav.points()
+        if len(pts) == 0:
+            from luminous_sim.errors import LuminousError
+
+            raise LuminousError(f"scene in room {self.scene.room.name} has no reachable floor for the agent")
+        c = np.array(self.scene.room.polygon().centroid.coords[0])
+        x, y = pts[int(np.argmin(np.linalg.norm(pts - c, axis=1)))]
+        return AgentPose(float(x), float(y), 0, 30)
+
+    # ------------------------------------------------------------------ actions
+
+    def step(self, action: str | dict[str, Any], **kwargs: Any) -> StepResult:
+        """Run one low-level action (a name or an ALFRED api_action dict); never raises on bad input."""
+        act = _action_dict(action, kwargs)
+        name = act["action"]
+        try:
+            if name in NAVIGATION:
+                result = self._navigate(name, act)
+            elif name in INTERACTION:
+                result = self.interactions.run(name, act)
+            else:
+                result = StepResult(False, f"unknown action {name!r}; expected one of "
+                                           f"{', '.join(NAVIGATION + INTERACTION)}", act)
+        except (KeyError, ValueError, TypeError) as exc:  # malformed arguments from an agent
+            result = StepResult(False, f"invalid arguments for {name}: {exc}", act)
+        if result.success:
+            self._frame = None
+        self.last = StepResult(result.success, result.error, act)
+        return self.last
+
+    def _navigate(self, name: str, act: dict[str, Any]) -> StepResult:
+        pose = self.agent
+        if name == "MoveAhead":
+            magnitude = float(act.get("moveMagnitude", 0.25))
+            if abs(magnitude - 0.25) > 1e-6:
+                return StepResult(False, "MoveAhead moves 0.25 m (moveMagnitude must be 0.25)", act)
+            if not self.nav.can_move(pose):
+                return StepResult(False, "blocked: MoveAhead would leave the navigable floor or hit something", act)
+            self.agent = pose.moved()
+        elif name in ("RotateLeft", "RotateRight"):
+            self.agent = pose.rotated(-1 if name == "RotateLeft" else 1)
+        elif name in ("LookUp", "LookDown"):
+            looked = pose.looked(-1 if name == "LookUp" else 1)
+            if looked is None:
+                return StepResult(False, f"{name}: the horizon must stay within -30..60 degrees", act)
+            self.agent = looked
+        elif name in ("Teleport", "TeleportFull"):
+            x, y = float(act["x"]), float(act["z"] if "z" in act else act["y"])
+            rot = int(act.get("rotation", pose.rotation)) % 360
+            hor = int(act.get("horizon", pose.horizon))
+            target = AgentPose(round(x, 4), round(y, 4), rot, hor)
+            if rot % 90 or hor % 15 or not -30 <= hor <= 60:
+                return StepResult(False, "Teleport needs a rotation in 0/90/180/270 and a horizon in -30..60 (15s)",
+                                  act)
+            if target.grid_key() not in self.nav:
+                return StepResult(False, f"Teleport target ({x}, {y}) is not on the navigable grid", act)
+            self.agent = target
+        return StepResult(True, "", act)
+
+    # ------------------------------------------------------------------ sensing
+
+    def frame(self) -> Frame:
+        """RGB, depth and raw segmentation from the agent's camera (rendered once per state)."""
+        if self._frame is None:
+            pose = self.agent
+            eye = np.array(pose.eye())
+            target = eye + np.array(pose.view_direction())
+            c = self.config
+            self._frame = render(self.client, eye, target, width=c.width, height=c.height, fov=c.fov,
+                                 near=0.05, far=20.0)
+        return self._frame
+
+    def instance_ids(self, seg: np.ndarray | None = None) -> np.ndarray:
+        """Per-pixel body ids (-1 for background), from PyBullet's object+link segmentation."""
+        seg = self.frame().seg if seg is None else seg
+        body = np.where(seg >= 0, seg & ((1 << 24) - 1), -1)
+        return body
+
+    def body_to_object(self) -> dict[int, str]:
+        return {loaded.body: oid for oid, loaded in self.built.objects.items()}
+
+    def instance_masks(self) -> dict[str, np.ndarray]:
+        """Boolean mask of every object visible in the current frame."""
+        bodies = self.instance_ids()
+        out = {}
+        for body, oid in self.body_to_object().items():
+            m = bodies == body
+            if m.any():
+                out[oid] = m
+        return out
+
+    def object_distance(self, object_id: str) -> float:
+        """Distance from the camera to the object's nearest point (AABB), as AI2-THOR measures it."""
+        body = self.built.objects[object_id].body
+        lo, hi = map(np.array, self.client.getAABB(body, -1))
+        for j in range(self.client.getNumJoints(body)):
+            a, b = map(np.array, self.client.getAABB(body, j))
+            lo, hi = np.minimum(lo, a), np.maximum(hi, b)
+        eye = np.array(self.agent.eye())
+        nearest = np.clip(eye, lo, hi)
+        return float(np.linalg.norm(nearest - eye))
+
+    def visible_objects(self) -> dict[str, int]:
+        """Objects with at least `min_visible_pixels` pixels in view and within the visibility distance."""
+        masks = self.instance_masks()
+        return {oid: int(m.sum()) for oid, m in masks.items()
+                if m.sum() >= self.config.min_visible_pixels
+                and self.object_distance(oid) <= self.config.visibility_distance}
+
+    def agent_metadata(self) -> dict[str, Any]:
+        p = self.agent
+        return {"position": {"x": p.x, "y": 0.9009995, "z": p.y}, "rotation": {"x": 0.0, "y": float(p.rotation), "z": 0.0},
+                "cameraHorizon": float(p.horizon)}
+
+    def metadata(self) -> dict[str, Any]:
+        """AI2-THOR-style metadata: agent, inventory, objects, last action result."""
+        from luminous_sim.world.metadata import object_metadata
+
+        visible = self.visible_objects()
+        held = self.interactions.held
+        return {
+            "agent": self.agent_metadata(),
+            "inventoryObjects": [{"objectId": held, "objectType": self.interactions.type_of(held)}] if held else [],
+            "objects": object_metadata(self, visible),
+            "lastAction": self.last.action.get("action", ""),
+            "lastActionSuccess": self.last.success,
+            "errorMessage": self.last.error,
+        }
+
+    def yaw_of(self, object_id: str) -> float:
+        return math.degrees(self.built.pose_of(object_id)[1])

@@ -1,0 +1,55 @@
+"""A small generated kitchen shared by the world tests (built once per module)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from luminous_sim import cdf
+from luminous_sim.cssg.generate import generate
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "cdf" / "examples"
+
+
+@pytest.fixture(scope="session")
+def kitchen_scene():
+    """A kitchen with an apple on the counter, a fridge, a microwave, a sink and a knife."""
+    doc = cdf.loads(
+        """
+cdf_version: 2
+name: world_test_kitchen
+scene:
+  room_type: Kitchen
+  room: {shape: rect, min_area: 14, max_area: 20}
+  objects:
+    - {name: counter, type: CounterTop}
+    - {name: fridge, type: Fridge}
+    - {name: microwave, type: Microwave}
+    - {name: apple, type: Apple}
+    - {name: knife, type: Knife}
+    - {name: mug, type: Mug, state: {isDirty: true}}
+    - {name: plate, type: Plate}
+  relations:
+    - {subject: microwave, relation: on, target: counter}
+    - {subject: apple, relation: on, target: counter}
+    - {subject: knife, relation: on, target: counter}
+    - {subject: mug, relation: on, target: counter}
+    - {subject: plate, relation: on, target: counter}
+""",
+        source="world_test_kitchen.yaml",
+    )
+    return generate(doc, seed=3).scene
+
+
+@pytest.fixture()
+def world(kitchen_scene):
+    from luminous_sim.world.world import World, WorldConfig
+
+    w = World(kitchen_scene, WorldConfig(settle_steps=120))
+    yield w
+    w.close()
+
+
+def obj(scene, name: str) -> str:
+    return next(o.id for o in scene.objects if o.name == name)
