@@ -1,8 +1,10 @@
-"""Effect values: what an allowed action changes. The world applies each to the physics; `apply` to the state.
+"""Effect values: what an allowed action changes.
+
+The world applies each effect to the physics; `apply` applies them to the `WorldState`.
 
 Pure-state effects (`SetState`, `Record`, `Slice`, `Attach`, `Release`) change the `WorldState`;
-physical-only effects (`MoveJoint`, `ShowVisual`) leave it alone, since the `SetState` beside them says
-the same thing in state terms.
+physical-only effects (`MoveJoint`, `ShowVisual`) leave it alone, since the `SetState` beside
+them says the same thing in state terms.
 """
 
 from __future__ import annotations
@@ -26,7 +28,10 @@ class SetState:
 
     def __post_init__(self) -> None:
         if self.field not in STATE_FIELDS:
-            raise StateError(f"SetState: {self.field!r} is not a state field; expected one of {', '.join(STATE_FIELDS)}")
+            raise StateError(
+                f"SetState: {self.field!r} is not a state field; "
+                f"expected one of {', '.join(STATE_FIELDS)}"
+            )
 
 
 @dataclass(frozen=True)
@@ -43,7 +48,9 @@ class Record:
 
 @dataclass(frozen=True)
 class Slice:
-    """Replace an object by `count` slices of `sliced_type` (ids ``<object_id>|<sliced_type>_<k>``, k from 1).
+    """Replace an object by `count` slices of `sliced_type`.
+
+    Slice ids are ``<object_id>|<sliced_type>_<k>`` with k from 1 (ALFRED's).
 
     The slices take the object's parent, temperature and cooked state, and are isSliced.
     """
@@ -54,7 +61,9 @@ class Slice:
 
     def __post_init__(self) -> None:
         if self.count < 1:
-            raise StateError(f"Slice: {self.object_id} must break into at least one slice, not {self.count}")
+            raise StateError(
+                f"Slice: {self.object_id} must break into at least one slice, not {self.count}"
+            )
 
 
 @dataclass(frozen=True)
@@ -67,7 +76,10 @@ class MoveJoint:
 
 @dataclass(frozen=True)
 class ShowVisual:
-    """Show or hide a state visual: "on" (a lit element, a running tap) or "dirty" (a stain). Physical only."""
+    """Show or hide a state visual: "on" (a lit element, running water) or "dirty" (a stain).
+
+    Physical only.
+    """
 
     object_id: str
     state: Visual

@@ -55,10 +55,19 @@ class ObjectState:
         check_type(self.object_type, where=self.object_id)
         if self.temperature not in TEMPERATURES:
             raise StateError(
-                f"{self.object_id}: temperature {self.temperature!r} is not one of {', '.join(TEMPERATURES)}"
+                f"{self.object_id}: temperature {self.temperature!r} "
+                f"is not one of {', '.join(TEMPERATURES)}"
             )
         if self.parent == self.object_id:
             raise StateError(f"{self.object_id} cannot be its own parent")
+
+    def __repr__(self) -> str:
+        extra = "".join(
+            f", {f.name}={getattr(self, f.name)!r}"
+            for f in dataclasses.fields(self)
+            if f.name not in ("object_id", "object_type") and getattr(self, f.name) != f.default
+        )
+        return f"ObjectState({self.object_id!r}, {self.object_type!r}{extra})"
 
     def replace(self, **changes: Any) -> ObjectState:
         """A copy with some fields changed (validated again)."""
@@ -112,11 +121,27 @@ class WorldState:
             raise StateError(f"held object {self.held!r} is not in the world")
 
     def __hash__(self) -> int:
-        return hash((
-            frozenset(self.objects.items()), self.held, self.heated, self.cooled, self.cleaned,
-            frozenset(self.controls.items()), frozenset(self.faucet_basin.items()),
-            frozenset(self.slice_counts.items()),
-        ))
+        return hash(
+            (
+                frozenset(self.objects.items()),
+                self.held,
+                self.heated,
+                self.cooled,
+                self.cleaned,
+                frozenset(self.controls.items()),
+                frozenset(self.faucet_basin.items()),
+                frozenset(self.slice_counts.items()),
+            )
+        )
+
+    def __repr__(self) -> str:
+        parts = [f"[{', '.join(map(repr, self.objects.values()))}]"]
+        for name in ("held", *BOOKKEEPING_KINDS, "controls", "faucet_basin", "slice_counts"):
+            value = getattr(self, name)
+            if value:
+                value = dict(value) if isinstance(value, Mapping) else value
+                parts.append(f"{name}={sorted(value) if isinstance(value, frozenset) else value!r}")
+        return f"WorldState.of({', '.join(parts)})"
 
     @classmethod
     def of(cls, objects: Iterable[ObjectState], **kwargs: Any) -> WorldState:
@@ -149,7 +174,7 @@ class WorldState:
         return out
 
     def contents(self, receptacle_id: str, recursive: bool = False) -> list[str]:
-        """Objects whose parent is the receptacle; with `recursive`, also what those hold, depth first.
+        """Objects whose parent is the receptacle; `recursive` adds what those hold, depth first.
 
         An apple on a plate in the fridge is in `contents(fridge, recursive=True)` but not in
         `contents(fridge)`.
@@ -170,10 +195,15 @@ class WorldState:
         return out
 
     def ancestors(self, object_id: str) -> list[str]:
-        """The chain of receptacles holding the object, innermost first (stops at a missing id or a cycle)."""
+        """The receptacles holding the object, innermost first (stops at a missing id, a cycle)."""
         out: list[str] = []
         obj = self.objects.get(object_id)
-        while obj is not None and obj.parent is not None and obj.parent not in out and obj.parent != object_id:
+        while (
+            obj is not None
+            and obj.parent is not None
+            and obj.parent not in out
+            and obj.parent != object_id
+        ):
             out.append(obj.parent)
             obj = self.objects.get(obj.parent)
         return out

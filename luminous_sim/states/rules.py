@@ -1,15 +1,15 @@
 """Whether an interaction is allowed by the object-state rules, in AI2-THOR's spirit.
 
 `check` answers None (allowed) or a message saying why not; `effects` (re-exported from
-`transitions`) lists what an allowed action changes; `apply` (from `update`) folds effects into a new
-state; `step` does all three. Reach and visibility are the world's business, not these rules'.
+`transitions`) lists what an allowed action changes; `apply` (from `update`) folds effects
+into a new state; `step` does all three. Reach and visibility are the world's business, not
+these rules'.
 """
 
 from __future__ import annotations
 
 from collections.abc import Callable
 
-from luminous_sim.states.update import apply
 from luminous_sim.states.model import WorldState
 from luminous_sim.states.tables import (
     CLOSED_TO_SWITCH_ON,
@@ -20,13 +20,14 @@ from luminous_sim.states.tables import (
     SLICING_TOOLS,
 )
 from luminous_sim.states.transitions import effects
+from luminous_sim.states.update import apply
 from luminous_sim.vocab import abilities, can_contain
 
 __all__ = ["apply", "check", "effects", "enclosing_closed", "step"]
 
 
 def enclosing_closed(state: WorldState, object_id: str) -> str | None:
-    """The innermost closed receptacle (Fridge, Cabinet, Drawer, ...) that shuts the object in, if any."""
+    """The innermost closed receptacle (Fridge, Cabinet, Drawer, ...) shutting the object in."""
     for anc in state.ancestors(object_id):
         a = state.objects.get(anc)
         if a is not None and a.object_type in GATING_OPENABLE and not a.isOpen:
@@ -123,7 +124,9 @@ _RULES: dict[str, Callable[[WorldState, str, str | None], str | None]] = {
 }
 
 
-def check(action: str, state: WorldState, target: str | None, receptacle: str | None = None) -> str | None:
+def check(
+    action: str, state: WorldState, target: str | None, receptacle: str | None = None
+) -> str | None:
     """Whether the object-state rules allow an action.
 
     Args:
@@ -155,7 +158,11 @@ def check(action: str, state: WorldState, target: str | None, receptacle: str | 
 def step(
     state: WorldState, action: str, target: str | None, receptacle: str | None = None
 ) -> tuple[WorldState, str | None]:
-    """Check an action and, when allowed, apply its effects: (new state, None) or (same state, message)."""
+    """Check an action and, when allowed, apply its effects.
+
+    Returns:
+        (new state, None) when allowed, else (the same state, the message).
+    """
     why = check(action, state, target, receptacle)
     if why is not None:
         return state, why

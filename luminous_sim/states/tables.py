@@ -1,15 +1,28 @@
-"""Data tables for the state rules: which types cook, fill, slice, gate access, and the action names."""
+"""Data for the state rules: which types cook, fill, slice, gate access; the action names."""
 
 from __future__ import annotations
 
 from luminous_sim.vocab import SLICED_TYPES, vocab_data
 
 INTERACTIONS: tuple[str, ...] = (
-    "PickupObject", "PutObject", "OpenObject", "CloseObject", "ToggleObjectOn", "ToggleObjectOff", "SliceObject",
+    "PickupObject",
+    "PutObject",
+    "OpenObject",
+    "CloseObject",
+    "ToggleObjectOn",
+    "ToggleObjectOff",
+    "SliceObject",
 )
 """ALFRED's low-level interaction actions (spec/alfred.md section 2.2), the ones the rules judge."""
 
-NAVIGATION: tuple[str, ...] = ("MoveAhead", "RotateLeft", "RotateRight", "LookUp", "LookDown", "NoOp")
+NAVIGATION: tuple[str, ...] = (
+    "MoveAhead",
+    "RotateLeft",
+    "RotateRight",
+    "LookUp",
+    "LookDown",
+    "NoOp",
+)
 """Actions that change no object state: `check` allows them and `effects` returns nothing."""
 
 HIGH_LEVEL_ONLY: dict[str, str] = {
@@ -23,19 +36,41 @@ SLICING_TOOLS: frozenset[str] = frozenset({"Knife", "ButterKnife"})
 """What the agent must hold to slice (ALFRED: any type whose name contains "Knife")."""
 
 GATING_OPENABLE: frozenset[str] = frozenset(vocab_data()["openable"])
-"""ALFRED's OPENABLE_CLASS_LIST (Fridge, Cabinet, Microwave, Drawer, Safe, Box): while closed, nothing
-inside can be reached and nothing can be put in. AI2-THOR's extra openables (Laptop, Toilet,
-LaundryHamper) open and close but do not gate access; ALFRED's plans put things on a closed Toilet."""
+"""ALFRED's OPENABLE_CLASS_LIST (Fridge, Cabinet, Microwave, Drawer, Safe, Box): while closed,
+nothing inside can be reached and nothing can be put in. AI2-THOR's extra openables (Laptop,
+Toilet, LaundryHamper) open and close but do not gate access; ALFRED's plans put things on a
+closed Toilet."""
 
-FOOD_COOKABLE: frozenset[str] = frozenset({
-    "Apple", "AppleSliced", "Bread", "BreadSliced", "Egg", "Lettuce", "LettuceSliced",
-    "Potato", "PotatoSliced", "Tomato", "TomatoSliced",
-})
+FOOD_COOKABLE: frozenset[str] = frozenset(
+    {
+        "Apple",
+        "AppleSliced",
+        "Bread",
+        "BreadSliced",
+        "Egg",
+        "Lettuce",
+        "LettuceSliced",
+        "Potato",
+        "PotatoSliced",
+        "Tomato",
+        "TomatoSliced",
+    }
+)
 """Food that becomes isCooked when heated."""
 
-FILLABLE: frozenset[str] = frozenset({
-    "Bowl", "Cup", "Glassbottle", "HousePlant", "Kettle", "Mug", "Pot", "WateringCan", "WineBottle",
-})
+FILLABLE: frozenset[str] = frozenset(
+    {
+        "Bowl",
+        "Cup",
+        "Glassbottle",
+        "HousePlant",
+        "Kettle",
+        "Mug",
+        "Pot",
+        "WateringCan",
+        "WineBottle",
+    }
+)
 """Vessels that fill with water under a running faucet (AI2-THOR's canFillWithLiquid types)."""
 
 STOVE_VESSELS: frozenset[str] = frozenset({"Pot", "Pan", "Kettle"})
@@ -48,15 +83,21 @@ CLOSED_TO_SWITCH_ON: frozenset[str] = frozenset({"Microwave"})
 """Devices that must be closed before they can be switched on."""
 
 SLICE_OF: dict[str, str] = {parent: sliced for sliced, parent in SLICED_TYPES.items()}
-"""Sliceable parent type -> its sliced type (Apple -> AppleSliced). Egg is sliceable but has none."""
+"""Sliceable parent type -> its sliced type (Apple -> AppleSliced); Egg is sliceable, has none."""
 
-DEFAULT_SLICE_COUNTS: dict[str, int] = {"Apple": 6, "Bread": 10, "Lettuce": 6, "Potato": 6, "Tomato": 5}
-"""Pieces per sliced parent when `WorldState.slice_counts` does not say (the first asset variant's count)."""
+DEFAULT_SLICE_COUNTS: dict[str, int] = {
+    "Apple": 6,
+    "Bread": 10,
+    "Lettuce": 6,
+    "Potato": 6,
+    "Tomato": 5,
+}
+"""Pieces per parent when `WorldState.slice_counts` does not say (first asset variant's count)."""
 
 
 def slice_id(parent_id: str, sliced_type: str, index: int) -> str:
     """ALFRED's id of a slice (0-based `index`): ``Apple|x|y|z|AppleSliced_1`` for index 0.
 
-    Same format as `luminous_sim.scene.ids.slice_object_id`, restated to keep this layer's imports light.
+    Same format as `luminous_sim.scene.ids.slice_object_id`, restated to keep imports light.
     """
     return f"{parent_id}|{sliced_type}_{index + 1}"

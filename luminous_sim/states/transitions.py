@@ -1,4 +1,4 @@
-"""What an allowed action changes: state fields, ALFRED's bookkeeping, and the devices' consequences.
+"""What an allowed action changes: state fields, ALFRED's bookkeeping, devices' consequences.
 
 Devices act at the moment of the action only (ALFRED's `update_states`): a microwave heats what is
 inside when it is switched on, a fridge cools what is inside when its door closes, a faucet cleans
@@ -10,9 +10,25 @@ from __future__ import annotations
 
 from typing import Any
 
-from luminous_sim.states.effects import Attach, Effect, MoveJoint, Record, Release, SetState, ShowVisual, Slice
+from luminous_sim.states.effects import (
+    Attach,
+    Effect,
+    MoveJoint,
+    Record,
+    Release,
+    SetState,
+    ShowVisual,
+    Slice,
+)
 from luminous_sim.states.model import StateError, WorldState
-from luminous_sim.states.tables import DEFAULT_SLICE_COUNTS, FILLABLE, FOOD_COOKABLE, NAVIGATION, OFF_WHEN_OPENED, SLICE_OF
+from luminous_sim.states.tables import (
+    DEFAULT_SLICE_COUNTS,
+    FILLABLE,
+    FOOD_COOKABLE,
+    NAVIGATION,
+    OFF_WHEN_OPENED,
+    SLICE_OF,
+)
 
 
 def _set(state: WorldState, object_id: str, field: str, value: Any) -> list[Effect]:
@@ -107,10 +123,16 @@ def _slice(state: WorldState, target: str) -> list[Effect]:
 
 
 def _pickup(state: WorldState, target: str) -> list[Effect]:
-    return [Attach(target, "agent"), SetState(target, "isPickedUp", True), SetState(target, "parent", None)]
+    return [
+        Attach(target, "agent"),
+        SetState(target, "isPickedUp", True),
+        SetState(target, "parent", None),
+    ]
 
 
-def effects(action: str, state: WorldState, target: str | None, receptacle: str | None = None) -> list[Effect]:
+def effects(
+    action: str, state: WorldState, target: str | None, receptacle: str | None = None
+) -> list[Effect]:
     """The effects of an action that `rules.check` allowed, in the order to apply them.
 
     Args:
@@ -135,10 +157,18 @@ def effects(action: str, state: WorldState, target: str | None, receptacle: str 
     if action == "PutObject":
         held, recep = state.held, receptacle
         assert held is not None and recep is not None  # check() guarantees both
-        return [Release(held, recep), SetState(held, "parent", recep), SetState(held, "isPickedUp", False)]
+        return [
+            Release(held, recep),
+            SetState(held, "parent", recep),
+            SetState(held, "isPickedUp", False),
+        ]
     assert target is not None
     handlers = {
-        "PickupObject": _pickup, "OpenObject": _open, "CloseObject": _close,
-        "ToggleObjectOn": _toggle_on, "ToggleObjectOff": _toggle_off, "SliceObject": _slice,
+        "PickupObject": _pickup,
+        "OpenObject": _open,
+        "CloseObject": _close,
+        "ToggleObjectOn": _toggle_on,
+        "ToggleObjectOff": _toggle_off,
+        "SliceObject": _slice,
     }
     return handlers[action](state, target)

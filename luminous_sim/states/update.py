@@ -4,7 +4,16 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 
-from luminous_sim.states.effects import Attach, Effect, MoveJoint, Record, Release, SetState, ShowVisual, Slice
+from luminous_sim.states.effects import (
+    Attach,
+    Effect,
+    MoveJoint,
+    Record,
+    Release,
+    SetState,
+    ShowVisual,
+    Slice,
+)
 from luminous_sim.states.model import BOOKKEEPING_KINDS, ObjectState, StateError, WorldState
 from luminous_sim.states.tables import slice_id
 
@@ -21,10 +30,17 @@ def _slice(objects: dict[str, ObjectState], e: Slice) -> None:
     for i in range(e.count):
         sid = slice_id(e.object_id, e.sliced_type, i)
         objects[sid] = ObjectState(
-            sid, e.sliced_type, isSliced=True, temperature=whole.temperature, isCooked=whole.isCooked,
+            sid,
+            e.sliced_type,
+            isSliced=True,
+            temperature=whole.temperature,
+            isCooked=whole.isCooked,
             parent=whole.parent,
         )
-    for k, o in objects.items():  # nothing rests in a sliceable today; keep parents valid if it ever does
+    for (
+        k,
+        o,
+    ) in objects.items():  # nothing rests in a sliceable today; keep parents valid if it ever does
         if o.parent == e.object_id:
             objects[k] = o.replace(parent=whole.parent)
 

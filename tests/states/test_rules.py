@@ -120,7 +120,7 @@ def test_check(changes, held, action, target, receptacle, expected):
 
 @pytest.mark.parametrize("row", [r for r in ROWS if r[-1] is not None], ids=lambda r: r[0])
 def test_effects_refuses_what_check_rejects(row):
-    _, changes, held, action, target, receptacle, expected = row
+    _, changes, held, action, target, receptacle, _expected = row
     with pytest.raises(StateError, match="is not allowed"):
         rules.effects(action, kitchen(changes, held=held), target, receptacle)
 
@@ -136,7 +136,7 @@ def test_enclosing_closed_is_innermost():
 def test_messages_are_plain_sentences():
     """Every rejection names the object(s), with no traceback-like noise."""
     for row in ROWS:
-        _, changes, held, action, target, receptacle, expected = row
+        _, changes, held, action, target, receptacle, _expected = row
         got = check(action, kitchen(changes, held=held), target, receptacle)
         if got is not None:
             assert "\n" not in got and "Traceback" not in got and len(got) < 200
