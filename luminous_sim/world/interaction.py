@@ -21,6 +21,8 @@ if TYPE_CHECKING:
     from luminous_sim.world.world import StepResult, World
 
 HAND_AHEAD, HAND_DROP = 0.45, 0.35
+SETTLE_AFTER = frozenset({"PutObject", "SliceObject"})
+"""Actions after which physics must run (things were placed); joints and holding are kinematic."""
 """Where a held object floats: ahead of and below the camera, as AI2-THOR shows it."""
 
 
@@ -140,7 +142,10 @@ class Interactions:
         if err:
             return StepResult(False, err, act)
         self.state = rules.apply(self.state, effects)
-        self._settle()
+        if name in SETTLE_AFTER:
+            self._settle()
+        elif self.held:
+            self._carry(self.held)
         return StepResult(True, "", act)
 
     # ------------------------------------------------------------------ physical side

@@ -108,6 +108,8 @@ class World:
         try:
             if name in NAVIGATION:
                 result = self._navigate(name, act)
+                if result.success and self.interactions.held:
+                    self.interactions._carry(self.interactions.held)
             elif name in INTERACTION:
                 result = self.interactions.run(name, act)
             else:

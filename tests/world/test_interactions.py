@@ -133,11 +133,16 @@ def test_movable_receptacle_carries_its_contents(world, kitchen_scene):
     r = world.step({"action": "PutObject", "objectId": apple, "receptacleObjectId": plate})
     assert r.success, r.error
     assert world.step({"action": "PickupObject", "objectId": plate}).success
-    world.step("RotateRight")
-    world.step("RotateLeft")
-    gap = np.linalg.norm(world.built.pose_of(apple)[0] - world.built.pose_of(plate)[0])
+    before = world.built.pose_of(plate)[0]
+    assert world.step("RotateRight").success
+    after = world.built.pose_of(plate)[0]
+    assert np.linalg.norm(after - before) > 0.2, "the held plate turns with the agent"
+    gap = np.linalg.norm(world.built.pose_of(apple)[0] - after)
     assert gap < 0.15, "the apple rides on the plate"
     assert state(world, apple).parent == plate
+    world.step("RotateLeft")
+    counter = state(world, plate)
+    assert counter.isPickedUp
 
 
 def test_target_by_mask_and_point(world, kitchen_scene):
