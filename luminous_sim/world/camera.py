@@ -20,10 +20,12 @@ class Frame:
 
 def render(
     client: BulletClient, eye, target, up=(0.0, 0.0, 1.0), width: int = 300, height: int = 300,
-    fov: float = 60.0, near: float = 0.05, far: float = 20.0, renderer: int = p.ER_TINY_RENDERER,
+    fov: float = 60.0, near: float = 0.05, far: float = 20.0, renderer: int | None = None,
     shadows: bool = False, light_direction=(0.4, -0.6, 1.0),
 ) -> Frame:
     """Render from `eye` looking at `target`; depth converted from the z-buffer to metres."""
+    if renderer is None:
+        renderer = getattr(client, "luminous_renderer", p.ER_TINY_RENDERER)
     view = client.computeViewMatrix(list(eye), list(target), list(up))
     proj = client.computeProjectionMatrixFOV(fov, width / height, near, far)
     _, _, rgba, zbuf, seg = client.getCameraImage(

@@ -1,6 +1,11 @@
-"""One PyBullet physics client per World, DIRECT by default, with the project's deterministic settings."""
+"""One PyBullet physics client per World, DIRECT by default, with the project's deterministic settings,
+and the renderer: TinyRenderer on the CPU, the EGL plugin automatically where a GPU is present."""
 
 from __future__ import annotations
+
+import glob
+import os
+import pkgutil
 
 import pybullet as p
 from pybullet_utils.bullet_client import BulletClient
@@ -9,9 +14,33 @@ TIME_STEP = 1.0 / 240.0
 GRAVITY = -9.81
 
 
-def new_client(gui: bool = False) -> BulletClient:
-    """A fresh client: fixed time step, gravity, deterministic overlapping pairs, no GUI unless asked."""
+def gpu_present() -> bool:
+    """Whether an NVIDIA GPU is visible to this process."""
+    return bool(glob.glob("/dev/nvidia[0-9]*"))
+
+
+def resolve_renderer(choice: str = "auto") -> str:
+    """"tiny" or "egl": `auto` means EGL where a GPU is present ($LUMINOUS_RENDERER overrides)."""
+    choice = os.environ.get("LUMINOUS_RENDERER", choice) if choice == "auto" else choice
+    if choice == "auto":
+        return "egl" if gpu_present() else "tiny"
+    if choice not in ("tiny", "egl"):
+        raise ValueError(f"renderer must be auto, tiny or egl, not {choice!r}")
+    return choice
+
+
+def new_client(gui: bool = False, renderer: str = "tiny") -> BulletClient:
+    """A fresh client: fixed time step, gravity, deterministic overlapping pairs, no GUI unless asked.
+
+    With renderer "egl" the EGL plugin is loaded first (it must be, before anything is built) and the
+    client's camera uses it; if the plugin cannot load, the client falls back to TinyRenderer.
+    """
     client = BulletClient(connection_mode=p.GUI if gui else p.DIRECT)
+    client.luminous_renderer = p.ER_TINY_RENDERER
+    if renderer == "egl":
+        egl = pkgutil.get_loader("eglRenderer")
+        if egl is not None and client.loadPlugin(egl.get_filename(), "_eglRendererPlugin") >= 0:
+            client.luminous_renderer = p.ER_BULLET_HARDWARE_OPENGL
     client.setPhysicsEngineParameter(
         fixedTimeStep=TIME_STEP, deterministicOverlappingPairs=1, numSolverIterations=50
     )

@@ -65,7 +65,10 @@ class World:
         self.config = config or WorldConfig()
         self.catalog = catalog or default_catalog()
         self.scene = scene
-        self.built: BuiltScene = build_scene(scene, self.catalog, settle_steps=self.config.settle_steps)
+        from luminous_sim.world.client import new_client, resolve_renderer
+
+        client = new_client(renderer=resolve_renderer(self.config.renderer))
+        self.built: BuiltScene = build_scene(scene, self.catalog, client=client, settle_steps=self.config.settle_steps)
         self.client = self.built.client
         self.nav = NavGrid.from_scene(scene)
         self.agent = agent or self.default_start()

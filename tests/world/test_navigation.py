@@ -77,3 +77,25 @@ def test_frames_have_alfred_shape_and_are_deterministic(kitchen_scene):
         assert a_rgb.shape == (300, 300, 3) and a_rgb.dtype == np.uint8
         assert np.array_equal(a_rgb, b_rgb) and np.array_equal(a_d, b_d) and np.array_equal(a_s, b_s)
     assert np.isfinite(runs[0][0][1]).all() and (runs[0][0][1] > 0).all()
+
+
+def test_egl_renderer_matches_tiny_renderer_geometry(kitchen_scene):
+    """The EGL plugin (hardware OpenGL, or Mesa without a GPU) sees the same objects as TinyRenderer."""
+    import pkgutil
+
+    import pytest
+
+    from luminous_sim.world.client import resolve_renderer
+    from luminous_sim.world.world import World, WorldConfig
+
+    if pkgutil.get_loader("eglRenderer") is None:
+        pytest.skip("PyBullet's eglRenderer plugin is not available here")
+    assert resolve_renderer("tiny") == "tiny" and resolve_renderer("egl") == "egl"
+    seen = {}
+    for renderer in ("tiny", "egl"):
+        with World(kitchen_scene, WorldConfig(settle_steps=60, renderer=renderer)) as w:
+            w.step("RotateRight")
+            f = w.frame()
+            assert f.rgb.std() > 10
+            seen[renderer] = set(w.instance_masks())
+    assert len(seen["tiny"] & seen["egl"]) >= 0.8 * len(seen["tiny"])
