@@ -46,7 +46,7 @@ def free_grid(scene: Scene, built) -> np.ndarray:
     from luminous_sim.assets.catalog import default_catalog
 
     cat = default_catalog()
-    blocks = [footprint(cat.get(o.asset), o.position[0], o.position[1], o.yaw, margin=0.2)
+    blocks = [footprint(cat.for_object(o), o.position[0], o.position[1], o.yaw, margin=0.2)
               for o in scene.objects if o.parent is None]
     pts = scene.room.grid_points(0.25)
     return np.array([p for p in pts if not any(b.contains(Point(p)) for b in blocks)])

@@ -45,6 +45,8 @@ class AssetEntry(BaseModel):
     visual_vertices: int = 0
     root: str = ""
     """Folder the relative paths are resolved against (filled in when loaded)."""
+    scale: float = 1.0
+    """Uniform scale the asset is loaded at (1 in the catalog; see `scaled`)."""
 
     @property
     def urdf_path(self) -> Path:
@@ -52,6 +54,30 @@ class AssetEntry(BaseModel):
 
     def regions_of(self, kind: str) -> list[dict[str, Any]]:
         return [r for r in self.regions if r["kind"] == kind]
+
+
+def _scale_xyz(v: list[float], s: float) -> list[float]:
+    return [round(x * s, 5) for x in v]
+
+
+def scaled(entry: AssetEntry, s: float) -> AssetEntry:
+    """The same asset loaded `s` times larger: sizes, regions, joints, anchors and slices scale along."""
+    if abs(s - 1.0) < 1e-9:
+        return entry
+    regions = [{**r, "center": _scale_xyz(r["center"], s), "size": _scale_xyz(r["size"], s)} for r in entry.regions]
+    joints = [{**j, "origin": _scale_xyz(j["origin"], s),
+               **({"lower": j["lower"] * s, "upper": j["upper"] * s} if j["kind"] == "prismatic" else {})}
+              for j in entry.joints]
+    anchors = [{**a, "pose": _scale_xyz(a["pose"][:3], s) + [a["pose"][3]]} for a in entry.anchors]
+    slices = None
+    if entry.slices:
+        slices = {**entry.slices, "poses": [_scale_xyz(q[:3], s) + [q[3]] for q in entry.slices["poses"]]}
+    return entry.model_copy(update={
+        "scale": round(entry.scale * s, 5), "bbox_min": _scale_xyz(entry.bbox_min, s),
+        "bbox_max": _scale_xyz(entry.bbox_max, s), "dims": _scale_xyz(entry.dims, s),
+        "mass": round(entry.mass * s ** 3, 5), "regions": regions, "joints": joints, "anchors": anchors,
+        "slices": slices, "link_origins": {k: _scale_xyz(v, s) for k, v in entry.link_origins.items()},
+    })
 
 
 class Catalog:
@@ -96,6 +122,10 @@ class Catalog:
             return self._by_id[asset_id]
         except KeyError:
             raise AssetError(f"no asset {asset_id!r} in the catalog") from None
+
+    def for_object(self, obj) -> AssetEntry:
+        """The entry of a scene object at the scale it was placed with."""
+        return scaled(self.get(obj.asset), getattr(obj, "scale", 1.0))
 
     def of_type(self, object_type: str) -> list[AssetEntry]:
         """Every variant of a type (built-in first, then imported), possibly empty."""

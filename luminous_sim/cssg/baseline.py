@@ -37,10 +37,11 @@ def place_uniform(ctx: FloorContext, req: Request) -> bool:
     floor = draft.shell.polygon()
     keep_clear = draft.shell.door_clearance_zones()
     minx, miny, maxx, maxy = floor.bounds
+    variants = req.variants(draft.catalog)
     for _ in range(FURNITURE_TRIES):
-        entry = draft.pick_variant(req.type)
-        if entry is None:
+        if not variants:
             return False
+        entry = variants[int(draft.rng.integers(len(variants)))]
         x, y = draft.rng.uniform(minx, maxx), draft.rng.uniform(miny, maxy)
         yaw = float(draft.rng.uniform(0, 2 * math.pi))
         fp = footprint(entry, x, y, yaw)
@@ -48,9 +49,10 @@ def place_uniform(ctx: FloorContext, req: Request) -> bool:
             continue
         if fp.intersects(draft.floor_obstacles()):
             continue
-        obj = draft.add(entry, x, y, -entry.bbox_min[2], yaw, "furniture", fixed=True, name=req.name)
+        obj = draft.add(entry, x, y, -entry.bbox_min[2], yaw, "furniture", fixed=True, name=req.name,
+                        color=req.colour())
         register(ctx, req.name, obj, entry)
-        ctx.grid.block(fp)
+        ctx.commit(obj.id, fp)
         return True
     return False
 
@@ -66,7 +68,8 @@ def sample_uniform(cdf: ChallengeDefinition, shell: RoomShell, rng: np.random.Ge
     occupied: dict = {}
     unplaced = []
     for req in requests:
-        free = Request(req.name, req.type, req.layer, req.explicit, req.asset, req.states)  # no relations
+        free = Request(req.name, req.type, req.layer, req.explicit, req.asset, req.states,
+                       attributes=req.attributes)  # no relations
         if req.layer in ("furniture", "fixture"):
             ok = place_uniform(ctx, free)
             if ok:

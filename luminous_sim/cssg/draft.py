@@ -35,12 +35,12 @@ class SceneDraft:
     def add(
         self, entry: AssetEntry, x: float, y: float, z: float, yaw: float, layer: Layer, fixed: bool,
         parent: str | None = None, region: str | None = None, name: str | None = None,
-        states: dict[str, bool] | None = None,
+        states: dict[str, bool] | None = None, color: tuple[float, float, float] | None = None,
     ) -> SceneObject:
         obj = SceneObject(
             id=thor_object_id(entry.type, (x, y, z), self.taken_ids), type=entry.type, asset=entry.id,
             position=(x, y, z), yaw=yaw, layer=layer, fixed=fixed, parent=parent, region=region, name=name,
-            states=states or {}, color_seed=int(self.rng.integers(2**31)),
+            states=states or {}, color_seed=int(self.rng.integers(2**31)), scale=entry.scale, color=color,
         )
         self.placed.append(Placed(obj, entry, footprint(entry, obj.position[0], obj.position[1], obj.yaw)))
         return obj

@@ -9,8 +9,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from luminous_sim.cssg.draft import SceneDraft
-from luminous_sim.cssg.grid import HEADINGS, FloorGrid
-from luminous_sim.cssg.pose import front_zone
+from luminous_sim.cssg.grid import HEADINGS, RES, FloorGrid
+from luminous_sim.cssg.pose import footprint, front_zone
 from luminous_sim.cssg.requests import Request
 from luminous_sim.cssg.scores import (
     TEMPERATURE,
@@ -27,6 +27,10 @@ SEGMENTED_FIXTURES = {"CounterTop"}
 WRONG_HEADING_PENALTY = 0.5
 WORK_ZONE = 0.7
 """metres kept free in front of every fixture (counters, sink, stove, fridge, toilet, bathtub)."""
+AGENT_CLEARANCE = 0.25
+"""Half-width of the passage the agent needs (a little more than its 0.2 m radius, for the 0.25 m grid)."""
+REACH = 1.45
+"""Every piece must stay within this distance of the walkable floor (ALFRED reaches 1.5 m)."""
 """metres of cost for standing at a heading other than the preferred one."""
 
 
@@ -40,6 +44,10 @@ class FloorContext:
     centroid: tuple[float, float]
     placed: dict[str, Placed2D]
     alternates: dict[str, list[Placed2D]] = None  # type: ignore[assignment]
+    solid: np.ndarray = None  # type: ignore[assignment]
+    """Cells under things the agent cannot walk through (footprints, not clearance zones)."""
+    pieces: list = None  # type: ignore[assignment]
+    """(object id, footprint cells) of everything on the floor that the agent must be able to reach."""
     """A name bound to one segment of a fixture (a kitchen's counter) relates to any of its segments."""
 
     @classmethod
@@ -48,13 +56,48 @@ class FloorContext:
         grid = FloorGrid.from_polygon(poly)
         for zone in draft.shell.door_clearance_zones():
             grid.block(zone)
+        solid = np.zeros(grid.shape, dtype=bool)
+        pieces = []
         for p in draft.placed:
             if p.obj.parent is None:
                 grid.block(p.footprint)
+                cells = grid._cells(p.footprint)
+                solid |= cells
+                pieces.append((p.obj.id, cells))
                 if p.obj.layer == "fixture":  # keep the work zone in front of counters and appliances
                     grid.block(front_zone(p.entry, p.obj.position[0], p.obj.position[1], p.obj.yaw, WORK_ZONE))
         c = poly.centroid
-        return cls(draft, grid, directional_wall_distance(grid), (c.x, c.y), {}, {})
+        return cls(draft, grid, directional_wall_distance(grid), (c.x, c.y), {}, {}, solid, pieces)
+
+    def walkable(self, solid: np.ndarray) -> np.ndarray:
+        """The largest connected part of the floor where the agent's centre can be."""
+        from scipy import ndimage
+
+        clear = ndimage.distance_transform_edt(~solid) * RES >= AGENT_CLEARANCE
+        ok = clear & (self.grid.wall_dist >= AGENT_CLEARANCE - RES / 2)
+        labels, n = ndimage.label(ok)
+        if n == 0:
+            return ok
+        sizes = np.bincount(labels.ravel())[1:]
+        return labels == (int(np.argmax(sizes)) + 1)
+
+    def keeps_everything_reachable(self, fp) -> bool:
+        """Whether adding footprint `fp` leaves every floor piece (and itself) within reach of walkable floor."""
+        from scipy import ndimage
+
+        cells = self.grid._cells(fp)
+        solid = self.solid | cells
+        walk = self.walkable(solid)
+        if not walk.any():
+            return False
+        dist = ndimage.distance_transform_edt(~walk) * RES
+        return all(dist[c].min() <= REACH for _, c in self.pieces + [("new", cells)] if c.any())
+
+    def commit(self, object_id: str, fp) -> None:
+        cells = self.grid._cells(fp)
+        self.solid |= cells
+        self.pieces.append((object_id, cells))
+        self.grid.block(fp)
 
     def anchor(self, name: str | None) -> Placed2D | None:
         return self.placed.get(name) if name else None
@@ -121,9 +164,7 @@ def place_piece(ctx: FloorContext, req: Request, tries: int = 6) -> Placed2D | N
     """
     draft = ctx.draft
     rng = draft.rng
-    variants = draft.catalog.of_type(req.type)
-    if req.asset:
-        variants = [e for e in variants if e.id == req.asset]
+    variants = req.variants(draft.catalog)
     if not variants:
         return None
     for attempt in range(tries):
@@ -151,9 +192,13 @@ def place_piece(ctx: FloorContext, req: Request, tries: int = 6) -> Placed2D | N
         # early draws must also honour the implicit rules; later ones only the CDF's hard relations
         if attempt < tries - 1 and not hard_relations_met(ctx, req, entry, x, y, yaw, implicit=attempt < tries // 2):
             continue
+        if not ctx.keeps_everything_reachable(footprint(entry, x, y, yaw)):
+            continue
+        if not req.explicit and not hard_relations_met(ctx, req, entry, x, y, yaw, implicit=True):
+            return None  # a default piece that cannot follow its rules here is better left out
         obj = draft.add(entry, x, y, -entry.bbox_min[2], yaw, "furniture", fixed=True, name=req.name,
-                        states=req.states)
-        ctx.grid.block(draft.placed[-1].footprint)
+                        states=req.states, color=req.colour())
+        ctx.commit(obj.id, draft.placed[-1].footprint)
         placed = Placed2D(req.type, x, y, yaw, entry)
         ctx.placed[req.name] = placed
         ctx.placed[obj.id] = placed

@@ -75,6 +75,8 @@ def _bind_fixtures(draft: SceneDraft, req: Request, by_name: dict[str, str], ctx
         gone = {hit.obj.id} | {p.obj.id for p in draft.placed if p.obj.parent == hit.obj.id}
         draft.placed[:] = [p for p in draft.placed if p.obj.id not in gone]
         ctx.grid.unblock(hit.footprint)
+        ctx.solid &= ~ctx.grid._cells(hit.footprint)
+        ctx.pieces = [(oid, c) for oid, c in ctx.pieces if oid not in gone]
         return False
     by_name[req.name] = hit.obj.id
     if req.states or req.name:
@@ -91,6 +93,8 @@ class _Checkpoint:
     index: int
     placed: int
     free: np.ndarray
+    solid: np.ndarray
+    pieces: list
     anchors: dict
     alternates: dict
     by_name: dict
@@ -99,7 +103,8 @@ class _Checkpoint:
 
 
 def _save(i: int, draft: SceneDraft, ctx: FloorContext, by_name: dict, occupied: dict, unplaced: list) -> _Checkpoint:
-    return _Checkpoint(i, len(draft.placed), ctx.grid.free.copy(), dict(ctx.placed), dict(ctx.alternates),
+    return _Checkpoint(i, len(draft.placed), ctx.grid.free.copy(), ctx.solid.copy(), list(ctx.pieces),
+                       dict(ctx.placed), dict(ctx.alternates),
                        dict(by_name), {k: list(v) for k, v in occupied.items()}, list(unplaced))
 
 
@@ -109,6 +114,8 @@ def _restore(cp: _Checkpoint, draft: SceneDraft, ctx: FloorContext, by_name: dic
     draft.taken_ids = {p.obj.id for p in draft.placed}
     ctx.grid.free = cp.free.copy()
     ctx.grid._sat = None
+    ctx.solid = cp.solid.copy()
+    ctx.pieces = list(cp.pieces)
     ctx.placed, ctx.alternates = dict(cp.anchors), dict(cp.alternates)
     by_name.clear()
     by_name.update(cp.by_name)

@@ -6,7 +6,7 @@ from __future__ import annotations
 from shapely.geometry import Polygon
 
 from luminous_sim.cssg.draft import Placed, SceneDraft
-from luminous_sim.cssg.regions import RegionSpot, fits, region_spots, sample_in_region
+from luminous_sim.cssg.regions import HANGERS, RegionSpot, fits, hang_pose, region_spots, sample_in_region
 from luminous_sim.cssg.requests import Request
 from luminous_sim.cssg.tables import supports_for
 
@@ -37,28 +37,31 @@ def place_object(draft: SceneDraft, req: Request, by_name: dict[str, str],
     """Place one object request; False if no compatible region has room for it."""
     hosts, kind = _hosts(draft, req, by_name)
     facing = _facing_point(draft, req, by_name)
-    variants = draft.catalog.of_type(req.type)
-    if req.asset:
-        variants = [e for e in variants if e.id == req.asset]
+    variants = req.variants(draft.catalog)
     for _ in range(6):
         if not variants:
             return False
         entry = variants[int(draft.rng.integers(len(variants)))]
         spots: list[RegionSpot] = [s for h in hosts for s in region_spots(h.obj, h.entry)
-                                   if (kind is None or s.kind == kind) and fits(entry, s)]
+                                   if (kind is None or s.kind == kind)
+                                   and (fits(entry, s) or h.obj.type in HANGERS)]
         if not spots:
             continue
         spot = spots[int(draft.rng.integers(len(spots)))]
         key = (spot.host.id, spot.name)
         if key not in occupied:  # whatever already stands there (burners on a counter) takes room
             occupied[key] = [p.footprint for p in draft.placed if p.obj.parent == spot.host.id]
-        got = sample_in_region(entry, spot, draft.rng, occupied[key], facing=facing)
+        hanging = spot.host.type in HANGERS
+        if hanging:
+            got = None if occupied[key] else hang_pose(entry, spot)
+        else:
+            got = sample_in_region(entry, spot, draft.rng, occupied[key], facing=facing)
         if got is None:
             continue
         x, y, z, yaw, fp = got
         occupied[key].append(fp)
-        obj = draft.add(entry, x, y, z, yaw, "object", fixed=False, parent=spot.host.id, region=spot.name,
-                        name=req.name, states=req.states)
+        obj = draft.add(entry, x, y, z, yaw, "object", fixed=hanging, parent=spot.host.id, region=spot.name,
+                        name=req.name, states=req.states, color=req.colour())
         by_name[req.name] = obj.id
         return True
     return False

@@ -88,3 +88,18 @@ def contains_point(spot: RegionSpot, x: float, y: float) -> bool:
     """Whether a world point lies over the region's rectangle."""
     local = rotate(np.array([[x - spot.center[0], y - spot.center[1]]]), -spot.yaw)[0]
     return bool(abs(local[0]) <= spot.size[0] / 2 and abs(local[1]) <= spot.size[1] / 2) and Point(x, y).is_valid
+
+
+HANGERS = frozenset({"TowelHolder", "HandTowelHolder", "ToiletPaperHanger"})
+"""Receptacles that things hang on (a bar, a ring, a spindle) rather than stand in."""
+
+
+def hang_pose(entry: AssetEntry, spot: RegionSpot) -> tuple[float, float, float, float, Polygon]:
+    """The pose that hangs an object centred on a hanger's region, lengthwise along it."""
+    lo, hi = np.array(entry.bbox_min[:2]), np.array(entry.bbox_max[:2])
+    centre = (lo + hi) / 2
+    yaw = spot.yaw
+    origin = np.array(spot.center) - rotate(centre[None], yaw)[0]
+    corners = np.array([[lo[0], lo[1]], [hi[0], lo[1]], [hi[0], hi[1]], [lo[0], hi[1]]])
+    fp = Polygon(rotate(corners, yaw) + origin)
+    return float(origin[0]), float(origin[1]), spot.floor_z - entry.bbox_min[2] + 0.002, yaw, fp

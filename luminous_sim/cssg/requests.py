@@ -46,6 +46,23 @@ class Request:
     asset: str | None = None
     states: dict[str, bool] = field(default_factory=dict)
     rels: list[Rel] = field(default_factory=list)
+    attributes: dict = field(default_factory=dict)
+    """colour, material and size from the CDF (size: a factor or {width, depth, height})."""
+
+    def variants(self, catalog) -> list:
+        """The asset variants this request may use, filtered and scaled by its attributes."""
+        from luminous_sim.cssg.attributes import candidates
+
+        pool = catalog.of_type(self.type)
+        if self.asset:
+            pool = [e for e in pool if e.id == self.asset]
+        return candidates(pool, self.attributes)
+
+    def colour(self, where: str = "") -> tuple[float, float, float] | None:
+        from luminous_sim.cssg.attributes import parse_colour
+
+        name = self.attributes.get("colour")
+        return parse_colour(name, f"{where or self.name}: attributes.colour") if name else None
 
 
 def _instances(cdf: ChallengeDefinition) -> dict[str, list[str]]:
@@ -62,9 +79,10 @@ def requests_from_cdf(cdf: ChallengeDefinition, room_type: str, rng: np.random.G
     for name in resolve_order(cdf):
         spec = specs[name]
         states = {k: v for k, v in (spec.state.model_dump() if spec.state else {}).items() if v is not None}
+        attrs = spec.attributes.model_dump(exclude_none=True) if spec.attributes else {}
         for iname in inst[name]:
             reqs[iname] = Request(iname, spec.type, _layer(spec.type, spec.layer, room_type), True, spec.asset,
-                                  dict(states))
+                                  dict(states), attributes=attrs)
     for o in oriented_relations(cdf):
         rel = o.relation
         if o.flipped and cdf.scene.relations[o.index].relation == "in_front_of":

@@ -91,12 +91,16 @@ def relation_field(
     back = -subject.bbox_min[1]
     wall_heading = heading_index(grid.wall_normal[..., 0], grid.wall_normal[..., 1])
     if relation == "against_wall":
-        return np.abs(grid.wall_dist - back - GAP), wall_heading
+        behind = np.take_along_axis(wall_dirs, BACK_DIRECTION[wall_heading][None], 0)[0]
+        return np.abs(behind - back - GAP), wall_heading
     if relation == "in_corner":
-        ext = max(hw, hd)
+        # back to the nearest wall and a side to the perpendicular one: half extents along world x and y
+        # depend on which way the piece faces
+        along_x = np.where(wall_heading % 2 == 0, hw, hd)
+        along_y = np.where(wall_heading % 2 == 0, hd, hw)
         dx = np.minimum(wall_dirs[0], wall_dirs[1])
         dy = np.minimum(wall_dirs[2], wall_dirs[3])
-        return np.abs(dx - ext - GAP) + np.abs(dy - ext - GAP), wall_heading
+        return np.abs(dx - along_x - GAP) + np.abs(dy - along_y - GAP), wall_heading
     if relation == "in_centre":
         return np.hypot(gx - centroid[0], gy - centroid[1]), None
     if anchor is None:  # relations to the room structure ("away_from wall")
@@ -147,6 +151,8 @@ def relation_field(
     return np.zeros(grid.shape), None  # support and wall-layer relations are not floor fields
 
 
+BACK_DIRECTION = np.array([2, 1, 3, 0])
+"""For heading k (front +y, -x, -y, +x), the index into directional_wall_distance of the wall behind."""
 HEADING_RELATIONS = frozenset({"face", "in_front_of", "against_wall"})
 """Relations that are only met when the subject also has the heading they ask for."""
 WRONG_HEADING_COST = 1.0
@@ -159,6 +165,9 @@ def point_cost(relation: str, grid: FloorGrid, subject: AssetEntry, anchor: Plac
     cost, head = relation_field(relation, grid, subject, anchor, wall_dirs, centroid)
     r, c = grid.cell(x, y)
     r, c = min(max(r, 0), grid.shape[0] - 1), min(max(c, 0), grid.shape[1] - 1)
+    if relation == "against_wall" and yaw is not None:  # the wall behind the piece as it actually stands
+        k = int(round(yaw / (math.pi / 2))) % 4
+        return float(abs(wall_dirs[BACK_DIRECTION[k], r, c] + 0.0 - (-subject.bbox_min[1]) - GAP))
     extra = 0.0
     if yaw is not None and head is not None and relation in HEADING_RELATIONS:
         extra = WRONG_HEADING_COST * (int(head[r, c]) != int(round(yaw / (math.pi / 2))) % 4)

@@ -135,10 +135,12 @@ def place_fixtures(draft: SceneDraft) -> None:
             if slot.type == "Sink":
                 _tile_counter(draft, wall, u, slot.offset)
                 sink = _pick_sink(draft, slot.width)
-                if sink is not None:
-                    host = _add_against(draft, wall, sink, slot.offset + (slot.width - _width(sink)) / 2)
-                    _add_anchors(draft, host, sink)
                 u = slot.offset + slot.width
+                if sink is not None:
+                    start = slot.offset + max(0.0, (slot.width - _width(sink)) / 2)
+                    host = _add_against(draft, wall, sink, start)
+                    _add_anchors(draft, host, sink)
+                    u = max(u, start + _width(sink))  # a sink wider than its slot pushes the next counter along
             elif slot.type == "StoveBurner":
                 _tile_counter(draft, wall, u, slot.offset)
                 top = _stove_counter(draft, wall, slot)

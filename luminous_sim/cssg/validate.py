@@ -123,6 +123,8 @@ def check_layout(draft: SceneDraft, requests, ctx, unplaced: list[str], attempt:
     by_name = {p.obj.name: p for p in draft.placed if p.obj.name}
     for req in requests:
         placed = by_name.get(req.name)
+        if placed is None and not req.explicit:
+            continue  # a default piece left out has no relations to meet; a CDF object left out fails them
         for rel in req.rels:
             if placed is None:
                 met, cost = False, float("inf")
@@ -169,6 +171,6 @@ def scene_reachable_grid(scene, catalog=None) -> np.ndarray:
     catalog = catalog or default_catalog()
     draft = SceneDraft(scene.room, catalog, np.random.default_rng(0))
     for o in scene.objects:
-        e = catalog.get(o.asset)
+        e = catalog.for_object(o)
         draft.placed.append(Placed(o, e, footprint(e, o.position[0], o.position[1], o.yaw)))
     return reachable_grid(draft)

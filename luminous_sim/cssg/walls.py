@@ -54,12 +54,20 @@ def _add(draft: SceneDraft, req: Request, entry: AssetEntry, wall: Wall, u_cente
     x, y, yaw = _origin_for(wall, entry, u_center, 0.005)
     if _clashes(draft, entry, x, y, yaw, z0):
         return False
-    draft.add(entry, x, y, z0 - entry.bbox_min[2], yaw, "decoration", fixed=True, name=req.name, states=req.states)
+    draft.add(entry, x, y, z0 - entry.bbox_min[2], yaw, "decoration", fixed=True, name=req.name, states=req.states,
+              color=req.colour())
     return True
+
+
+NEAR_OFFSET = (0.35, 0.9)
+"""How far along the wall (m) a wall piece that is `near`/`beside` something goes from it."""
 
 
 def _above_target(draft: SceneDraft, req: Request, by_name: dict[str, str]) -> str | None:
     rel = next((r for r in req.rels if r.relation == "above"), None)
+    if rel is not None:
+        return by_name.get(rel.anchor or "")
+    rel = next((r for r in req.rels if r.relation in ("near", "beside")), None)
     if rel is not None:
         return by_name.get(rel.anchor or "")
     want = IMPLICIT_ABOVE.get(req.type)
@@ -84,9 +92,7 @@ def place_wall_piece(draft: SceneDraft, req: Request, by_name: dict[str, str], t
     With `relations` off (the baseline) nothing is put above anything on purpose.
     """
     rng = draft.rng
-    variants = [e for e in draft.catalog.of_type(req.type) if e.dims[1] <= WALL_MOUNTED_MAX_DEPTH]
-    if req.asset:
-        variants = [e for e in variants if e.id == req.asset]
+    variants = [e for e in req.variants(draft.catalog) if e.dims[1] <= WALL_MOUNTED_MAX_DEPTH]
     if not variants:
         return False
     walls = {w.id: w for w in draft.shell.walls}
@@ -119,8 +125,14 @@ def place_wall_piece(draft: SceneDraft, req: Request, by_name: dict[str, str], t
             host = next(p for p in draft.placed if p.obj.id == target)
             wall, u = _nearest_wall(draft, host.obj.position[0], host.obj.position[1])
             top = host.obj.position[2] + host.entry.bbox_max[2]
-            z0 = max(wall_height(req.type), top + ABOVE_GAP) if req.type != "ToiletPaperHanger" else wall_height(req.type)
-            u_center = u + float(rng.uniform(-0.05, 0.05))
+            beside = any(r.relation in ("near", "beside") for r in req.rels) or req.type == "ToiletPaperHanger"
+            if beside:  # at its usual height, to one side of the anchor
+                z0 = wall_height(req.type)
+                side = 1.0 if rng.random() < 0.5 else -1.0
+                u_center = u + side * (host.entry.dims[0] / 2 + float(rng.uniform(*NEAR_OFFSET)) * 0.5)
+            else:
+                z0 = max(wall_height(req.type), top + ABOVE_GAP)
+                u_center = u + float(rng.uniform(-0.05, 0.05))
         else:
             lengths = np.array([w.length for w in draft.shell.walls])
             wall = draft.shell.walls[int(rng.choice(len(lengths), p=lengths / lengths.sum()))]

@@ -45,6 +45,9 @@ class SceneObject(BaseModel):
     name: str | None = None
     states: dict[str, bool] = Field(default_factory=dict)
     color_seed: int = 0
+    scale: float = 1.0
+    color: tuple[float, float, float] | None = None
+    """A CDF colour for the object's main material slot (else drawn from the palette by color_seed)."""
 
     @field_validator("position")
     @classmethod

@@ -24,18 +24,24 @@ class LoadedAsset:
     """Current colour of each (link, visual index), alpha excluded from state toggling."""
 
 
+def main_slot(entry: AssetEntry) -> str:
+    """The material slot of the base link's first visual: what a CDF colour applies to."""
+    return next(v["slot"] for v in entry.visuals if v["state"] is None)
+
+
 def load_asset(
     client: BulletClient, entry: AssetEntry, position=(0.0, 0.0, 0.0), yaw: float = 0.0,
-    fixed: bool = False, rng: np.random.Generator | None = None,
+    fixed: bool = False, rng: np.random.Generator | None = None, color: tuple[float, float, float] | None = None,
 ) -> LoadedAsset:
-    """Load `entry` at `position` turned by `yaw` (radians about z); with `rng`, randomise its colours."""
+    """Load `entry` (at its `scale`) at `position` turned by `yaw` (radians about z); with `rng`,
+    randomise its colours; `color` overrides its main material slot."""
     if not entry.urdf_path.is_file():
         raise AssetError(f"asset {entry.id}: {entry.urdf_path} is missing; rebuild it with "
                          f"`luminous assets build --types {entry.type}`")
     orn = client.getQuaternionFromEuler([0, 0, yaw])
     body = client.loadURDF(
         str(entry.urdf_path), list(position), orn, useFixedBase=fixed,
-        flags=p.URDF_USE_INERTIA_FROM_FILE | p.URDF_MAINTAIN_LINK_ORDER,
+        flags=p.URDF_USE_INERTIA_FROM_FILE | p.URDF_MAINTAIN_LINK_ORDER, globalScaling=entry.scale,
     )
     link_index = {"base": -1}
     joint_index = {}
@@ -49,7 +55,12 @@ def load_asset(
         choices = palettes[vis["slot"]]
         idx = entry.variant % len(choices) if rng is None else int(rng.integers(len(choices)))
         loaded.colors[(vis["link"], vis["index"])] = list(choices[idx])
-    if rng is not None:
+    if color is not None:
+        slot = main_slot(entry)
+        for vis in entry.visuals:
+            if vis["slot"] == slot:
+                loaded.colors[(vis["link"], vis["index"])] = [*color, 1.0]
+    if rng is not None or color is not None:
         for vis in entry.visuals:
             set_visual_alpha(client, loaded, vis["link"], vis["index"], _default_alpha(vis["state"]))
     return loaded

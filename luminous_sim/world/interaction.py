@@ -303,7 +303,10 @@ class Interactions:
         variants = self.world.catalog.of_type(spec["type"])
         if not variants:
             return
-        slice_entry = next((e for e in variants if e.variant == loaded.entry.variant), variants[0])
+        from luminous_sim.assets.catalog import scaled
+
+        slice_entry = scaled(next((e for e in variants if e.variant == loaded.entry.variant), variants[0]),
+                             loaded.entry.scale)
         c = self.world.client
         pos, orn = base_link_pose(c, loaded.body)
         c.removeBody(loaded.body)

@@ -92,9 +92,9 @@ def build_scene(scene: Scene, catalog: Catalog | None = None, client: BulletClie
     walls = [_box(client, w.center, w.size, w.yaw, wall_rgba) for w in room.wall_boxes()]
     objects: dict[str, LoadedAsset] = {}
     for obj in scene.objects:
-        entry = catalog.get(obj.asset)
+        entry = catalog.for_object(obj)
         loaded = load_asset(client, entry, obj.position, obj.yaw, fixed=obj.fixed,
-                            rng=np.random.default_rng(obj.color_seed))
+                            rng=np.random.default_rng(obj.color_seed), color=obj.color)
         _apply_states(client, obj, loaded)
         objects[obj.id] = loaded
     for _ in range(settle_steps):

@@ -282,7 +282,7 @@ def plate(v: int, rng: np.random.Generator) -> AssetSpec:
         pts = [(0.0, 0.0), (foot, 0.0), (foot + 0.004, 0.004), (well + 0.01, 0.007), (big_r, rim_h - 0.004),
                (big_r, rim_h), (big_r - 0.005, rim_h), (well, t + 0.001), (well - 0.01, t), (0.0, t)]
         parts.append(Part(g.revolve(pts, sections=28), "ceramic", convex=False))
-        top_w = 2 * well * 0.72
+        top_w = max(2 * well * 0.72, 1.05 * big_r)  # room for an apple or a mug on a side plate
     else:
         side = pick(rng, 0.21, 0.23)
         well, t, rise, th = 0.66 * side, 0.008, 0.014, 0.005
@@ -306,7 +306,7 @@ def plate(v: int, rng: np.random.Generator) -> AssetSpec:
         dirt.append(_blob((s * 1.6, s, 0.002), (rho * np.cos(a), rho * np.sin(a), t + 0.0008), yaw=a))
     parts += [Part(m, "dirt", state="dirty") for m in dirt]
     return AssetSpec("Plate", v, "small", [Link("base", parts, 0.4)],
-                     regions=[surface("top", top_w, top_w, t, 0.1, margin=0.0)],
+                     regions=[surface("top", top_w, top_w, t, 0.35, margin=0.0)],
                      description=["dinner plate", "side plate", "square plate"][v])
 
 
