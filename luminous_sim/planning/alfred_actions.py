@@ -1,0 +1,35 @@
+"""ALFRED's exact action records: `api_action` and `discrete_action` dicts for every low-level action,
+and the lower-cased type names used in high-level `discrete_action.args`."""
+
+from __future__ import annotations
+
+from typing import Any
+
+DISCRETE_NAV = {"MoveAhead": "MoveAhead_25", "RotateLeft": "RotateLeft_90", "RotateRight": "RotateRight_90",
+                "LookUp": "LookUp_15", "LookDown": "LookDown_15"}
+
+
+def nav_api(action: str) -> dict[str, Any]:
+    """The api_action ALFRED records for a navigation step."""
+    if action == "MoveAhead":
+        return {"action": "MoveAhead", "forceAction": True, "moveMagnitude": 0.25}
+    return {"action": action, "forceAction": True}
+
+
+def interaction_api(action: str, object_id: str, receptacle_id: str | None = None) -> dict[str, Any]:
+    """The api_action ALFRED records for an interaction (PutObject names the held object and the receptacle)."""
+    if action == "PutObject":
+        return {"action": "PutObject", "objectId": object_id, "receptacleObjectId": receptacle_id,
+                "forceAction": True, "placeStationary": True}
+    return {"action": action, "objectId": object_id}
+
+
+def type_name(object_id: str | None) -> str:
+    """`Apple|+00.1|...|AppleSliced_2` -> `applesliced`; `Sink|...|SinkBasin` style ids use the last type."""
+    if not object_id:
+        return ""
+    parts = object_id.split("|")
+    last = parts[-1]
+    if "_" in last and last.split("_")[0].isalpha() and not last[0] in "+-":
+        return last.split("_")[0].lower()
+    return parts[0].lower()

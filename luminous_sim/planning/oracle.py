@@ -1,0 +1,133 @@
+"""The oracle: plan a goal symbolically, expand each high-level action into ALFRED's low-level actions,
+navigate by shortest paths on the pose graph, execute everything in the World with a check after each
+action, and replan from the reached state when something fails."""
+
+from __future__ import annotations
+
+import time
+from typing import Any
+
+from luminous_sim.cdf.predicates import Expr
+from luminous_sim.errors import PlanningError
+from luminous_sim.planning.alfred_actions import DISCRETE_NAV, interaction_api, nav_api, type_name
+from luminous_sim.planning.expand import Step, _gating_parent, expand
+from luminous_sim.planning.navigation import NavGraph, goto_actions
+from luminous_sim.planning.trajectory import Trajectory
+from luminous_sim.world.masks import interaction_args
+from luminous_sim.world.poses import find_interaction_pose
+from luminous_sim.world.world import World
+
+MAX_REPLANS = 3
+
+
+class ExecutionError(PlanningError):
+    """A low-level action failed while executing the plan (the oracle replans)."""
+
+
+class Oracle:
+    """Runs goals in one World and records what it did."""
+
+    def __init__(self, world: World, record_frames: bool = True, max_replans: int = MAX_REPLANS):
+        self.world = world
+        self.record_frames = record_frames
+        self.max_replans = max_replans
+        self.graph = NavGraph(world.nav)
+
+    # ------------------------------------------------------------------ public
+
+    def run(self, goal: Expr, names: dict[str, str] | None = None) -> Trajectory:
+        """Achieve `goal` from the world's current state; the trajectory says whether it succeeded."""
+        from luminous_sim.planning.symbolic import solve
+
+        traj = Trajectory(init_action=self.world.agent.to_alfred())
+        self._frame(traj, high_idx=0, low_idx=0)
+        for attempt in range(self.max_replans + 1):
+            t0 = time.perf_counter()
+            try:
+                plan = solve(self.world.interactions.state, goal, names=names)
+            except PlanningError as exc:
+                traj.failure = str(exc)
+                break
+            finally:
+                traj.planning_seconds += time.perf_counter() - t0
+            try:
+                self._execute(plan.actions, traj)
+                traj.success = True
+                break
+            except ExecutionError as exc:
+                traj.replans = attempt + 1
+                traj.failure = str(exc)
+        traj.high_pddl.append({"discrete_action": {"action": "NoOp", "args": []}, "high_idx": len(traj.high_pddl),
+                               "planner_action": {"action": "End", "value": 1}})
+        return traj
+
+    # ------------------------------------------------------------------ execution
+
+    def _execute(self, actions: list, traj: Trajectory) -> None:
+        for k, hl in enumerate(actions):
+            nxt = actions[k + 1].action if k + 1 < len(actions) else "End"
+            high_idx = len(traj.high_pddl)
+            if hl.action == "GotoLocation":
+                target = hl.args.get("objectId") or hl.args.get("target")
+                pose = self._goto(target, high_idx, traj)
+                discrete = [type_name(self._next_object(actions, k) or target)]
+                planner = {"action": "GotoLocation", "location": pose.location_string()}
+            else:
+                state = self.world.interactions.state
+                steps = expand(hl.action, hl.args, state, keep_open=nxt not in ("GotoLocation", "End"))
+                for step in steps:
+                    self._interact(step, high_idx, traj)
+                planner = {"action": hl.action, **{k2: v for k2, v in hl.args.items()}}
+                discrete = [type_name(hl.args.get("objectId"))] + (
+                    [type_name(hl.args["receptacleObjectId"])] if hl.action == "PutObject" else [])
+            traj.high_pddl.append({"discrete_action": {"action": hl.action, "args": discrete},
+                                   "high_idx": high_idx, "planner_action": planner})
+
+    @staticmethod
+    def _next_object(actions: list, k: int) -> str | None:
+        """ALFRED names a GotoLocation by the next subgoal's receptacle, else its object."""
+        if k + 1 >= len(actions):
+            return None
+        args = actions[k + 1].args
+        return args.get("receptacleObjectId") or args.get("objectId")
+
+    def _pose_target(self, object_id: str) -> str:
+        """Where to stand for an object: the closed container it is in, if any."""
+        state = self.world.interactions.state
+        gate = _gating_parent(state, object_id) if object_id in state.objects else None
+        if gate is not None and not state.objects[gate].isOpen:
+            return gate
+        return object_id
+
+    def _goto(self, object_id: str, high_idx: int, traj: Trajectory):
+        pose = find_interaction_pose(self.world, self._pose_target(object_id))
+        if pose is None:
+            raise ExecutionError(f"no pose from which {object_id} is visible within reach")
+        try:
+            steps = goto_actions(self.graph, self.world.agent, pose)
+        except Exception as exc:  # networkx.NetworkXNoPath
+            raise ExecutionError(f"no path to {object_id}: {exc}") from exc
+        for a in steps:
+            self._low(nav_api(a), {"action": DISCRETE_NAV[a], "args": {}}, high_idx, traj)
+        return pose
+
+    def _interact(self, step: Step, high_idx: int, traj: Trajectory) -> None:
+        look_at = step.receptacle_id or step.object_id
+        if look_at not in self.world.visible_objects():
+            self._goto(look_at, high_idx, traj)  # e.g. an apple that an opened door revealed elsewhere
+        mask = self.world.instance_masks().get(look_at)
+        if mask is None:
+            raise ExecutionError(f"{look_at} is not visible for {step.action}")
+        api = interaction_api(step.action, step.object_id, step.receptacle_id)
+        self._low(api, {"action": step.action, "args": interaction_args(mask)}, high_idx, traj)
+
+    def _low(self, api: dict[str, Any], discrete: dict[str, Any], high_idx: int, traj: Trajectory) -> None:
+        result = self.world.step(api)
+        if not result.success:
+            raise ExecutionError(f"{api['action']} failed: {result.error}")
+        traj.low_actions.append({"api_action": api, "discrete_action": discrete, "high_idx": high_idx})
+        self._frame(traj, high_idx, len(traj.low_actions) - 1)
+
+    def _frame(self, traj: Trajectory, high_idx: int, low_idx: int) -> None:
+        if self.record_frames:
+            traj.add_frame(self.world.frame().rgb.copy(), high_idx, low_idx)

@@ -1,0 +1,31 @@
+"""What the oracle produces: ALFRED's high-level plan and low-level actions (with bbox/point/mask
+arguments), the frames, and how it ended."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+
+@dataclass
+class Trajectory:
+    """An expert demonstration in ALFRED's terms (exported to traj_data.json by the data layer)."""
+
+    init_action: dict[str, Any]
+    high_pddl: list[dict[str, Any]] = field(default_factory=list)
+    low_actions: list[dict[str, Any]] = field(default_factory=list)
+    images: list[dict[str, Any]] = field(default_factory=list)
+    frames: list[np.ndarray] = field(default_factory=list)
+    success: bool = False
+    goal_conditions: tuple[int, int] = (0, 0)
+    replans: int = 0
+    planning_seconds: float = 0.0
+    failure: str = ""
+
+    def add_frame(self, rgb: np.ndarray | None, high_idx: int, low_idx: int) -> None:
+        if rgb is None:
+            return
+        self.images.append({"high_idx": high_idx, "image_name": f"{len(self.frames):09d}.png", "low_idx": low_idx})
+        self.frames.append(rgb)
