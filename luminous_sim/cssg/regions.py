@@ -25,6 +25,8 @@ class RegionSpot:
     floor_z: float
     clearance: float
     yaw: float
+    gated: bool = False
+    """Behind a door (fridge shelf, microwave, cabinet): things go in its front half, where they can be seen."""
 
 
 def region_spots(host: SceneObject, entry: AssetEntry) -> list[RegionSpot]:
@@ -39,7 +41,7 @@ def region_spots(host: SceneObject, entry: AssetEntry) -> list[RegionSpot]:
         else:
             floor_z, clearance = host.position[2] + c[2] - sz / 2, sz
         spots.append(RegionSpot(host, r["name"], r["kind"], (float(xy[0]), float(xy[1])), (sx, sy),
-                                float(floor_z), float(clearance), host.yaw))
+                                float(floor_z), float(clearance), host.yaw, gated=bool(r.get("requires_open"))))
     return spots
 
 
@@ -72,7 +74,8 @@ def sample_in_region(
         room_x, room_y = spot.size[0] / 2 - ex, spot.size[1] / 2 - ey
         if room_x < 0 or room_y < 0:
             continue
-        px, py = rng.uniform(-room_x, room_x), rng.uniform(-room_y, room_y)
+        px = rng.uniform(-room_x, room_x)
+        py = rng.uniform(0.0 if spot.gated else -room_y, room_y)  # gated volumes: the front half
         target = rotate(np.array([[px, py]]), spot.yaw)[0] + spot.center
         yaw = spot.yaw + rel_yaw
         origin = target - rotate(center_local[None], yaw)[0]

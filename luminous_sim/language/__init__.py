@@ -1,0 +1,1 @@
+"""Layer L3: instructions for trajectories: templates (default) and a learned speaker."""
