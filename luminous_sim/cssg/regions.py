@@ -13,6 +13,9 @@ from luminous_sim.cssg.pose import rotate
 from luminous_sim.scene.model import SceneObject
 
 
+EDGE_INSET = 0.04
+
+
 @dataclass(frozen=True)
 class RegionSpot:
     """A receptacle region in world terms: centre, size, base height, yaw (of its host)."""
@@ -74,6 +77,9 @@ def sample_in_region(
         room_x, room_y = spot.size[0] / 2 - ex, spot.size[1] / 2 - ey
         if room_x < 0 or room_y < 0:
             continue
+        # stay a few centimetres off the edges where the region allows it (cushions and rims are rounded)
+        room_x -= min(EDGE_INSET, room_x / 2)
+        room_y -= min(EDGE_INSET, room_y / 2)
         px = rng.uniform(-room_x, room_x)
         py = rng.uniform(0.0 if spot.gated else -room_y, room_y)  # gated volumes: the front half
         target = rotate(np.array([[px, py]]), spot.yaw)[0] + spot.center

@@ -110,16 +110,21 @@ class SettleReport:
     fell: list[str]
 
 
-def settle_report(built: BuiltScene, moved_tol: float = 0.01) -> SettleReport:
+MOVED_XY, MOVED_Z, FELL_Z = 0.01, 0.02, 0.05
+"""An object *moved* if it slid or rolled more than 1 cm, or rose or sank more than 2 cm (settling a few
+millimetres onto its support is not moving); it *fell* if it ended more than 5 cm lower."""
+
+
+def settle_report(built: BuiltScene) -> SettleReport:
     """Compare every movable object's pose now with its scene pose."""
     moved, fell = {}, []
     for obj in built.scene.objects:
         if obj.fixed:
             continue
         pos, _ = built.pose_of(obj.id)
-        d = float(np.linalg.norm(pos - np.array(obj.position)))
-        if d > moved_tol:
-            moved[obj.id] = round(d, 4)
-        if pos[2] < obj.position[2] - 0.05:
+        delta = pos - np.array(obj.position)
+        if float(np.linalg.norm(delta[:2])) > MOVED_XY or abs(float(delta[2])) > MOVED_Z:
+            moved[obj.id] = round(float(np.linalg.norm(delta)), 4)
+        if delta[2] < -FELL_Z:
             fell.append(obj.id)
     return SettleReport(moved, fell)

@@ -124,3 +124,34 @@ def test_articulated_types_have_their_joints():
     for e in ENTRIES:
         if e.type in want:
             assert any(j["role"] == want[e.type] and j["kind"] != "fixed" for j in e.joints), e.id
+
+
+SURFACES = [(e, r) for e in ENTRIES for r in e.regions
+            if r["kind"] == "surface" and r["link"] == "base" and e.type not in ("StoveBurner", "TowelHolder",
+                                                                                 "HandTowelHolder", "ToiletPaperHanger")]
+
+
+@pytest.mark.parametrize("entry,region", SURFACES, ids=[f"{e.id}:{r['name']}" for e, r in SURFACES])
+def test_support_surfaces_are_flat_where_declared(entry, region):
+    """Downward rays over a support region hit at its declared height (no seams, no pillows in the way)."""
+    from luminous_sim.world.asset_loader import load_asset
+    from luminous_sim.world.client import new_client
+
+    client = new_client()
+    try:
+        load_asset(client, entry, fixed=True)
+        client.performCollisionDetection()  # rays miss static bodies whose broadphase box is stale
+        cx, cy, cz = region["center"]
+        sx, sy, clearance = region["size"]
+        top = cz + min(clearance, 0.25) - 0.005  # start inside the free space (under any overhang)
+        off = []
+        for fx in (-0.4, 0.0, 0.4):
+            for fy in (-0.4, 0.0, 0.4):
+                x, y = cx + fx * sx, cy + fy * sy
+                hit = client.rayTest([x, y, top], [x, y, cz - 0.5])[0]
+                z = hit[3][2] if hit[0] >= 0 else -1.0
+                if abs(z - cz) > 0.025:
+                    off.append((round(fx, 1), round(fy, 1), round(z, 3)))
+        assert len(off) <= 1, f"surface at z={cz} is not where things would rest: {off}"
+    finally:
+        client.disconnect()

@@ -245,7 +245,7 @@ def fridge(v: int, rng: np.random.Generator) -> AssetSpec:
     levels = [t] + shelf_zs
     tops = shelf_zs + [h - t]
     for i, (z0, z1) in enumerate(zip(levels, tops)):
-        z0 = z0 + (0.01 if i else 0.0)
+        z0 = z0 + (0.005 if i else 0.0)  # on top of the 1 cm glass shelf
         regions.append(Region(f"shelf_{i}", "volume", (0.0, -0.02 + t / 2, (z0 + z1) / 2),
                               (inner_w - 0.02, inner_d - 0.04, z1 - z0 - 0.01), requires_open=joint.name))
     return AssetSpec(

@@ -305,12 +305,17 @@ def _upholstered(s: _Upholstery) -> tuple[list[Part], list[Region]]:
         xb = xa + seat_w - 0.008
         ya = yc if (k == s.seats - 1 and s.chaise) else y1
         parts.append(Part(soft_box_at((xa, seat_back, deck), (xb, ya + 0.01, s.seat_h), 0.035), cush, convex=True))
+    # a flat board just under the cushion tops, so that things put on the seat do not sink into the seams
+    parts.append(Part(g.box_at((-inner / 2 + 0.01, seat_back + 0.02, deck), (inner / 2 - 0.01, y1 - 0.03,
+                                                                           s.seat_h - 0.004)), cush, convex=True))
     # throw pillows at the ends
     for k in range(s.pillows):
         sx = -1 if k % 2 == 0 else 1
         size = 0.42 if inner > 1.0 else 0.36
         x = sx * (inner / 2 - size / 2 - 0.03)
         parts.append(_pillow((size, 0.13, size), (x, seat_back + 0.09, s.seat_h + size / 2 - 0.03), np.radians(14)))
+    if s.pillows:  # the seat region starts in front of the throw pillows
+        seat_back += 0.17
     regions = [surface("seat", inner, y1 - seat_back, s.seat_h, 0.35, cy=(y1 + seat_back) / 2)]
     if s.chaise:
         regions[0] = surface("seat", inner - seat_w, y1 - seat_back, s.seat_h, 0.35, cx=-seat_w / 2,

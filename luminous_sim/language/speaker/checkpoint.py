@@ -1,0 +1,56 @@
+"""Speaker checkpoints: one ``torch.save`` file, written atomically, loaded with ``weights_only``."""
+
+from __future__ import annotations
+
+import os
+import pickle
+import tempfile
+from pathlib import Path
+from typing import Any
+
+import torch
+
+from luminous_sim.language.speaker.errors import SpeakerError
+
+FORMAT = "luminous-speaker/1"
+REQUIRED = ("format", "config", "model", "src_vocab", "tgt_vocab", "epoch", "losses", "train_args")
+
+
+def save_checkpoint(path: str | Path, payload: dict[str, Any]) -> None:
+    """Write ``payload`` to ``path`` via a temporary file in the same folder and ``os.replace``.
+
+    A crash mid-write leaves the previous checkpoint intact.
+    """
+    path = Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
+    try:
+        with os.fdopen(fd, "wb") as fh:
+            torch.save({"format": FORMAT, **payload}, fh)
+            fh.flush()
+            os.fsync(fh.fileno())
+        os.replace(tmp, path)
+    except BaseException:
+        Path(tmp).unlink(missing_ok=True)
+        raise
+
+
+def load_checkpoint(path: str | Path) -> dict[str, Any]:
+    """Read a checkpoint written by :func:`save_checkpoint`.
+
+    Raises:
+        SpeakerError: The file is missing, unreadable, or not a speaker checkpoint.
+    """
+    path = Path(path)
+    if not path.is_file():
+        raise SpeakerError(f"{path}: speaker checkpoint not found")
+    try:
+        data = torch.load(path, map_location="cpu", weights_only=True)
+    except (pickle.UnpicklingError, RuntimeError, EOFError, OSError, ValueError) as exc:
+        raise SpeakerError(f"{path}: not a readable speaker checkpoint ({str(exc).splitlines()[0]})") from None
+    if not isinstance(data, dict) or data.get("format") != FORMAT:
+        raise SpeakerError(f"{path}: not a speaker checkpoint (expected format {FORMAT!r})")
+    missing = [k for k in REQUIRED if k not in data]
+    if missing:
+        raise SpeakerError(f"{path}: speaker checkpoint lacks {missing}")
+    return data

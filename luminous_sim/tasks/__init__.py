@@ -1,0 +1,60 @@
+"""Layer L3: ALFRED's task types, their goals and evaluation, feasible sampling and templates.
+
+Typical use::
+
+    from luminous_sim import tasks
+    state = tasks.state_from_scene(scene)
+    task = tasks.sample_task(scene, state, "pick_heat_then_place_in_recep", rng)
+    done, total = tasks.goal_conditions(task, state_after)
+
+Pure: no PyBullet. Goals are `luminous_sim.cdf` expressions, so a CDF's own goal and ALFRED's
+goal library are evaluated by the same code.
+"""
+
+from luminous_sim.tasks.cdf_bridge import cdf_for_task, names_from_scene, params_from_goal, required_objects, task_from_cdf
+from luminous_sim.tasks.constraints import params_problems
+from luminous_sim.tasks.errors import TaskError, TaskSamplingError
+from luminous_sim.tasks.evaluate import (
+    conjunct_progress,
+    goal_conditions,
+    goal_satisfied,
+    in_receptacle,
+    matching,
+    parents,
+    task_satisfied,
+)
+from luminous_sim.tasks.model import PddlParams, TaskInstance
+from luminous_sim.tasks.sample import feasible_params, feasible_task_types, sample_task, state_from_scene
+from luminous_sim.tasks.templates import TEMPLATES, task_description
+from luminous_sim.tasks.types import TASK_TYPES, TaskType, closed_receptacles_goal, goal_for, task_info
+
+__all__ = [
+    "TASK_TYPES",
+    "TEMPLATES",
+    "PddlParams",
+    "TaskError",
+    "TaskInstance",
+    "TaskSamplingError",
+    "TaskType",
+    "cdf_for_task",
+    "closed_receptacles_goal",
+    "conjunct_progress",
+    "feasible_params",
+    "feasible_task_types",
+    "goal_conditions",
+    "goal_for",
+    "goal_satisfied",
+    "in_receptacle",
+    "matching",
+    "names_from_scene",
+    "params_from_goal",
+    "params_problems",
+    "parents",
+    "required_objects",
+    "sample_task",
+    "state_from_scene",
+    "task_description",
+    "task_from_cdf",
+    "task_info",
+    "task_satisfied",
+]
