@@ -135,7 +135,7 @@ class Catalog:
         return sorted(self._by_type)
 
     def to_json(self) -> list[dict[str, Any]]:
-        return [e.model_dump(exclude={"root"}) for e in self]
+        return [e.model_dump(exclude={"root", "scale"}) for e in self]
 
 
 @cache

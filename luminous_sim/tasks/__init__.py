@@ -11,7 +11,13 @@ Pure: no PyBullet. Goals are `luminous_sim.cdf` expressions, so a CDF's own goal
 goal library are evaluated by the same code.
 """
 
-from luminous_sim.tasks.cdf_bridge import cdf_for_task, names_from_scene, params_from_goal, required_objects, task_from_cdf
+from luminous_sim.tasks.cdf_bridge import (
+    cdf_for_task,
+    names_from_scene,
+    params_from_goal,
+    required_objects,
+    task_from_cdf,
+)
 from luminous_sim.tasks.constraints import params_problems
 from luminous_sim.tasks.errors import TaskError, TaskSamplingError
 from luminous_sim.tasks.evaluate import (
@@ -24,9 +30,21 @@ from luminous_sim.tasks.evaluate import (
     task_satisfied,
 )
 from luminous_sim.tasks.model import PddlParams, TaskInstance
-from luminous_sim.tasks.sample import feasible_params, feasible_task_types, sample_task, state_from_scene
+from luminous_sim.tasks.sample import (
+    draw_params,
+    feasible_params,
+    feasible_task_types,
+    sample_task,
+    state_from_scene,
+)
 from luminous_sim.tasks.templates import TEMPLATES, task_description
-from luminous_sim.tasks.types import TASK_TYPES, TaskType, closed_receptacles_goal, goal_for, task_info
+from luminous_sim.tasks.types import (
+    TASK_TYPES,
+    TaskType,
+    closed_receptacles_goal,
+    goal_for,
+    task_info,
+)
 
 __all__ = [
     "TASK_TYPES",
@@ -39,6 +57,7 @@ __all__ = [
     "cdf_for_task",
     "closed_receptacles_goal",
     "conjunct_progress",
+    "draw_params",
     "feasible_params",
     "feasible_task_types",
     "goal_conditions",

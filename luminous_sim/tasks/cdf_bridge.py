@@ -13,7 +13,18 @@ import yaml
 
 from luminous_sim.cdf import loads
 from luminous_sim.cdf.affordances import STANDS_ON, can_support
-from luminous_sim.cdf.predicates import And, Atom, Exists, Expr, ForAll, Not, Or, atoms, is_variable, to_sexpr
+from luminous_sim.cdf.predicates import (
+    And,
+    Atom,
+    Exists,
+    Expr,
+    ForAll,
+    Not,
+    Or,
+    atoms,
+    is_variable,
+    to_sexpr,
+)
 from luminous_sim.cdf.schema import ChallengeDefinition
 from luminous_sim.scene.model import Scene
 from luminous_sim.tasks.constraints import DEVICES, params_problems
@@ -26,7 +37,7 @@ from luminous_sim.vocab import SLICED_TYPES, abilities, parent_type
 SURFACES: dict[str, tuple[str, ...]] = {
     "Kitchen": ("CounterTop", "DiningTable", "SideTable", "Shelf"),
     "LivingRoom": ("CoffeeTable", "SideTable", "DiningTable", "Dresser", "Shelf"),
-    "Bedroom": ("SideTable", "Desk", "Dresser", "Shelf"),
+    "Bedroom": ("Dresser", "Desk", "SideTable", "Shelf"),
     "Bathroom": ("CounterTop", "Shelf", "SideTable", "Dresser"),
 }
 """Per room type, the surfaces a task's small objects are put on, in order of preference."""
@@ -67,17 +78,22 @@ def params_from_goal(cdf: ChallengeDefinition, goal: Expr) -> PddlParams:
         if not all(types):
             continue
         if atom.pred == "inReceptacle":
-            if types[0] == slots.get("mrecep_target") or parent_type(types[0]) == slots.get("object_target") \
-                    or "object_target" not in slots:
-                slots.setdefault("object_target", parent_type(types[0]))
-                if types[0] != slots.get("object_target") or "mrecep_target" not in slots:
-                    slots.setdefault("parent_target", types[1])
+            what = parent_type(types[0])
+            # the movable receptacle's place, or (without one) the object's place
+            mrecep = slots.get("mrecep_target")
+            if types[0] == mrecep or (not mrecep and slots.setdefault("object_target", what) == what):
+                slots.setdefault("parent_target", types[1])
         elif atom.pred in ("holds", "isHot", "isCool", "isClean", "isSliced"):
             slots.setdefault("object_target", parent_type(types[0]))
         elif atom.pred in ("isToggled", "isOn") and types[0] in LAMPS:
             slots.setdefault("toggle_target", types[0])
-    return PddlParams(object_sliced=sliced and slots.get("object_target", "") in SLICED_TYPES.values(), **{
-        k: slots.get(k, "") for k in ("object_target", "parent_target", "toggle_target", "mrecep_target")})
+    return PddlParams(
+        object_sliced=sliced and slots.get("object_target", "") in SLICED_TYPES.values(),
+        **{
+            k: slots.get(k, "")
+            for k in ("object_target", "parent_target", "toggle_target", "mrecep_target")
+        },
+    )
 
 
 def task_from_cdf(
@@ -104,10 +120,14 @@ def task_from_cdf(
     used = sorted({a for atom, _ in atoms(goal) for a in atom.args if not is_variable(a)})
     missing = [n for n in used if n not in names]
     if missing:
-        raise TaskError(f"CDF {cdf.name or '<unnamed>'}: task.goal names {', '.join(missing)}, which the "
-                        f"scene does not map to objects (mapped: {', '.join(sorted(names)) or 'none'})")
+        raise TaskError(
+            f"CDF {cdf.name or '<unnamed>'}: task.goal names {', '.join(missing)}, which the "
+            f"scene does not map to objects (mapped: {', '.join(sorted(names)) or 'none'})"
+        )
     params = params_from_goal(cdf, goal) if cdf.task.type else PddlParams(object_target="")
-    task = TaskInstance(cdf.task.type or "custom", params, goal, scene_seed, custom=True, names=names)
+    task = TaskInstance(
+        cdf.task.type or "custom", params, goal, scene_seed, custom=True, names=names
+    )
     if instruction is None:
         instruction = task_description(task, np.random.default_rng(scene_seed))
     return replace(task, instruction=instruction)
@@ -126,7 +146,9 @@ def required_objects(task_type: str, params: PddlParams) -> list[tuple[str, int]
     wanted = [(params.object_target, 2 if two else 1)]
     if params.object_sliced:
         wanted.append((SLICING_TOOLS[0], 1))
-    wanted += [(t, 1) for t in (params.mrecep_target, params.parent_target, params.toggle_target) if t]
+    wanted += [
+        (t, 1) for t in (params.mrecep_target, params.parent_target, params.toggle_target) if t
+    ]
     wanted += [(t, 1) for t in DEVICES.get(task_type, ())]
     out: dict[str, int] = {}
     for t, n in wanted:
@@ -135,7 +157,9 @@ def required_objects(task_type: str, params: PddlParams) -> list[tuple[str, int]
 
 
 def _snake(object_type: str) -> str:
-    return "".join("_" + c.lower() if c.isupper() and i else c.lower() for i, c in enumerate(object_type))
+    return "".join(
+        "_" + c.lower() if c.isupper() and i else c.lower() for i, c in enumerate(object_type)
+    )
 
 
 class _Doc:
@@ -146,7 +170,9 @@ class _Doc:
         self.relations: list[dict[str, Any]] = []
         self.by_type: dict[str, str] = {}
 
-    def add(self, name: str, object_type: str, count: int = 1, state: dict[str, bool] | None = None) -> str:
+    def add(
+        self, name: str, object_type: str, count: int = 1, state: dict[str, bool] | None = None
+    ) -> str:
         entry: dict[str, Any] = {"name": name, "type": object_type}
         if count > 1:
             entry["count"] = count
@@ -156,7 +182,9 @@ class _Doc:
         self.by_type.setdefault(object_type, name)
         return name
 
-    def put_on(self, name: str, object_type: str, surfaces: tuple[str, ...], avoid: str = "") -> None:
+    def put_on(
+        self, name: str, object_type: str, surfaces: tuple[str, ...], avoid: str = ""
+    ) -> None:
         """Rest the object on the first surface that takes it (declared once, reused after)."""
         for s in surfaces:
             if s != avoid and can_support(s, object_type):
@@ -179,7 +207,11 @@ def _cdf_goal(goal: Expr) -> Expr:
 
 def _strip(expr: Expr, sliced: set[str]) -> Expr:
     if isinstance(expr, And):
-        kept = [e for e in expr.args if not (isinstance(e, Atom) and e.pred == "isSliced" and e.args[0] in sliced)]
+        kept = [
+            e
+            for e in expr.args
+            if not (isinstance(e, Atom) and e.pred == "isSliced" and e.args[0] in sliced)
+        ]
         return And(tuple(_cdf_goal(e) for e in kept))
     return _cdf_goal(expr) if not isinstance(expr, Not) else expr
 
@@ -198,19 +230,33 @@ def cdf_for_task(task_type: str, params: PddlParams, room_type: str) -> Challeng
     """
     info = task_info(task_type)
     if room_type not in info.rooms:
-        raise TaskError(f"{task_type} is generated only in {', '.join(sorted(info.rooms))}; got {room_type!r}")
+        raise TaskError(
+            f"{task_type} is generated only in {', '.join(sorted(info.rooms))}; got {room_type!r}"
+        )
     required = dict(required_objects(task_type, params))
     p = params
-    roles = {p.object_target: "target", p.mrecep_target: "mrecep", p.parent_target: "receptacle",
-             p.toggle_target: "lamp", SLICING_TOOLS[0]: "knife", "Microwave": "microwave",
-             "Fridge": "fridge", "SinkBasin": "basin", "Faucet": "faucet"}
+    roles = {
+        p.object_target: "target",
+        p.mrecep_target: "mrecep",
+        p.parent_target: "receptacle",
+        p.toggle_target: "lamp",
+        SLICING_TOOLS[0]: "knife",
+        "Microwave": "microwave",
+        "Fridge": "fridge",
+        "SinkBasin": "basin",
+        "Faucet": "faucet",
+    }
     first = [t for t in (p.parent_target, *DEVICES.get(task_type, ())) if t]
     doc = _Doc()
     for t in first + [t for t in required if t not in first]:
         state: dict[str, bool] = {}
         if t in LAMPS:
             state["isToggled"] = False
-        if t == p.object_target and task_type == "pick_clean_then_place_in_recep" and abilities(t).dirtyable:
+        if (
+            t == p.object_target
+            and task_type == "pick_clean_then_place_in_recep"
+            and abilities(t).dirtyable
+        ):
             state["isDirty"] = True
         name = doc.add(roles.get(t, _snake(t)), t, required[t], state)
         if t == "DeskLamp":
@@ -224,7 +270,7 @@ def cdf_for_task(task_type: str, params: PddlParams, room_type: str) -> Challeng
     data = {
         "cdf_version": 2,
         "name": f"{task_type}-{obj_type}-{params.mrecep_target or 'None'}-"
-                f"{params.parent_target or params.toggle_target}",
+        f"{params.parent_target or params.toggle_target}",
         "scene": {"room_type": room_type, "objects": doc.objects, "relations": doc.relations},
         "task": {"type": task_type, "goal": to_sexpr(goal)},
     }

@@ -13,7 +13,9 @@ from luminous_sim.vocab import ALL_TYPES, SLICED_TYPES, abilities, can_contain, 
 PICKUP_TYPES: frozenset[str] = frozenset(vocab_data()["pickupable"]) - frozenset(SLICED_TYPES)
 """Object types ALFRED draws as `object_target` (its pickup candidates, slices folded to parents)."""
 NEVER_PARENT: frozenset[str] = frozenset({"Toaster"})
-PICK_TWO_EXCLUDED: frozenset[str] = frozenset({"CoffeeMachine", "ToiletPaperHanger", "HandTowelHolder"})
+PICK_TWO_EXCLUDED: frozenset[str] = frozenset(
+    {"CoffeeMachine", "ToiletPaperHanger", "HandTowelHolder"}
+)
 """Receptacles pick_two_obj_and_place may not use."""
 DEVICES: dict[str, tuple[str, ...]] = {
     "pick_heat_then_place_in_recep": ("Microwave",),
@@ -42,7 +44,11 @@ def params_problems(task_type: str, params: PddlParams) -> list[str]:
     info = task_info(task_type)
     p = params
     out: list[str] = []
-    slots = {"parent_target": p.parent_target, "toggle_target": p.toggle_target, "mrecep_target": p.mrecep_target}
+    slots = {
+        "parent_target": p.parent_target,
+        "toggle_target": p.toggle_target,
+        "mrecep_target": p.mrecep_target,
+    }
     for slot, value in slots.items():
         if slot in info.needs and not value:
             out.append(f"{task_type} needs a {slot}")

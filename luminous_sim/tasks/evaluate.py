@@ -68,18 +68,24 @@ def _targets(task: TaskInstance, state: WorldState) -> tuple[list[str], list[str
     return objs, recs, 1, int(bool(pieces))
 
 
-def _simple(task: TaskInstance, state: WorldState, visible: Collection[str] | None) -> tuple[int, int]:
+def _simple(
+    task: TaskInstance, state: WorldState, visible: Collection[str] | None
+) -> tuple[int, int]:
     objs, recs, ts, s = _targets(task, state)
     return s + bool(_inside(state, objs, recs)), ts + 1
 
 
-def _pick_two(task: TaskInstance, state: WorldState, visible: Collection[str] | None) -> tuple[int, int]:
+def _pick_two(
+    task: TaskInstance, state: WorldState, visible: Collection[str] | None
+) -> tuple[int, int]:
     objs, recs, ts, s = _targets(task, state)
     best = max((len(_inside(state, objs, [r])) for r in recs), default=0)
     return s + min(best, 2), ts + 2
 
 
-def _look_at(task: TaskInstance, state: WorldState, visible: Collection[str] | None) -> tuple[int, int]:
+def _look_at(
+    task: TaskInstance, state: WorldState, visible: Collection[str] | None
+) -> tuple[int, int]:
     objs, _, ts, s = _targets(task, state)
     lamps = matching(state, task.params.toggle_target, "toggleable")
     lit = any(state[t].isToggled and (visible is None or t in visible) for t in lamps)
@@ -88,7 +94,9 @@ def _look_at(task: TaskInstance, state: WorldState, visible: Collection[str] | N
 
 
 def _changed(kind: str) -> _Count:
-    def count(task: TaskInstance, state: WorldState, visible: Collection[str] | None) -> tuple[int, int]:
+    def count(
+        task: TaskInstance, state: WorldState, visible: Collection[str] | None
+    ) -> tuple[int, int]:
         objs, recs, ts, s = _targets(task, state)
         in_place = set(_inside(state, objs, recs))
         changed = {o for o in objs if o in getattr(state, kind)}
@@ -97,7 +105,9 @@ def _changed(kind: str) -> _Count:
     return count
 
 
-def _movable(task: TaskInstance, state: WorldState, visible: Collection[str] | None) -> tuple[int, int]:
+def _movable(
+    task: TaskInstance, state: WorldState, visible: Collection[str] | None
+) -> tuple[int, int]:
     objs, recs, ts, s = _targets(task, state)
     movables = matching(state, task.params.mrecep_target, "pickupable")
     holding = [m for m in movables if _inside(state, objs, [m])]
@@ -140,7 +150,9 @@ def goal_conditions(
     return _COUNTS[task.task_type](task, state, visible)
 
 
-def task_satisfied(task: TaskInstance, state: WorldState, visible: Collection[str] | None = None) -> bool:
+def task_satisfied(
+    task: TaskInstance, state: WorldState, visible: Collection[str] | None = None
+) -> bool:
     """ALFRED's `goal_satisfied`: every goal condition is met."""
     done, total = goal_conditions(task, state, visible)
     return done == total

@@ -48,7 +48,9 @@ def is_clean(state: WorldState, object_id: str) -> bool:
 _Pred = Callable[[WorldState, tuple[str, ...]], bool]
 PREDICATE_FUNCTIONS: dict[str, _Pred] = {
     "inReceptacle": lambda s, a: in_receptacle(s, a[0], a[1]),
-    "inReceptacleObject": lambda s, a: s[a[1]].object_type in _MOVABLE and in_receptacle(s, a[0], a[1]),
+    "inReceptacleObject": lambda s, a: (
+        s[a[1]].object_type in _MOVABLE and in_receptacle(s, a[0], a[1])
+    ),
     "isHot": lambda s, a: a[0] in s.heated or s[a[0]].temperature == "Hot",
     "isCool": lambda s, a: a[0] in s.cooled or s[a[0]].temperature == "Cold",
     "isClean": lambda s, a: is_clean(s, a[0]),
@@ -77,7 +79,9 @@ class _Evaluator:
         slices = [k for k in self.state.objects if k.startswith(oid + "|")]
         if not slices and name not in self.names:
             known = ", ".join(sorted(self.names)) or "none"
-            raise TaskError(f"goal names {name!r}, which is neither a mapped name ({known}) nor an object id")
+            raise TaskError(
+                f"goal names {name!r}, which is neither a mapped name ({known}) nor an object id"
+            )
         return slices
 
     def domain(self, param: Param) -> list[str]:

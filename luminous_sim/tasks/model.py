@@ -63,7 +63,9 @@ class PddlParams:
         """
         unknown = sorted(set(data) - set(PDDL_KEYS))
         if unknown:
-            raise TaskError(f"pddl_params: unknown key(s) {', '.join(unknown)}; expected {', '.join(PDDL_KEYS)}")
+            raise TaskError(
+                f"pddl_params: unknown key(s) {', '.join(unknown)}; expected {', '.join(PDDL_KEYS)}"
+            )
         values = {k: data.get(k, "") for k in PDDL_KEYS if k != "object_sliced"}
         for k, v in values.items():
             if not isinstance(v, str):

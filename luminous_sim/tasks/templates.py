@@ -6,9 +6,9 @@
 
 from __future__ import annotations
 
-import numpy as np
-
 from collections.abc import Iterator, Mapping
+
+import numpy as np
 
 from luminous_sim.cdf.predicates import And, Atom, Exists, Expr, ForAll, Or, is_variable
 from luminous_sim.tasks.errors import TaskError
@@ -21,10 +21,22 @@ TEMPLATES: dict[str, tuple[str, ...]] = {
         "put a clean {obj} in {recep}",
         "clean some {obj} and put it in {recep}",
     ),
-    "pick_heat_then_place_in_recep": ("put a hot {obj} in {recep}", "heat some {obj} and put it in {recep}"),
-    "pick_cool_then_place_in_recep": ("put a cool {obj} in {recep}", "cool some {obj} and put it in {recep}"),
-    "pick_two_obj_and_place": ("put two {obj} in {recep}", "find two {obj} and put them in {recep}"),
-    "look_at_obj_in_light": ("look at {obj} under the {toggle}", "examine the {obj} with the {toggle}"),
+    "pick_heat_then_place_in_recep": (
+        "put a hot {obj} in {recep}",
+        "heat some {obj} and put it in {recep}",
+    ),
+    "pick_cool_then_place_in_recep": (
+        "put a cool {obj} in {recep}",
+        "cool some {obj} and put it in {recep}",
+    ),
+    "pick_two_obj_and_place": (
+        "put two {obj} in {recep}",
+        "find two {obj} and put them in {recep}",
+    ),
+    "look_at_obj_in_light": (
+        "look at {obj} under the {toggle}",
+        "examine the {obj} with the {toggle}",
+    ),
     "pick_and_place_with_movable_recep": (
         "put {obj} in a {mrecep} and then put them in {recep}",
         "put a {mrecep} of {obj} in {recep}",
@@ -42,7 +54,10 @@ TEMPLATES: dict[str, tuple[str, ...]] = {
         "put a cool slice of {obj} in {recep}",
         "cool some sliced {obj} and put it in {recep}",
     ),
-    "pick_two_obj_and_place_slice": ("put two sliced {obj} in {recep}", "find two sliced {obj} and put them in {recep}"),
+    "pick_two_obj_and_place_slice": (
+        "put two sliced {obj} in {recep}",
+        "find two sliced {obj} and put them in {recep}",
+    ),
     "look_at_obj_in_light_slice": (
         "look at sliced {obj} under the {toggle}",
         "examine the sliced {obj} with the {toggle}",
@@ -52,7 +67,10 @@ TEMPLATES: dict[str, tuple[str, ...]] = {
         "put a {mrecep} of sliced {obj} in {recep}",
         "put sliced {obj} {mrecep} in {recep}",
     ),
-    "pick_and_place_simple_slice": ("slice {obj} and put in {recep}", "put sliced {obj} in {recep}"),
+    "pick_and_place_simple_slice": (
+        "slice {obj} and put in {recep}",
+        "put sliced {obj} in {recep}",
+    ),
 }
 """Goal key (task type, `_slice` when sliced) -> ALFRED's templates, in its order."""
 
@@ -82,7 +100,9 @@ def fill_template(template: str, task: TaskInstance) -> str:
     )
 
 
-def _positive_atoms(expr: Expr, scope: Mapping[str, str | None]) -> Iterator[tuple[Atom, Mapping[str, str | None]]]:
+def _positive_atoms(
+    expr: Expr, scope: Mapping[str, str | None]
+) -> Iterator[tuple[Atom, Mapping[str, str | None]]]:
     if isinstance(expr, Atom):
         yield expr, scope
     elif isinstance(expr, (And, Or)):
@@ -119,5 +139,7 @@ def task_description(task: TaskInstance, rng: np.random.Generator) -> str:
         return _spoken_goal(task)
     options = TEMPLATES.get(task.goal_key)
     if options is None:
-        raise TaskError(f"no goal templates for {task.goal_key!r}; expected one of {', '.join(TEMPLATES)}")
+        raise TaskError(
+            f"no goal templates for {task.goal_key!r}; expected one of {', '.join(TEMPLATES)}"
+        )
     return fill_template(options[int(rng.integers(len(options)))], task)

@@ -34,7 +34,9 @@ def _v(name: str, type_: str) -> Param:
 
 
 def _simple(p: PddlParams) -> tuple[tuple[Param, ...], list[Expr]]:
-    return (_v("?o", p.object_type), _v("?r", p.parent_target)), [Atom("inReceptacle", ("?o", "?r"))]
+    return (_v("?o", p.object_type), _v("?r", p.parent_target)), [
+        Atom("inReceptacle", ("?o", "?r"))
+    ]
 
 
 def _pick_two(p: PddlParams) -> tuple[tuple[Param, ...], list[Expr]]:
@@ -62,7 +64,10 @@ def _changed(pred: str) -> Callable[[PddlParams], tuple[tuple[Param, ...], list[
 
 def _movable(p: PddlParams) -> tuple[tuple[Param, ...], list[Expr]]:
     params = (_v("?r", p.parent_target), _v("?o", p.object_type), _v("?m", p.mrecep_target))
-    body: list[Expr] = [Atom("inReceptacleObject", ("?o", "?m")), Atom("inReceptacle", ("?m", "?r"))]
+    body: list[Expr] = [
+        Atom("inReceptacleObject", ("?o", "?m")),
+        Atom("inReceptacle", ("?m", "?r")),
+    ]
     return params, body
 
 
@@ -89,7 +94,13 @@ _ALL = frozenset(ROOM_TYPES)
 _TABLE: tuple[TaskType, ...] = (
     TaskType("pick_and_place_simple", _ALL, True, ("parent_target",), _simple),
     TaskType("pick_two_obj_and_place", _ALL, True, ("parent_target",), _pick_two),
-    TaskType("look_at_obj_in_light", frozenset({"LivingRoom", "Bedroom"}), False, ("toggle_target",), _look_at),
+    TaskType(
+        "look_at_obj_in_light",
+        frozenset({"LivingRoom", "Bedroom"}),
+        False,
+        ("toggle_target",),
+        _look_at,
+    ),
     TaskType(
         "pick_clean_then_place_in_recep",
         frozenset({"Kitchen", "Bathroom"}),
@@ -97,8 +108,20 @@ _TABLE: tuple[TaskType, ...] = (
         ("parent_target",),
         _changed("isClean"),
     ),
-    TaskType("pick_heat_then_place_in_recep", frozenset({"Kitchen"}), True, ("parent_target",), _changed("isHot")),
-    TaskType("pick_cool_then_place_in_recep", frozenset({"Kitchen"}), True, ("parent_target",), _changed("isCool")),
+    TaskType(
+        "pick_heat_then_place_in_recep",
+        frozenset({"Kitchen"}),
+        True,
+        ("parent_target",),
+        _changed("isHot"),
+    ),
+    TaskType(
+        "pick_cool_then_place_in_recep",
+        frozenset({"Kitchen"}),
+        True,
+        ("parent_target",),
+        _changed("isCool"),
+    ),
     TaskType(
         "pick_and_place_with_movable_recep",
         frozenset({"Kitchen", "LivingRoom", "Bedroom"}),
@@ -120,7 +143,9 @@ def task_info(name: str) -> TaskType:
     try:
         return TASK_TYPES[name]
     except KeyError:
-        raise TaskError(f"unknown task type {name!r}; expected one of {', '.join(TASK_TYPES)}") from None
+        raise TaskError(
+            f"unknown task type {name!r}; expected one of {', '.join(TASK_TYPES)}"
+        ) from None
 
 
 def closed_receptacles_goal() -> Expr:
@@ -151,7 +176,10 @@ def goal_for(params: PddlParams, task_type: str, closed_receptacles: bool = Fals
         raise TaskError(f"{task_type} needs {', '.join(missing)}; got {params.to_json()}")
     variables, body = info.build(params)
     if params.object_sliced:
-        body = [*body, Atom("isSliced", ("?o1" if info.name == "pick_two_obj_and_place" else "?o",))]
+        body = [
+            *body,
+            Atom("isSliced", ("?o1" if info.name == "pick_two_obj_and_place" else "?o",)),
+        ]
         if info.name == "pick_two_obj_and_place":
             body.append(Atom("isSliced", ("?o2",)))
     goal: Expr = Exists(variables, And(tuple(body)))

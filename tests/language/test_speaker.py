@@ -33,8 +33,12 @@ from luminous_sim.language.speaker.vocab import Vocab
 ALFRED = Path(__file__).resolve().parents[2].parent / "shared" / "alfred"
 VALID_SEEN = ALFRED / "valid_seen"
 HAS_TORCH = importlib.util.find_spec("torch") is not None
-needs_torch = pytest.mark.skipif(not HAS_TORCH, reason="PyTorch not installed (pip install torch==2.13.0)")
-needs_alfred = pytest.mark.skipif(not VALID_SEEN.is_dir(), reason=f"ALFRED sample data not found at {ALFRED}")
+needs_torch = pytest.mark.skipif(
+    not HAS_TORCH, reason="PyTorch not installed (pip install torch==2.13.0)"
+)
+needs_alfred = pytest.mark.skipif(
+    not VALID_SEEN.is_dir(), reason=f"ALFRED sample data not found at {ALFRED}"
+)
 TINY = {"emb_dim": 16, "hid_dim": 32, "dropout": 0.0}
 
 # --------------------------------------------------------------------------- synthetic ALFRED data
@@ -44,14 +48,20 @@ RECEPS = ("countertop", "fridge", "sinkbasin")
 NAV = ("MoveAhead_25", "RotateLeft_90", "RotateRight_90", "LookDown_15")
 
 
-def _low(action: str, high_idx: int, object_id: str | None = None, recep_id: str | None = None) -> dict:
+def _low(
+    action: str, high_idx: int, object_id: str | None = None, recep_id: str | None = None
+) -> dict:
     api: dict = {"action": action.split("_")[0], "forceAction": True}
     if object_id:
         api["objectId"] = object_id
     if recep_id:
         api["receptacleObjectId"] = recep_id
     args = {"bbox": [1, 2, 3, 4], "point": [2, 3], "mask": [[0, 1]]} if object_id else {}
-    return {"api_action": api, "discrete_action": {"action": action, "args": args}, "high_idx": high_idx}
+    return {
+        "api_action": api,
+        "discrete_action": {"action": action, "args": args},
+        "high_idx": high_idx,
+    }
 
 
 def synthetic_traj(i: int, with_images: bool = False) -> dict:
@@ -61,30 +71,75 @@ def synthetic_traj(i: int, with_images: bool = False) -> dict:
     recep_id = f"{recep.capitalize()}|+01.00|+00.00|+00.50"
     nav1 = [NAV[(i + k) % 4] for k in range(2 + i % 3)]
     nav2 = [NAV[(i + 2 * k) % 4] for k in range(3)]
-    low = ([_low(a, 0) for a in nav1] + [_low("PickupObject", 1, obj_id)]
-           + [_low(a, 2) for a in nav2] + [_low("PutObject", 3, obj_id, recep_id)])
+    low = (
+        [_low(a, 0) for a in nav1]
+        + [_low("PickupObject", 1, obj_id)]
+        + [_low(a, 2) for a in nav2]
+        + [_low("PutObject", 3, obj_id, recep_id)]
+    )
     high = [
-        {"discrete_action": {"action": "GotoLocation", "args": [obj]}, "high_idx": 0,
-         "planner_action": {"action": "GotoLocation", "location": "loc|1|2|0|45"}},
-        {"discrete_action": {"action": "PickupObject", "args": [obj]}, "high_idx": 1,
-         "planner_action": {"action": "PickupObject", "objectId": obj_id}},
-        {"discrete_action": {"action": "GotoLocation", "args": [recep]}, "high_idx": 2,
-         "planner_action": {"action": "GotoLocation", "location": "loc|3|2|1|45"}},
-        {"discrete_action": {"action": "PutObject", "args": [obj, recep]}, "high_idx": 3,
-         "planner_action": {"action": "PutObject", "objectId": obj_id, "receptacleObjectId": recep_id}},
-        {"discrete_action": {"action": "NoOp", "args": []}, "high_idx": 4,
-         "planner_action": {"action": "End", "value": 1}},
+        {
+            "discrete_action": {"action": "GotoLocation", "args": [obj]},
+            "high_idx": 0,
+            "planner_action": {"action": "GotoLocation", "location": "loc|1|2|0|45"},
+        },
+        {
+            "discrete_action": {"action": "PickupObject", "args": [obj]},
+            "high_idx": 1,
+            "planner_action": {"action": "PickupObject", "objectId": obj_id},
+        },
+        {
+            "discrete_action": {"action": "GotoLocation", "args": [recep]},
+            "high_idx": 2,
+            "planner_action": {"action": "GotoLocation", "location": "loc|3|2|1|45"},
+        },
+        {
+            "discrete_action": {"action": "PutObject", "args": [obj, recep]},
+            "high_idx": 3,
+            "planner_action": {
+                "action": "PutObject",
+                "objectId": obj_id,
+                "receptacleObjectId": recep_id,
+            },
+        },
+        {
+            "discrete_action": {"action": "NoOp", "args": []},
+            "high_idx": 4,
+            "planner_action": {"action": "End", "value": 1},
+        },
     ]
-    descs = [f"Walk to the {obj}.", f"Pick up the {obj}.", f"Carry it to the {recep}.",
-             f"Put the {obj} in the {recep}."]
-    anns = [{"assignment_id": f"w{k}", "votes": [1], "task_desc": f"Put a {obj} in the {recep}.",
-             "high_descs": descs} for k in range(2)]
-    images = [{"high_idx": a["high_idx"], "image_name": f"{n:09d}.png", "low_idx": n}
-              for n, a in enumerate(low)] if with_images else []
-    return {"images": images, "pddl_params": {"object_target": obj.capitalize()},
-            "plan": {"high_pddl": high, "low_actions": low}, "scene": {"scene_num": 1},
-            "task_id": f"trial_T2019_{i:04d}", "task_type": "pick_and_place_simple",
-            "turk_annotations": {"anns": anns}}
+    descs = [
+        f"Walk to the {obj}.",
+        f"Pick up the {obj}.",
+        f"Carry it to the {recep}.",
+        f"Put the {obj} in the {recep}.",
+    ]
+    anns = [
+        {
+            "assignment_id": f"w{k}",
+            "votes": [1],
+            "task_desc": f"Put a {obj} in the {recep}.",
+            "high_descs": descs,
+        }
+        for k in range(2)
+    ]
+    images = (
+        [
+            {"high_idx": a["high_idx"], "image_name": f"{n:09d}.png", "low_idx": n}
+            for n, a in enumerate(low)
+        ]
+        if with_images
+        else []
+    )
+    return {
+        "images": images,
+        "pddl_params": {"object_target": obj.capitalize()},
+        "plan": {"high_pddl": high, "low_actions": low},
+        "scene": {"scene_num": 1},
+        "task_id": f"trial_T2019_{i:04d}",
+        "task_type": "pick_and_place_simple",
+        "turk_annotations": {"anns": anns},
+    }
 
 
 def write_dataset(root: Path, n: int = 9, with_images: bool = False) -> Path:
@@ -114,7 +169,17 @@ def synthetic(tmp_path: Path) -> Path:
 
 def test_tokenize_lower_cases_and_separates_punctuation() -> None:
     assert tokenize("Turn around,walk to the TV-stand.") == [
-        "turn", "around", ",", "walk", "to", "the", "tv", "-", "stand", "."]
+        "turn",
+        "around",
+        ",",
+        "walk",
+        "to",
+        "the",
+        "tv",
+        "-",
+        "stand",
+        ".",
+    ]
     assert tokenize("Pick up the robot's mug!") == ["pick", "up", "the", "robot's", "mug", "!"]
     assert detokenize(["turn", "left", ",", "then", "stop", "."]) == "Turn left, then stop."
 
@@ -133,14 +198,22 @@ def test_vocab_specials_unknowns_and_json_round_trip(tmp_path: Path) -> None:
 
 
 def test_bleu_identity_known_value_and_multiple_references() -> None:
-    ref = "go to the table with the safe".split()
+    ref = ["go", "to", "the", "table", "with", "the", "safe"]
     assert corpus_bleu([ref], [[ref]]) == pytest.approx(1.0)
     assert corpus_bleu([["xx", "yy", "zz", "ww"]], [[ref]]) == 0.0
-    hyp = "go to the table with the box".split()  # 6/7, 5/6, 4/5, 3/4 n-grams match, same length
+    hyp = [
+        "go",
+        "to",
+        "the",
+        "table",
+        "with",
+        "the",
+        "box",
+    ]  # 6/7, 5/6, 4/5, 3/4 n-grams match, same length
     expected = (6 / 7 * 5 / 6 * 4 / 5 * 3 / 4) ** 0.25
     assert corpus_bleu([hyp], [[ref]]) == pytest.approx(expected)
     assert corpus_bleu([hyp], [[ref, hyp]]) == pytest.approx(1.0)
-    short = "go to the table".split()  # brevity penalty exp(1 - 7/4)
+    short = ["go", "to", "the", "table"]  # brevity penalty exp(1 - 7/4)
     assert corpus_bleu([short], [[ref]]) == pytest.approx(np.exp(1 - 7 / 4))
     assert 0.0 < sentence_bleu(["go", "to", "it"], [ref]) < 1.0
 
@@ -149,18 +222,37 @@ def test_bleu_identity_known_value_and_multiple_references() -> None:
 
 
 def test_encoding_run_length_codes_navigation_and_names_targets() -> None:
-    lows = [LowAction("RotateLeft_90"), LowAction("MoveAhead_25"), LowAction("MoveAhead_25"),
-            LowAction("MoveAhead_25"), LowAction("PutObject", "fridge")]
+    lows = [
+        LowAction("RotateLeft_90"),
+        LowAction("MoveAhead_25"),
+        LowAction("MoveAhead_25"),
+        LowAction("MoveAhead_25"),
+        LowAction("PutObject", "fridge"),
+    ]
     feats = np.arange(5 * 2, dtype=np.float32).reshape(5, 2)
     tokens, aligned = encode_step(Subgoal("PutObject", ("apple", "fridge")), lows, feats)
-    assert tokens == ["<step>", "PutObject", "apple", "fridge", "<sep>", "RotateLeft_90",
-                      "MoveAhead_25", "x3", "PutObject", "fridge"]
+    assert tokens == [
+        "<step>",
+        "PutObject",
+        "apple",
+        "fridge",
+        "<sep>",
+        "RotateLeft_90",
+        "MoveAhead_25",
+        "x3",
+        "PutObject",
+        "fridge",
+    ]
     assert aligned.shape == (len(tokens), 2)
     assert aligned[6].tolist() == feats[1:4].mean(axis=0).tolist()  # mean of the run
     assert not aligned[7].any() and not aligned[0].any()
     with pytest.raises(SpeakerError, match="one row per low action"):
         encode_step(Subgoal("GotoLocation"), lows, feats[:3])
-    assert encode_goal([Subgoal("GotoLocation", ("mug",)), Subgoal("End")]) == ["<goal>", "GotoLocation", "mug"]
+    assert encode_goal([Subgoal("GotoLocation", ("mug",)), Subgoal("End")]) == [
+        "<goal>",
+        "GotoLocation",
+        "mug",
+    ]
     assert object_type("Apple|+00.1|+00.9|-01.2|AppleSliced_3") == "applesliced"
     assert object_type("Sink|+00.1|+00.9|-01.2|SinkBasin") == "sinkbasin"
 
@@ -208,7 +300,9 @@ def test_traj_without_turk_annotations_raises(tmp_path: Path) -> None:
     with pytest.raises(SpeakerError, match="turk_annotations") as info:
         load_trajectory(path)
     assert str(path) in str(info.value)
-    assert load_trajectory(path, require_annotations=False).annotations == []  # describing needs none
+    assert (
+        load_trajectory(path, require_annotations=False).annotations == []
+    )  # describing needs none
 
 
 def test_missing_file_empty_folder_and_broken_plan(tmp_path: Path) -> None:
@@ -254,8 +348,18 @@ def test_frame_features_on_synthetic_frames(tmp_path: Path) -> None:
 def test_training_loss_goes_down_on_a_real_subset(tmp_path: Path) -> None:
     from luminous_sim.language.speaker.train import train
 
-    report = train(VALID_SEEN, tmp_path / "s.pt", epochs=3, batch_size=32, lr=5e-3, seed=0,
-                   max_trajectories=40, held_out=0.0, dims=TINY, progress=False)
+    report = train(
+        VALID_SEEN,
+        tmp_path / "s.pt",
+        epochs=3,
+        batch_size=32,
+        lr=5e-3,
+        seed=0,
+        max_trajectories=40,
+        held_out=0.0,
+        dims=TINY,
+        progress=False,
+    )
     assert len(report.losses) == 3 and report.epochs_run == 3
     assert report.losses[-1] < report.losses[0] - 0.5
     assert report.examples > 500 and report.vocab_size > 100 and report.seconds > 0
@@ -268,9 +372,20 @@ def test_overfits_eight_real_examples(tmp_path: Path) -> None:
     from luminous_sim.language.speaker.train import prepare_data, train
 
     out = tmp_path / "eight.pt"
-    report = train(VALID_SEEN, out, epochs=60, batch_size=8, lr=1e-2, seed=0, max_examples=8,
-                   max_trajectories=3, held_out=0.0, dims={"emb_dim": 32, "hid_dim": 64, "dropout": 0.0},
-                   min_freq=1, progress=False)
+    report = train(
+        VALID_SEEN,
+        out,
+        epochs=60,
+        batch_size=8,
+        lr=1e-2,
+        seed=0,
+        max_examples=8,
+        max_trajectories=3,
+        held_out=0.0,
+        dims={"emb_dim": 32, "hid_dim": 64, "dropout": 0.0},
+        min_freq=1,
+        progress=False,
+    )
     assert report.examples == 8
     import torch
 
@@ -296,28 +411,42 @@ def test_resume_continues_and_matches_an_uninterrupted_run(synthetic: Path, tmp_
     a, b = (torch.load(tmp_path / f, weights_only=True) for f in ("straight.pt", "resumed.pt"))
     assert b["epoch"] == 3
     assert all(torch.equal(a["model"][k], b["model"][k]) for k in a["model"])
-    assert not [p for p in tmp_path.iterdir() if p.name.endswith(".tmp")]  # atomic writes left nothing
+    assert not [
+        p for p in tmp_path.iterdir() if p.name.endswith(".tmp")
+    ]  # atomic writes left nothing
     with pytest.raises(SpeakerError, match="not found"):
         train(synthetic, tmp_path / "absent.pt", epochs=2, resume=True, progress=False)
 
 
 @needs_torch
-def test_generation_is_deterministic_and_survives_save_load(synthetic: Path, tmp_path: Path) -> None:
+def test_generation_is_deterministic_and_survives_save_load(
+    synthetic: Path, tmp_path: Path
+) -> None:
     from luminous_sim.language.speaker.generate import Speaker
     from luminous_sim.language.speaker.train import train
 
     out = tmp_path / "s.pt"
     train(synthetic, out, epochs=4, batch_size=8, lr=1e-2, held_out=0.0, dims=TINY, progress=False)
-    sub = {"discrete_action": {"action": "GotoLocation", "args": ["fridge"]},
-           "planner_action": {"action": "GotoLocation", "location": "loc|1|1|0|45"}}
+    sub = {
+        "discrete_action": {"action": "GotoLocation", "args": ["fridge"]},
+        "planner_action": {"action": "GotoLocation", "location": "loc|1|1|0|45"},
+    }
     lows = ["RotateLeft_90", "MoveAhead_25", "MoveAhead_25"]
     one, two = Speaker.load(out), Speaker.load(out)
     for width in (1, 3):
         text = one.describe(sub, lows, beam_width=width)
         assert isinstance(text, str) and text
-        assert text == one.describe(sub, lows, beam_width=width) == two.describe(sub, lows, beam_width=width)
-        assert one.describe(Subgoal("GotoLocation", ("fridge",)), [LowAction(a) for a in lows],
-                            beam_width=width) == text
+        assert (
+            text
+            == one.describe(sub, lows, beam_width=width)
+            == two.describe(sub, lows, beam_width=width)
+        )
+        assert (
+            one.describe(
+                Subgoal("GotoLocation", ("fridge",)), [LowAction(a) for a in lows], beam_width=width
+            )
+            == text
+        )
     goal = one.describe_goal([("GotoLocation", ["mug"]), ("PickupObject", ["mug"])])
     assert goal == two.describe_goal([("GotoLocation", ["mug"]), ("PickupObject", ["mug"])])
     traj = next(synthetic.rglob("traj_data.json"))
@@ -338,8 +467,16 @@ def test_features_path_trains_and_describes_with_synthetic_frames(tmp_path: Path
     from luminous_sim.language.speaker.train import train
 
     root = write_dataset(tmp_path / "img", n=6, with_images=True)
-    report = train(root, tmp_path / "f.pt", epochs=2, batch_size=8, held_out=0.0, features=True,
-                   dims=TINY, progress=False)
+    report = train(
+        root,
+        tmp_path / "f.pt",
+        epochs=2,
+        batch_size=8,
+        held_out=0.0,
+        features=True,
+        dims=TINY,
+        progress=False,
+    )
     assert report.losses[-1] < report.losses[0]
     speaker = Speaker.load(tmp_path / "f.pt")
     assert speaker.feat_dim == FEATURE_DIM
@@ -359,27 +496,50 @@ def test_features_path_trains_and_describes_with_synthetic_frames(tmp_path: Path
 
 
 @needs_torch
-def test_cli_train_describe_and_errors(synthetic: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+def test_cli_train_describe_and_errors(
+    synthetic: Path, tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     from luminous_sim.cli import speaker_cmd
 
     parser = argparse.ArgumentParser(prog="luminous")
     speaker_cmd.register(parser.add_subparsers(dest="command", required=True))
     model = tmp_path / "m.pt"
-    args = parser.parse_args(["speaker", "train", "--data", str(synthetic), "--out", str(model),
-                              "--epochs", "2", "--emb-dim", "16", "--hid-dim", "32", "--held-out", "0.2",
-                              "--quiet"])
+    args = parser.parse_args(
+        [
+            "speaker",
+            "train",
+            "--data",
+            str(synthetic),
+            "--out",
+            str(model),
+            "--epochs",
+            "2",
+            "--emb-dim",
+            "16",
+            "--hid-dim",
+            "32",
+            "--held-out",
+            "0.2",
+            "--quiet",
+        ]
+    )
     assert args.func(args) == 0
     report = json.loads(capsys.readouterr().out)
     assert report["epochs"] == 2 and "bleu4_steps" in report and model.is_file()
     traj = next(synthetic.rglob("traj_data.json"))
-    args = parser.parse_args(["speaker", "describe", "--model", str(model), "--traj", str(traj), "--json"])
+    args = parser.parse_args(
+        ["speaker", "describe", "--model", str(model), "--traj", str(traj), "--json"]
+    )
     assert args.func(args) == 0
     described = json.loads(capsys.readouterr().out)
     assert len(described["high_descs"]) == 4 and isinstance(described["task_desc"], str)
-    args = parser.parse_args(["speaker", "evaluate", "--model", str(model), "--data", str(synthetic),
-                              "--beam", "1"])
+    args = parser.parse_args(
+        ["speaker", "evaluate", "--model", str(model), "--data", str(synthetic), "--beam", "1"]
+    )
     assert args.func(args) == 0
     assert json.loads(capsys.readouterr().out)["trajectories"] == 2
-    args = parser.parse_args(["speaker", "describe", "--model", str(tmp_path / "none.pt"), "--traj", str(traj)])
+    args = parser.parse_args(
+        ["speaker", "describe", "--model", str(tmp_path / "none.pt"), "--traj", str(traj)]
+    )
     with pytest.raises(LuminousError, match="none.pt"):
         args.func(args)

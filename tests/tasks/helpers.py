@@ -46,7 +46,9 @@ LIVING: Layout = {
 }
 
 
-def state_of(layout: Layout, changes: dict[str, dict[str, Any]] | None = None, **kwargs: Any) -> WorldState:
+def state_of(
+    layout: Layout, changes: dict[str, dict[str, Any]] | None = None, **kwargs: Any
+) -> WorldState:
     """A state with every object as laid out, some fields changed; `held=` also sets isPickedUp."""
     changes = {k: dict(v) for k, v in (changes or {}).items()}
     held = kwargs.get("held")
@@ -84,7 +86,14 @@ def shell(room_type: str) -> RoomShell:
 def scene_of(layout: Layout, room_type: str = "Kitchen", seed: int = 7) -> Scene:
     """A scene holding the layout's objects (positions are irrelevant to the task layer)."""
     objs = tuple(
-        SceneObject(id=oid, type=kind, asset=f"{kind}_0", position=(0.0, 0.0, 0.0), layer="object", parent=parent)
+        SceneObject(
+            id=oid,
+            type=kind,
+            asset=f"{kind}_0",
+            position=(0.0, 0.0, 0.0),
+            layer="object",
+            parent=parent,
+        )
         for oid, (kind, parent) in layout.items()
     )
     return Scene(room=shell(room_type), seed=seed, generator="test", objects=objs)

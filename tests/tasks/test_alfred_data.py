@@ -6,7 +6,14 @@ import json
 
 import numpy as np
 
-from luminous_sim.tasks import TEMPLATES, PddlParams, TaskInstance, goal_for, params_problems, task_description
+from luminous_sim.tasks import (
+    TEMPLATES,
+    PddlParams,
+    TaskInstance,
+    goal_for,
+    params_problems,
+    task_description,
+)
 
 
 def _trajectories(root):
@@ -21,7 +28,11 @@ def test_every_alfred_task_round_trips_and_meets_our_constraints(shared_alfred):
         assert params.to_json() == traj["pddl_params"], task_dir
         assert params_problems(traj["task_type"], params) == [], task_dir
         ttype, obj, mrecep, last = task_dir.split("-")[:4]
-        assert (ttype, obj, mrecep) == (traj["task_type"], params.object_type, params.mrecep_target or "None")
+        assert (ttype, obj, mrecep) == (
+            traj["task_type"],
+            params.object_type,
+            params.mrecep_target or "None",
+        )
         assert last == (params.parent_target or params.toggle_target)
         task = TaskInstance(ttype, params, goal_for(params, ttype), 0)
         assert task.goal_key in TEMPLATES

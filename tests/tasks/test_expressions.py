@@ -12,7 +12,13 @@ from luminous_sim.tasks.expressions import PREDICATE_FUNCTIONS
 from tests.tasks.helpers import KITCHEN, state_of
 
 K = state_of(KITCHEN)
-NAMES = {"apple": "Apple|1", "fridge": "Fridge|1", "counter": "CounterTop|1", "mug": "Mug|1", "plate": "Plate|1"}
+NAMES = {
+    "apple": "Apple|1",
+    "fridge": "Fridge|1",
+    "counter": "CounterTop|1",
+    "mug": "Mug|1",
+    "plate": "Plate|1",
+}
 
 
 def sat(text: str, state=K, names=NAMES) -> bool:
@@ -35,7 +41,10 @@ def test_every_cdf_predicate_has_an_evaluator():
         ("(exists (?m - Mug) (inReceptacle ?m counter))", True),
         ("(exists (?m - Mug) (inReceptacle ?m fridge))", False),
         ("(forall (?m - Mug) (inReceptacle ?m counter))", False),
-        ("(forall (?m - Mug) (or (inReceptacle ?m counter) (inReceptacle ?m DiningTable_1)))", True),
+        (
+            "(forall (?m - Mug) (or (inReceptacle ?m counter) (inReceptacle ?m DiningTable_1)))",
+            True,
+        ),
         ("(forall (?c - Cabinet) (not (isOpen ?c)))", True),
         ("(forall (?x - Egg) (isHot ?x))", True),  # vacuous: no eggs
         ("(exists (?x - Egg) (isHot ?x))", False),
@@ -66,12 +75,20 @@ def test_state_predicates():
     )
     names = NAMES | {"potato": "Potato|1", "knife": "Knife|1", "mw": "Microwave|1", "mug2": "Mug|2"}
     for text, expected in [
-        ("(isHot apple)", True), ("(isCool apple)", False), ("(isCool potato)", True),
-        ("(isOpen fridge)", True), ("(isDirty mug)", True), ("(isClean mug)", False),
+        ("(isHot apple)", True),
+        ("(isCool apple)", False),
+        ("(isCool potato)", True),
+        ("(isOpen fridge)", True),
+        ("(isDirty mug)", True),
+        ("(isClean mug)", False),
         ("(isClean mug2)", True),  # a dirtyable object that is not dirty is clean
         ("(isClean apple)", False),  # not dirtyable: clean only once washed
-        ("(isFilled mug)", True), ("(isOn mw)", True), ("(isToggled mw)", True), ("(holds knife)", True),
-        ("(holds apple)", False), ("(isSliced apple)", False),
+        ("(isFilled mug)", True),
+        ("(isOn mw)", True),
+        ("(isToggled mw)", True),
+        ("(holds knife)", True),
+        ("(holds apple)", False),
+        ("(isSliced apple)", False),
     ]:
         assert goal_satisfied(parse_expr(text), s, names) is expected, text
 
@@ -83,8 +100,14 @@ def test_bookkeeping_sets_make_hot_cool_clean():
 
 
 def test_parents_go_through_movable_receptacles_only():
-    s = state_of(KITCHEN, {"Plate|1": {"parent": "Fridge|1"}, "Apple|1": {"parent": "Plate|1"},
-                           "Mug|1": {"parent": "Microwave|1"}})
+    s = state_of(
+        KITCHEN,
+        {
+            "Plate|1": {"parent": "Fridge|1"},
+            "Apple|1": {"parent": "Plate|1"},
+            "Mug|1": {"parent": "Microwave|1"},
+        },
+    )
     assert parents(s, "Apple|1") == ["Plate|1", "Fridge|1"]
     assert parents(s, "Mug|1") == ["Microwave|1"]  # the microwave stands on the counter
     assert parents(s, "Microwave|1") == ["CounterTop|1"]

@@ -23,7 +23,13 @@ from luminous_sim.language.speaker.dataset import (
 )
 from luminous_sim.language.speaker.errors import SpeakerError
 from luminous_sim.language.speaker.features import FEATURE_DIM, frame_features, load_step_features
-from luminous_sim.language.speaker.records import Annotation, LowAction, Subgoal, Trajectory, load_trajectory
+from luminous_sim.language.speaker.records import (
+    Annotation,
+    LowAction,
+    Subgoal,
+    Trajectory,
+    load_trajectory,
+)
 from luminous_sim.language.speaker.text import detokenize, tokenize
 from luminous_sim.language.speaker.vocab import Vocab
 
@@ -36,10 +42,32 @@ _LAZY = {
 }
 
 __all__ = [
-    "FEATURE_DIM", "Annotation", "Example", "LowAction", "SpeakerError", "Subgoal", "Trajectory", "Vocab",
-    "build_examples", "corpus_bleu", "detokenize", "encode_goal", "encode_step", "find_trajectory_files",
-    "frame_features", "load_step_features", "load_trajectories", "load_trajectory", "sentence_bleu",
-    "split_trajectories", "tokenize", *_LAZY,
+    "FEATURE_DIM",
+    "Annotation",
+    "EvalReport",
+    "Example",
+    "LowAction",
+    "Speaker",
+    "SpeakerConfig",
+    "SpeakerError",
+    "SpeakerModel",
+    "Subgoal",
+    "TrainReport",
+    "Trajectory",
+    "Vocab",
+    "build_examples",
+    "corpus_bleu",
+    "detokenize",
+    "encode_goal",
+    "encode_step",
+    "find_trajectory_files",
+    "frame_features",
+    "load_step_features",
+    "load_trajectories",
+    "load_trajectory",
+    "sentence_bleu",
+    "split_trajectories",
+    "tokenize",
 ]
 
 
@@ -49,7 +77,9 @@ def __getattr__(name: str) -> Any:
             module = importlib.import_module(f"luminous_sim.language.speaker.{_LAZY[name]}")
         except ModuleNotFoundError as exc:
             if exc.name == "torch":
-                raise SpeakerError("the learned speaker needs PyTorch: pip install torch==2.13.0") from None
+                raise SpeakerError(
+                    "the learned speaker needs PyTorch: pip install torch==2.13.0"
+                ) from None
             raise
         return getattr(module, name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

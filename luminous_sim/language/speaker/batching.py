@@ -39,7 +39,8 @@ def encode_sources(
 ) -> tuple[torch.Tensor, torch.Tensor, torch.Tensor | None]:
     """Pad source token lists (and their aligned features) into ``(src, lengths, features)``.
 
-    A source without features gets zeros when ``feat_dim > 0``; features are dropped when ``feat_dim == 0``.
+    A source without features gets zeros when ``feat_dim > 0``; features are dropped when
+    ``feat_dim == 0``.
     """
     lengths = [max(len(s), 1) for s in sources]
     src = torch.zeros(len(sources), max(lengths), dtype=torch.long)
@@ -60,7 +61,8 @@ def collate(
 ) -> Batch:
     """Pad examples; targets longer than ``max_tgt_len`` words are cut (then ``<eos>``)."""
     src, lengths, feats = encode_sources(
-        [e.src for e in examples], [e.features for e in examples], src_vocab, feat_dim)
+        [e.src for e in examples], [e.features for e in examples], src_vocab, feat_dim
+    )
     words = [tgt_vocab.encode(e.tgt[:max_tgt_len]) for e in examples]
     t = max(len(w) for w in words) + 1
     tgt_in = torch.zeros(len(examples), t, dtype=torch.long)
@@ -78,4 +80,4 @@ def shuffled_batches(
     gen = torch.Generator().manual_seed(seed)
     order = torch.randperm(len(examples), generator=gen).tolist()
     for i in range(0, len(order), batch_size):
-        yield [examples[j] for j in order[i:i + batch_size]]
+        yield [examples[j] for j in order[i : i + batch_size]]

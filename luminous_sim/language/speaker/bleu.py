@@ -9,7 +9,7 @@ from collections.abc import Sequence
 
 def ngrams(tokens: Sequence[str], n: int) -> Counter[tuple[str, ...]]:
     """Counts of the n-grams of ``tokens``."""
-    return Counter(tuple(tokens[i:i + n]) for i in range(len(tokens) - n + 1))
+    return Counter(tuple(tokens[i : i + n]) for i in range(len(tokens) - n + 1))
 
 
 def _closest_ref_length(hyp_len: int, refs: Sequence[Sequence[str]]) -> int:
@@ -69,7 +69,10 @@ def corpus_bleu(
 
 
 def sentence_bleu(
-    hypothesis: Sequence[str], references: Sequence[Sequence[str]], max_n: int = 4, smooth: bool = True
+    hypothesis: Sequence[str],
+    references: Sequence[Sequence[str]],
+    max_n: int = 4,
+    smooth: bool = True,
 ) -> float:
     """BLEU of a single sentence (smoothed by default, since short sentences often lack 4-grams)."""
     return corpus_bleu([hypothesis], [references], max_n=max_n, smooth=smooth)

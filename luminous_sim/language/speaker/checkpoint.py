@@ -1,4 +1,4 @@
-"""Speaker checkpoints: one ``torch.save`` file, written atomically, loaded with ``weights_only``."""
+"""Speaker checkpoints: one ``torch.save`` file, written atomically, read with ``weights_only``."""
 
 from __future__ import annotations
 
@@ -47,7 +47,9 @@ def load_checkpoint(path: str | Path) -> dict[str, Any]:
     try:
         data = torch.load(path, map_location="cpu", weights_only=True)
     except (pickle.UnpicklingError, RuntimeError, EOFError, OSError, ValueError) as exc:
-        raise SpeakerError(f"{path}: not a readable speaker checkpoint ({str(exc).splitlines()[0]})") from None
+        raise SpeakerError(
+            f"{path}: not a readable speaker checkpoint ({str(exc).splitlines()[0]})"
+        ) from None
     if not isinstance(data, dict) or data.get("format") != FORMAT:
         raise SpeakerError(f"{path}: not a speaker checkpoint (expected format {FORMAT!r})")
     missing = [k for k in REQUIRED if k not in data]

@@ -18,7 +18,9 @@ from luminous_sim.language.speaker.records import LowAction, Subgoal, Trajectory
 from luminous_sim.language.speaker.text import tokenize
 
 STEP, GOAL, SEP = "<step>", "<goal>", "<sep>"
-NAV_ACTIONS = frozenset({"MoveAhead_25", "RotateLeft_90", "RotateRight_90", "LookUp_15", "LookDown_15"})
+NAV_ACTIONS = frozenset(
+    {"MoveAhead_25", "RotateLeft_90", "RotateRight_90", "LookUp_15", "LookDown_15"}
+)
 MAX_COUNT = 10
 
 
@@ -73,7 +75,8 @@ def encode_step(
         if features.ndim != 2 or features.shape[0] != len(low_actions):
             raise SpeakerError(
                 f"features must have shape [{len(low_actions)}, D] (one row per low action), "
-                f"got {list(features.shape)}")
+                f"got {list(features.shape)}"
+            )
     rows: list[np.ndarray | None] = [None] * len(tokens)
     i = 0
     while i < len(low_actions):
@@ -95,7 +98,7 @@ def encode_step(
 
 
 def encode_goal(subgoals: Sequence[Subgoal]) -> list[str]:
-    """Source tokens of a whole trajectory: ``<goal>`` then each non-End subgoal's action and names."""
+    """Source tokens of a trajectory: ``<goal>``, then each non-End subgoal's action and names."""
     tokens = [GOAL]
     for sg in subgoals:
         if sg.action != "End":
@@ -140,7 +143,8 @@ def split_trajectories(
     """Seeded split into (train, held-out).
 
     Whole task folders (trials of the same task) are held out together, so no held-out task is
-    trained on; about ``held_out`` of the trajectories (at least one when ``held_out > 0``) are held out.
+    trained on; about ``held_out`` of the trajectories (at least one when ``held_out > 0``) are
+    held out.
     """
     if not 0.0 <= held_out < 1.0:
         raise SpeakerError(f"held_out must be in [0, 1), got {held_out}")
@@ -155,15 +159,17 @@ def split_trajectories(
         if len(held) >= target:
             break
         held.update(groups[name])
-    return ([t for i, t in enumerate(trajectories) if i not in held],
-            [t for i, t in enumerate(trajectories) if i in held])
+    return (
+        [t for i, t in enumerate(trajectories) if i not in held],
+        [t for i, t in enumerate(trajectories) if i in held],
+    )
 
 
 def aligned_descs(traj: Trajectory, high_descs: Sequence[str]) -> list[tuple[int, str]]:
     """(subgoal index, instruction) pairs one annotation supports.
 
-    When an annotation has one instruction fewer than subgoals (ALFRED merged the last two), its last
-    instruction is left out; other mismatches give nothing.
+    When an annotation has one instruction fewer than subgoals (ALFRED merged the last two), its
+    last instruction is left out; other mismatches give nothing.
     """
     n = len(traj.subgoals)
     if len(high_descs) == n:
@@ -173,12 +179,16 @@ def aligned_descs(traj: Trajectory, high_descs: Sequence[str]) -> list[tuple[int
     return []
 
 
-def build_examples(trajectories: Sequence[Trajectory], kinds: Sequence[str] = ("step", "goal")) -> list[Example]:
-    """Examples for every (trajectory, annotation, subgoal) and every (trajectory, annotation) goal."""
+def build_examples(
+    trajectories: Sequence[Trajectory], kinds: Sequence[str] = ("step", "goal")
+) -> list[Example]:
+    """Examples for each (trajectory, annotation, subgoal) and (trajectory, annotation) goal."""
     out: list[Example] = []
     for traj in trajectories:
-        encoded = [encode_step(sg, seg, None if traj.features is None else traj.features[i])
-                   for i, (sg, seg) in enumerate(zip(traj.subgoals, traj.segments))]
+        encoded = [
+            encode_step(sg, seg, None if traj.features is None else traj.features[i])
+            for i, (sg, seg) in enumerate(zip(traj.subgoals, traj.segments))
+        ]
         goal_src = tuple(encode_goal(traj.subgoals))
         for ann in traj.annotations:
             if "step" in kinds:

@@ -73,7 +73,8 @@ def beam_decode(
     for _ in range(max_len):
         k = len(beams)
         logits, state, feed = model.decode_step(
-            prev, state, feed, memory.expand(k, -1, -1), mask.expand(k, -1))
+            prev, state, feed, memory.expand(k, -1, -1), mask.expand(k, -1)
+        )
         total = torch.tensor([s for _, s in beams])[:, None] + _log_probs(logits)
         vocab = total.size(1)
         top = torch.topk(total.flatten(), min(2 * width, total.numel()))

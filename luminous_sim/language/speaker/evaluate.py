@@ -1,4 +1,4 @@
-"""BLEU-4 of a speaker on held-out trajectories, against every annotator's sentence as a reference."""
+"""BLEU-4 of a speaker on held-out trajectories, with every annotator's sentence as a reference."""
 
 from __future__ import annotations
 
@@ -72,8 +72,18 @@ def evaluate(
     scores: dict[str, float] = {}
     samples: list[tuple[str, str, str]] = []
     for kind, items in groups.items():
-        hyps = speaker.generate_tokens([i.src for i in items], [i.features for i in items], beam_width)
+        hyps = speaker.generate_tokens(
+            [i.src for i in items], [i.features for i in items], beam_width
+        )
         scores[kind] = corpus_bleu(hyps, [i.refs for i in items]) if items else 0.0
-        samples += [(kind, " ".join(h), " ".join(i.refs[0])) for h, i in zip(hyps[:n_samples], items)]
-    return EvalReport(scores["step"], scores["goal"], len(groups["step"]), len(groups["goal"]),
-                      beam_width, samples)
+        samples += [
+            (kind, " ".join(h), " ".join(i.refs[0])) for h, i in zip(hyps[:n_samples], items)
+        ]
+    return EvalReport(
+        scores["step"],
+        scores["goal"],
+        len(groups["step"]),
+        len(groups["goal"]),
+        beam_width,
+        samples,
+    )

@@ -1,8 +1,8 @@
 """Per-step visual features: a joint RGB colour histogram of each frame, downsampled to 64x64.
 
 No learned parameters, so features can be computed once and cached; the model learns a projection.
-ALFRED stores frames in ``<trial>/raw_images/`` (``images[]`` in traj_data.json maps each frame to the
-``low_idx`` of its low-level action); a step's feature is the mean over (up to 3 of) its frames.
+ALFRED stores frames in ``<trial>/raw_images/`` (``images[]`` in traj_data.json maps each frame to
+the ``low_idx`` of its low-level action); a step's feature is the mean over (up to 3 of) its frames.
 """
 
 from __future__ import annotations
@@ -25,7 +25,7 @@ def frame_features(frames: np.ndarray) -> np.ndarray:
     """Colour histograms of frames.
 
     Args:
-        frames: ``[N, H, W, 3]`` RGB, uint8 0..255 or float 0..1 (a single ``[H, W, 3]`` frame is allowed).
+        frames: ``[N, H, W, 3]`` RGB, uint8 0..255 or float 0..1 (or one ``[H, W, 3]`` frame).
 
     Returns:
         ``[N, FEATURE_DIM]`` float32, each row summing to 1.

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping, Sequence
 from pathlib import Path
-from typing import Any, Union
+from typing import Any
 
 import numpy as np
 import torch
@@ -20,11 +20,11 @@ from luminous_sim.language.speaker.runtime import torch_threads
 from luminous_sim.language.speaker.text import detokenize
 from luminous_sim.language.speaker.vocab import Vocab
 
-SubgoalLike = Union[Subgoal, Mapping[str, Any], Sequence[Any]]
+SubgoalLike = Subgoal | Mapping[str, Any] | Sequence[Any]
 """A :class:`Subgoal`, an ALFRED ``high_pddl`` entry, or ``(action, [args])``."""
-LowActionLike = Union[LowAction, Mapping[str, Any], str]
+LowActionLike = LowAction | Mapping[str, Any] | str
 """A :class:`LowAction`, an ALFRED ``low_actions`` entry, or a bare action token."""
-FeaturesLike = Union[torch.Tensor, np.ndarray, None]
+FeaturesLike = torch.Tensor | np.ndarray | None
 
 
 def as_subgoal(item: SubgoalLike) -> Subgoal:
@@ -65,7 +65,12 @@ class Speaker:
     """
 
     def __init__(
-        self, model: SpeakerModel, src_vocab: Vocab, tgt_vocab: Vocab, beam_width: int = 3, max_len: int = 40,
+        self,
+        model: SpeakerModel,
+        src_vocab: Vocab,
+        tgt_vocab: Vocab,
+        beam_width: int = 3,
+        max_len: int = 40,
         threads: int = 1,
     ) -> None:
         self.model = model.eval()
@@ -87,9 +92,16 @@ class Speaker:
             model = SpeakerModel(SpeakerConfig.from_dict(dict(data["config"])))
             model.load_state_dict(data["model"])
         except (RuntimeError, TypeError) as exc:
-            raise SpeakerError(f"{path}: checkpoint weights do not fit its config ({exc})") from None
-        return cls(model, Vocab.from_json(data["src_vocab"], f"{path} src_vocab"),
-                   Vocab.from_json(data["tgt_vocab"], f"{path} tgt_vocab"), beam_width, max_len)
+            raise SpeakerError(
+                f"{path}: checkpoint weights do not fit its config ({exc})"
+            ) from None
+        return cls(
+            model,
+            Vocab.from_json(data["src_vocab"], f"{path} src_vocab"),
+            Vocab.from_json(data["tgt_vocab"], f"{path} tgt_vocab"),
+            beam_width,
+            max_len,
+        )
 
     @property
     def feat_dim(self) -> int:
@@ -120,7 +132,9 @@ class Speaker:
             else:
                 ids = []
                 for tokens, feat in zip(sources, feats):
-                    src, lengths, f = encode_sources([tokens], [feat], self.src_vocab, self.feat_dim)
+                    src, lengths, f = encode_sources(
+                        [tokens], [feat], self.src_vocab, self.feat_dim
+                    )
                     ids.append(beam_decode(self.model, src, lengths, f, width, self.max_len))
         return [self.tgt_vocab.decode(row) for row in ids]
 
@@ -128,12 +142,22 @@ class Speaker:
         if features is None:
             return None
         if self.feat_dim == 0:
-            raise SpeakerError("this speaker was trained without visual features; pass features=None")
-        arr = features.detach().cpu().numpy() if isinstance(features, torch.Tensor) else np.asarray(features)
+            raise SpeakerError(
+                "this speaker was trained without visual features; pass features=None"
+            )
+        arr = (
+            features.detach().cpu().numpy()
+            if isinstance(features, torch.Tensor)
+            else np.asarray(features)
+        )
         if arr.ndim != 2 or arr.shape[1] != self.feat_dim:
-            raise SpeakerError(f"features must have shape [T, {self.feat_dim}], got {list(arr.shape)}")
+            raise SpeakerError(
+                f"features must have shape [T, {self.feat_dim}], got {list(arr.shape)}"
+            )
         if arr.shape[0] != n_low:
-            raise SpeakerError(f"features has {arr.shape[0]} rows but there are {n_low} low-level actions")
+            raise SpeakerError(
+                f"features has {arr.shape[0]} rows but there are {n_low} low-level actions"
+            )
         return arr.astype(np.float32)
 
     def describe(
@@ -155,21 +179,28 @@ class Speaker:
             A sentence such as ``"Turn left and walk to the counter."``.
         """
         lows = [as_low_action(a) for a in low_actions]
-        src, feats = encode_step(as_subgoal(subgoal), lows, self._step_features(features, len(lows)))
+        src, feats = encode_step(
+            as_subgoal(subgoal), lows, self._step_features(features, len(lows))
+        )
         return detokenize(self.generate_tokens([src], [feats], beam_width)[0])
 
     def describe_goal(self, subgoals: Sequence[SubgoalLike], beam_width: int | None = None) -> str:
-        """The goal directive for a whole trajectory's subgoal sequence (End entries are skipped)."""
+        """The goal directive for a trajectory's subgoal sequence (End entries are skipped)."""
         src = encode_goal([as_subgoal(s) for s in subgoals])
         return detokenize(self.generate_tokens([src], None, beam_width)[0])
 
     def describe_trajectory(
         self, trajectory: Trajectory | str | Path, beam_width: int | None = None
     ) -> tuple[str, list[str]]:
-        """Goal directive and one instruction per subgoal of a traj_data.json (annotations not needed)."""
-        traj = trajectory if isinstance(trajectory, Trajectory) else load_trajectory(
-            trajectory, features=self.feat_dim > 0, require_annotations=False)
+        """Goal directive and one instruction per subgoal of a traj_data.json."""
+        traj = (
+            trajectory
+            if isinstance(trajectory, Trajectory)
+            else load_trajectory(trajectory, features=self.feat_dim > 0, require_annotations=False)
+        )
         feats = traj.features if (traj.features is not None and self.feat_dim > 0) else None
-        steps = [self.describe(sg, seg, None if feats is None else feats[i], beam_width)
-                 for i, (sg, seg) in enumerate(zip(traj.subgoals, traj.segments))]
+        steps = [
+            self.describe(sg, seg, None if feats is None else feats[i], beam_width)
+            for i, (sg, seg) in enumerate(zip(traj.subgoals, traj.segments))
+        ]
         return self.describe_goal(traj.subgoals, beam_width), steps

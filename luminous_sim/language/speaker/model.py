@@ -1,4 +1,4 @@
-"""The speaker network: token (+ feature) embedding, bidirectional GRU encoder, attention GRU decoder."""
+"""The speaker network: token (+ feature) embeddings, a bidirectional GRU, an attentive decoder."""
 
 from __future__ import annotations
 
@@ -80,14 +80,17 @@ class SpeakerModel(nn.Module):
             features: ``[B, S, feat_dim]`` or None (zeros).
 
         Returns:
-            ``memory [B, S, H]``, ``mask [B, S]`` (True on real tokens), initial decoder state ``[B, H]``.
+            ``memory [B, S, H]``, ``mask [B, S]`` (True on real tokens), initial decoder state
+            ``[B, H]``.
         """
         x = self.src_emb(src)
         if self.feat_proj is not None and features is not None:
             x = x + self.feat_proj(features)
         x = self.drop(x)
         packed = pack_padded_sequence(x, lengths.cpu(), batch_first=True, enforce_sorted=False)
-        out, _ = pad_packed_sequence(self.encoder(packed)[0], batch_first=True, total_length=src.size(1))
+        out, _ = pad_packed_sequence(
+            self.encoder(packed)[0], batch_first=True, total_length=src.size(1)
+        )
         mask = torch.arange(src.size(1))[None, :] < lengths[:, None]
         pooled = (out * mask[..., None]).sum(1) / lengths[:, None].clamp(min=1).to(out.dtype)
         return self.memory_proj(out), mask, torch.tanh(self.init_h(pooled))

@@ -1,4 +1,4 @@
-"""One ALFRED traj_data.json as the speaker sees it: subgoals, their low-level actions, annotations."""
+"""One ALFRED traj_data.json as the speaker sees it: subgoals, low-level actions, annotations."""
 
 from __future__ import annotations
 
@@ -35,17 +35,23 @@ class Subgoal:
 
     @classmethod
     def from_alfred(cls, entry: dict[str, Any]) -> Subgoal:
-        """From a ``plan.high_pddl[i]`` entry (``planner_action.action``, ``discrete_action.args``)."""
+        """From a ``plan.high_pddl[i]`` entry (``planner_action.action``, ``discrete_action.args``).
+
+        Raises:
+            KeyError, TypeError: The entry lacks these fields.
+        """
         action = entry["planner_action"]["action"]
         args = entry.get("discrete_action", {}).get("args", [])
         if not isinstance(action, str) or not isinstance(args, list):
-            raise TypeError("planner_action.action must be a string and discrete_action.args a list")
+            raise TypeError(
+                "planner_action.action must be a string and discrete_action.args a list"
+            )
         return cls(action, tuple(str(a).lower() for a in args))
 
 
 @dataclass(frozen=True)
 class LowAction:
-    """A low-level action token (``MoveAhead_25``, ``PutObject``...) and its target's type, if any."""
+    """A low-level action token (``MoveAhead_25``, ``PutObject``...) and its target's type."""
 
     action: str
     target: str | None = None
@@ -58,7 +64,9 @@ class LowAction:
         target_id = api.get("receptacleObjectId") or api.get("objectId")
         if not isinstance(action, str):
             raise TypeError("discrete_action.action must be a string")
-        return cls(action, object_type(target_id) if isinstance(target_id, str) and target_id else None)
+        return cls(
+            action, object_type(target_id) if isinstance(target_id, str) and target_id else None
+        )
 
 
 @dataclass(frozen=True)
@@ -79,7 +87,7 @@ class Trajectory:
         task_type: One of the 7 task types ("" when absent).
         subgoals: Non-End subgoals, in order.
         segments: Low-level actions of each subgoal (same length as ``subgoals``).
-        annotations: Human annotations (may be empty only when loaded with ``require_annotations=False``).
+        annotations: Human annotations (empty only if loaded with ``require_annotations=False``).
         features: Per-subgoal ``[T_i, D]`` visual features, or None when frames were not loaded.
     """
 
@@ -118,17 +126,30 @@ def _annotations(data: dict[str, Any], path: Path) -> list[Annotation]:
     anns = data.get("turk_annotations", {})
     anns = anns.get("anns") if isinstance(anns, dict) else None
     if not isinstance(anns, list):
-        raise SpeakerError(f"{path}: no turk_annotations.anns (the speaker trains on human annotations)")
+        raise SpeakerError(
+            f"{path}: no turk_annotations.anns (the speaker trains on human annotations)"
+        )
     out = []
     for i, ann in enumerate(anns):
-        desc, highs = (ann.get("task_desc"), ann.get("high_descs")) if isinstance(ann, dict) else (0, 0)
-        if not isinstance(desc, str) or not isinstance(highs, list) or not all(isinstance(h, str) for h in highs):
-            raise SpeakerError(f"{path}: turk_annotations.anns[{i}] needs task_desc (str) and high_descs (list of str)")
+        desc, highs = (
+            (ann.get("task_desc"), ann.get("high_descs")) if isinstance(ann, dict) else (0, 0)
+        )
+        if (
+            not isinstance(desc, str)
+            or not isinstance(highs, list)
+            or not all(isinstance(h, str) for h in highs)
+        ):
+            raise SpeakerError(
+                f"{path}: turk_annotations.anns[{i}] needs task_desc (str) and "
+                "high_descs (list of str)"
+            )
         out.append(Annotation(desc, tuple(highs)))
     return out
 
 
-def parse_trajectory(data: dict[str, Any], path: Path, require_annotations: bool = True) -> Trajectory:
+def parse_trajectory(
+    data: dict[str, Any], path: Path, require_annotations: bool = True
+) -> Trajectory:
     """Build a :class:`Trajectory` from a loaded traj_data.json object.
 
     Args:
@@ -145,30 +166,44 @@ def parse_trajectory(data: dict[str, Any], path: Path, require_annotations: bool
         subgoals = [Subgoal.from_alfred(h) for h in high]
         lows = [(int(a["high_idx"]), LowAction.from_alfred(a)) for a in low]
     except (KeyError, TypeError, ValueError, AttributeError) as exc:
-        raise SpeakerError(f"{path}: malformed or missing plan.high_pddl/plan.low_actions ({exc!r})") from None
+        raise SpeakerError(
+            f"{path}: malformed or missing plan.high_pddl/plan.low_actions ({exc!r})"
+        ) from None
     subgoals = [s for s in subgoals if s.action != "End"]
     segments: list[list[LowAction]] = [[] for _ in subgoals]
     indices: list[list[int]] = [[] for _ in subgoals]
     for low_idx, (high_idx, action) in enumerate(lows):
         if not 0 <= high_idx < len(subgoals):
-            raise SpeakerError(f"{path}: low action high_idx {high_idx} outside 0..{len(subgoals) - 1}")
+            raise SpeakerError(
+                f"{path}: low action high_idx {high_idx} outside 0..{len(subgoals) - 1}"
+            )
         segments[high_idx].append(action)
         indices[high_idx].append(low_idx)
     anns = _annotations(data, path) if require_annotations or "turk_annotations" in data else []
-    return Trajectory(path, str(data.get("task_id", path.parent.name)), str(data.get("task_type", "")),
-                      subgoals, segments, anns, low_indices=indices)
+    return Trajectory(
+        path,
+        str(data.get("task_id", path.parent.name)),
+        str(data.get("task_type", "")),
+        subgoals,
+        segments,
+        anns,
+        low_indices=indices,
+    )
 
 
-def load_trajectory(path: str | Path, features: bool = False, require_annotations: bool = True) -> Trajectory:
+def load_trajectory(
+    path: str | Path, features: bool = False, require_annotations: bool = True
+) -> Trajectory:
     """Read one traj_data.json.
 
     Args:
         path: The file.
-        features: Also compute per-step visual features from ``raw_images/`` beside it (when present).
+        features: Also compute per-step visual features from ``raw_images/`` beside it, if any.
         require_annotations: Raise when the file has no ``turk_annotations``.
 
     Raises:
-        SpeakerError: The file is missing, not JSON, or lacks a required field; the message names it.
+        SpeakerError: The file is missing, not JSON, or lacks a required field (the message names
+            the file).
     """
     path = Path(path)
     data = _read_json(path)

@@ -25,10 +25,13 @@ def torch_threads(n: int = 1) -> Iterator[None]:
 
 
 @contextmanager
-def deterministic(seed: int, rng_state: torch.Tensor | None = None, threads: int = 1) -> Iterator[None]:
-    """Seeded (or ``rng_state``-restored), deterministic torch with ``threads`` threads inside the block.
+def deterministic(
+    seed: int, rng_state: torch.Tensor | None = None, threads: int = 1
+) -> Iterator[None]:
+    """Seeded (or ``rng_state``-restored), deterministic, ``threads``-threaded torch in the block.
 
-    The global RNG state, the deterministic-algorithms flag and the thread count are restored after it.
+    The global RNG state, the deterministic-algorithms flag and the thread count are restored
+    after it.
     """
     previous = torch.are_deterministic_algorithms_enabled()
     with torch.random.fork_rng(devices=[]), torch_threads(threads):

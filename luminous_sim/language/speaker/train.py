@@ -1,4 +1,4 @@
-"""Training the speaker: data split, vocabularies, teacher-forced epochs, atomic resumable checkpoints."""
+"""Training the speaker: data split, vocabularies, teacher-forced epochs, resumable checkpoints."""
 
 from __future__ import annotations
 
@@ -15,7 +15,12 @@ from torch import nn
 
 from luminous_sim.language.speaker.batching import collate, shuffled_batches
 from luminous_sim.language.speaker.checkpoint import load_checkpoint, save_checkpoint
-from luminous_sim.language.speaker.dataset import Example, build_examples, load_trajectories, split_trajectories
+from luminous_sim.language.speaker.dataset import (
+    Example,
+    build_examples,
+    load_trajectories,
+    split_trajectories,
+)
 from luminous_sim.language.speaker.errors import SpeakerError
 from luminous_sim.language.speaker.evaluate import EvalReport, evaluate
 from luminous_sim.language.speaker.features import FEATURE_DIM
@@ -34,13 +39,14 @@ class TrainReport:
     """What a training call did.
 
     Attributes:
-        losses: Mean per-token training loss of every epoch so far (a resumed run includes the earlier ones).
+        losses: Mean per-token training loss of every epoch so far (a resumed run includes the
+            earlier ones).
         examples: Training examples (step + goal).
         vocab_size: Word (target) vocabulary size.
         seconds: Wall time of this call.
         epochs_run: Epochs run by this call.
         held_out: Trajectories held out from training.
-        evaluation: BLEU on the held-out trajectories, when any were held out and ``eval_beam`` is set.
+        evaluation: BLEU on the held-out trajectories (when there are any and ``eval_beam`` is set).
     """
 
     losses: list[float]
@@ -56,11 +62,15 @@ def prepare_data(
     data_dir: str | Path, args: dict[str, Any]
 ) -> tuple[list[Example], list[Trajectory]]:
     """Load, split by trajectory and subsample: (training examples, held-out trajectories)."""
-    trajs = load_trajectories(data_dir, features=args["features"], max_trajectories=args["max_trajectories"])
+    trajs = load_trajectories(
+        data_dir, features=args["features"], max_trajectories=args["max_trajectories"]
+    )
     train_trajs, held = split_trajectories(trajs, args["held_out"], args["seed"])
     examples = build_examples(train_trajs)
     if args["max_examples"] is not None and len(examples) > args["max_examples"]:
-        keep = sorted(random.Random(args["seed"]).sample(range(len(examples)), args["max_examples"]))
+        keep = sorted(
+            random.Random(args["seed"]).sample(range(len(examples)), args["max_examples"])
+        )
         examples = [examples[i] for i in keep]
     if not examples:
         raise SpeakerError(f"{data_dir}: no annotated training examples")
@@ -68,8 +78,13 @@ def prepare_data(
 
 
 def _epoch(
-    model: SpeakerModel, opt: torch.optim.Optimizer, examples: Sequence[Example], src: Vocab, tgt: Vocab,
-    args: dict[str, Any], epoch: int,
+    model: SpeakerModel,
+    opt: torch.optim.Optimizer,
+    examples: Sequence[Example],
+    src: Vocab,
+    tgt: Vocab,
+    args: dict[str, Any],
+    epoch: int,
 ) -> float:
     model.train()
     loss_fn = nn.CrossEntropyLoss(ignore_index=Vocab.pad_id, reduction="sum")
@@ -142,11 +157,25 @@ def train(
         args = dict(ckpt["train_args"])
     else:
         ckpt = None
-        args = {"seed": seed, "held_out": held_out, "max_examples": max_examples, "batch_size": batch_size,
-                "max_trajectories": max_trajectories, "features": features, "min_freq": min_freq,
-                "lr": lr, "max_tgt_len": max_tgt_len, "data_dir": str(data_dir)}
+        args = {
+            "seed": seed,
+            "held_out": held_out,
+            "max_examples": max_examples,
+            "batch_size": batch_size,
+            "max_trajectories": max_trajectories,
+            "features": features,
+            "min_freq": min_freq,
+            "lr": lr,
+            "max_tgt_len": max_tgt_len,
+            "data_dir": str(data_dir),
+        }
+    unknown = set(dims or {}) - set(DEFAULT_DIMS)
+    if unknown:
+        raise SpeakerError(f"unknown model dims {sorted(unknown)}; known: {sorted(DEFAULT_DIMS)}")
     if epochs < 1 or args["batch_size"] < 1:
-        raise SpeakerError(f"epochs and batch_size must be >= 1 (got {epochs}, {args['batch_size']})")
+        raise SpeakerError(
+            f"epochs and batch_size must be >= 1 (got {epochs}, {args['batch_size']})"
+        )
     examples, held = prepare_data(data_dir, args)
     if ckpt is not None:
         src = Vocab.from_json(ckpt["src_vocab"], f"{out_path} src_vocab")
@@ -157,8 +186,13 @@ def train(
         tgt = Vocab.build([e.tgt for e in examples], min_freq=args["min_freq"])
         feat_dim = FEATURE_DIM if any(e.features is not None for e in examples) else 0
         if features and not feat_dim and progress:
-            print("speaker: no raw_images/ frames found; training without visual features", file=sys.stderr)
-        config = SpeakerConfig(len(src), len(tgt), feat_dim=feat_dim, **{**DEFAULT_DIMS, **(dims or {})})
+            print(
+                "speaker: no raw_images/ frames found; training without visual features",
+                file=sys.stderr,
+            )
+        config = SpeakerConfig(
+            len(src), len(tgt), feat_dim=feat_dim, **{**DEFAULT_DIMS, **(dims or {})}
+        )
     losses: list[float] = list(ckpt["losses"]) if ckpt else []
     first = int(ckpt["epoch"]) if ckpt else 0
     with deterministic(args["seed"], ckpt.get("rng") if ckpt else None):
@@ -170,18 +204,41 @@ def train(
         for epoch in range(first, epochs):
             tic = time.perf_counter()
             losses.append(_epoch(model, opt, examples, src, tgt, args, epoch))
-            save_checkpoint(out_path, {
-                "config": config.to_dict(), "model": model.state_dict(), "optimizer": opt.state_dict(),
-                "src_vocab": src.to_json(), "tgt_vocab": tgt.to_json(), "epoch": epoch + 1,
-                "losses": losses, "train_args": args, "rng": torch.get_rng_state(),
-                "held_out_keys": [t.key for t in held]})
+            save_checkpoint(
+                out_path,
+                {
+                    "config": config.to_dict(),
+                    "model": model.state_dict(),
+                    "optimizer": opt.state_dict(),
+                    "src_vocab": src.to_json(),
+                    "tgt_vocab": tgt.to_json(),
+                    "epoch": epoch + 1,
+                    "losses": losses,
+                    "train_args": args,
+                    "rng": torch.get_rng_state(),
+                    "held_out_keys": [t.key for t in held],
+                },
+            )
             if progress:
-                print(f"speaker: epoch {epoch + 1}/{epochs} loss {losses[-1]:.4f} "
-                      f"({time.perf_counter() - tic:.1f} s)", file=sys.stderr)
+                print(
+                    f"speaker: epoch {epoch + 1}/{epochs} loss {losses[-1]:.4f} "
+                    f"({time.perf_counter() - tic:.1f} s)",
+                    file=sys.stderr,
+                )
     evaluation = None
     if held and eval_beam is not None:
         if progress:
-            print(f"speaker: scoring {len(held)} held-out trajectories (beam {eval_beam})", file=sys.stderr)
+            print(
+                f"speaker: scoring {len(held)} held-out trajectories (beam {eval_beam})",
+                file=sys.stderr,
+            )
         evaluation = evaluate(Speaker(model, src, tgt), held, beam_width=eval_beam)
-    return TrainReport(losses, len(examples), len(tgt), time.perf_counter() - start,
-                       max(epochs - first, 0), len(held), evaluation)
+    return TrainReport(
+        losses,
+        len(examples),
+        len(tgt),
+        time.perf_counter() - start,
+        max(epochs - first, 0),
+        len(held),
+        evaluation,
+    )

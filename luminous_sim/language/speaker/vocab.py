@@ -45,7 +45,9 @@ class Vocab:
             A vocabulary ordered by descending frequency, ties alphabetical (deterministic).
         """
         counts = Counter(tok for seq in sequences for tok in seq)
-        kept = sorted((t for t, c in counts.items() if c >= min_freq), key=lambda t: (-counts[t], t))
+        kept = sorted(
+            (t for t, c in counts.items() if c >= min_freq), key=lambda t: (-counts[t], t)
+        )
         return cls(kept)
 
     def __len__(self) -> int:
@@ -62,7 +64,7 @@ class Vocab:
         return [self.stoi.get(t, self.unk_id) for t in tokens]
 
     def decode(self, ids: Iterable[int], strip: bool = True) -> list[str]:
-        """Map ids to tokens, stopping at ``<eos>`` and dropping ``<pad>``/``<bos>`` when ``strip``."""
+        """Map ids to tokens; with ``strip``, stop at ``<eos>`` and drop ``<pad>`` and ``<bos>``."""
         out = []
         for i in ids:
             tok = self.itos[int(i)]
@@ -81,10 +83,12 @@ class Vocab:
     def from_json(cls, items: list[str], source: str = "vocabulary") -> Vocab:
         """Rebuild from :meth:`to_json` output; ``source`` names it in errors."""
         if not isinstance(items, list) or list(items[: len(SPECIALS)]) != list(SPECIALS):
-            raise SpeakerError(f"{source}: not a speaker vocabulary (must start with {list(SPECIALS)})")
+            raise SpeakerError(
+                f"{source}: not a speaker vocabulary (must start with {list(SPECIALS)})"
+            )
         if not all(isinstance(t, str) for t in items) or len(set(items)) != len(items):
             raise SpeakerError(f"{source}: vocabulary tokens must be unique strings")
-        return cls(items[len(SPECIALS):])
+        return cls(items[len(SPECIALS) :])
 
     def save(self, path: str | Path) -> None:
         """Write the vocabulary as a JSON list."""

@@ -19,7 +19,7 @@ from collections.abc import Mapping
 
 from luminous_sim.cdf.predicates import And, Atom, Exists, Expr, ForAll, Not, Or, Param, is_variable
 from luminous_sim.planning.symbolic.relevance import devices_of
-from luminous_sim.planning.symbolic.semantics import anchor, atom_true, resolve
+from luminous_sim.planning.symbolic.semantics import anchor, atom_true, constants, resolve, signature
 from luminous_sim.states import WorldState
 from luminous_sim.states.tables import FILLABLE, GATING_OPENABLE, SLICING_TOOLS
 from luminous_sim.vocab import SLICED_TYPES, abilities, can_contain
@@ -53,6 +53,11 @@ class Estimator:
         self.names = dict(names)
         self.movable_types = movable_types
         self.reasons: list[str] = []
+        self.named = frozenset(names.get(c, c) for c in constants(goal))
+
+    def is_named(self, oid: str) -> bool:
+        """Whether the goal names the object (or the whole it was sliced from)."""
+        return oid in self.named or oid.rsplit("|", 1)[0] in self.named
 
     def __call__(self, state: WorldState, at: str | None) -> float:
         """The estimated cost from this state; infinite when the goal can no longer be reached."""
@@ -71,6 +76,8 @@ class _Node:
         self._anchor: dict[str, str] = {}
         self._reach: dict[str, float] = {}
         self._devices: dict[str, tuple[str, ...]] | None = None
+        self.stand_ins: frozenset[str] = frozenset()
+        self._literal: dict[tuple[str, tuple[str, ...], bool], float] = {}
 
     # -- formula ------------------------------------------------------------------------------
 
@@ -91,8 +98,11 @@ class _Node:
             return min((self.cost(a, env) for a in e.args), default=INF)
         if isinstance(e, Exists):
             best = INF
-            for b, extra in self._bindings(e.params, env, proxies=True, body=e.body):
+            for b, extra, stand_ins in self._bindings(e.params, env, proxies=True, body=e.body):
+                saved = self.stand_ins
+                self.stand_ins = saved | stand_ins
                 best = min(best, extra + self.cost(e.body, b))
+                self.stand_ins = saved
                 if best == 0:
                     break
             if best == INF and not self.est.reasons:
@@ -101,7 +111,7 @@ class _Node:
             return best
         if isinstance(e, ForAll):
             total = 0.0
-            for b, _ in self._bindings(e.params, env, proxies=False, body=e.body):
+            for b, _, _ in self._bindings(e.params, env, proxies=False, body=e.body):
                 total += self.cost(e.body, b)
                 if total == INF:
                     break
@@ -121,19 +131,44 @@ class _Node:
             out += [(k, 1.0) for k in self.s.of_type(parent) if not self.s[k].isSliced]
         return out
 
+    def _distinct(self, dom: list[tuple[str, float]], keep: int) -> list[tuple[str, float]]:
+        """At most `keep` of each set of interchangeable objects (an `exists` needs no more)."""
+        seen: dict[tuple, int] = {}
+        out = []
+        for oid, proxy in dom:
+            if not self.est.is_named(oid):
+                sig = (signature(self.s, oid), proxy)
+                if seen.get(sig, 0) >= keep:
+                    continue
+                seen[sig] = seen.get(sig, 0) + 1
+            out.append((oid, proxy))
+        return out
+
     def _bindings(self, params: tuple[Param, ...], env: dict[str, str], proxies: bool, body: Expr):
         doms = [self._domain(p, proxies) for p in params]
+        if proxies:  # an exists: interchangeable objects give the same cost
+            doms = [self._distinct(d, len(params)) for d in doms]
         for combo in itertools.product(*doms):
             b = {**env, **{p.var: oid for p, (oid, _) in zip(params, combo)}}
             extra = 0.0
+            stand_ins = frozenset(oid for oid, is_proxy in combo if is_proxy)
             for p, (oid, is_proxy) in zip(params, combo):
                 if is_proxy and not _mentions_sliced(body, p.var):
                     extra += self.slice_cost(oid)
-            yield b, extra
+            yield b, extra, stand_ins
 
     # -- literals -----------------------------------------------------------------------------
 
     def literal(self, pred: str, ids: tuple[str, ...], positive: bool) -> float:
+        if pred == "=" and not positive and ids[0] == ids[1] and ids[0] in self.stand_ins:
+            return 0.0  # one whole stands for several slices to come
+        key = (pred, ids, positive)
+        c = self._literal.get(key)
+        if c is None:
+            c = self._literal[key] = self._literal_cost(pred, ids, positive)
+        return c
+
+    def _literal_cost(self, pred: str, ids: tuple[str, ...], positive: bool) -> float:
         if any(i not in self.s for i in ids):
             return INF if positive else 0.0
         true = atom_true(self.s, self.at, pred, ids)

@@ -18,7 +18,7 @@ from dataclasses import dataclass
 from luminous_sim.planning.symbolic.actions import COSTS, HighLevelAction, act, goto
 from luminous_sim.planning.symbolic.macros import try_action
 from luminous_sim.planning.symbolic.relevance import Relevance
-from luminous_sim.planning.symbolic.semantics import anchor
+from luminous_sim.planning.symbolic.semantics import anchor, signature
 from luminous_sim.states import WorldState, enclosing_closed
 from luminous_sim.states.tables import SLICING_TOOLS
 from luminous_sim.vocab import abilities, can_contain
@@ -44,21 +44,13 @@ class SearchResult:
     exhausted: bool
 
 
-def _signature(state: WorldState, oid: str) -> tuple:
-    obj = state[oid]
-    contents = tuple(sorted(state[c].object_type for c in state.contents(oid)))
-    books = tuple(oid in getattr(state, k) for k in ("heated", "cooled", "cleaned"))
-    return (obj.object_type, obj.parent, obj.isOpen, obj.isToggled, obj.isDirty, obj.isSliced,
-            obj.temperature, obj.isCooked, obj.isFilledWithLiquid, contents, books)
-
-
 def _distinct(state: WorldState, ids: list[str], named: frozenset[str]) -> list[str]:
     """The ids with interchangeable objects reduced to their first."""
     seen: set[tuple] = set()
     out = []
     for oid in ids:
         if oid not in named:
-            sig = _signature(state, oid)
+            sig = signature(state, oid)
             if sig in seen:
                 continue
             seen.add(sig)

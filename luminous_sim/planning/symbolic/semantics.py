@@ -43,6 +43,15 @@ def anchor(state: WorldState, object_id: str) -> str:
     return chain[-1]
 
 
+def signature(state: WorldState, object_id: str) -> tuple:
+    """What makes objects interchangeable: type, every state field, container and contents, bookkeeping."""
+    obj = state[object_id]
+    contents = tuple(sorted(state[c].object_type for c in state.contents(object_id)))
+    books = tuple(object_id in getattr(state, k) for k in ("heated", "cooled", "cleaned"))
+    return (obj.object_type, obj.parent, obj.isOpen, obj.isToggled, obj.isDirty, obj.isSliced,
+            obj.temperature, obj.isCooked, obj.isFilledWithLiquid, obj.isPickedUp, contents, books)
+
+
 def resolve(name: str, state: WorldState, names: Mapping[str, str]) -> list[str]:
     """The ids a goal constant stands for: its object, or the slices of an object that was sliced.
 

@@ -24,7 +24,7 @@ from luminous_sim.states import WorldState
 from luminous_sim.tasks.types import closed_receptacles_goal
 from luminous_sim.vocab import abilities
 
-BACKENDS: tuple[str, ...] = ("astar", "fd", "pyperplan")
+BACKENDS: tuple[str, ...] = ("astar", "fd", "up")
 """Solvers `solve` can use; "astar" needs nothing beyond the project's dependencies."""
 
 
