@@ -33,7 +33,7 @@ def _metres(steps: int) -> str:
     m = steps * 0.25
     if m <= 0.5:
         return "a step" if m <= 0.25 else "a couple of steps"
-    if m < 1.25:
+    if m < 1.5:
         return "about a metre"
     return f"about {round(m)} metres"
 

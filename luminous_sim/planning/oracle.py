@@ -23,6 +23,30 @@ MAX_REPLANS = 3
 class ExecutionError(PlanningError):
     """A low-level action failed while executing the plan (the oracle replans)."""
 
+    def __init__(self, message: str, unreachable: str | None = None):
+        super().__init__(message)
+        self.unreachable = unreachable
+        """An object no pose can see: the next plan must do without it."""
+
+
+def without(state, excluded: set[str]):
+    """The state with objects the agent cannot get at (and nothing resting on them) left out."""
+    if not excluded:
+        return state
+    keep = {k: v for k, v in state.objects.items()
+            if k not in excluded and not any(a in excluded for a in _ancestors(state, k))}
+    if state.held in excluded:
+        return state
+    return state.replace(objects=keep)
+
+
+def _ancestors(state, oid: str) -> list[str]:
+    out, p = [], state.objects[oid].parent
+    while p is not None and p in state.objects:
+        out.append(p)
+        p = state.objects[p].parent
+    return out
+
 
 class Oracle:
     """Runs goals in one World and records what it did."""
@@ -41,10 +65,11 @@ class Oracle:
 
         traj = Trajectory(init_action=self.world.agent.to_alfred())
         self._frame(traj, high_idx=0, low_idx=0)
+        excluded: set[str] = set()
         for attempt in range(self.max_replans + 1):
             t0 = time.perf_counter()
             try:
-                plan = solve(self.world.interactions.state, goal, names=names)
+                plan = solve(without(self.world.interactions.state, excluded), goal, names=names)
             except PlanningError as exc:
                 traj.failure = str(exc)
                 break
@@ -57,6 +82,8 @@ class Oracle:
             except ExecutionError as exc:
                 traj.replans = attempt + 1
                 traj.failure = str(exc)
+                if exc.unreachable:
+                    excluded.add(exc.unreachable)
         traj.high_pddl.append({"discrete_action": {"action": "NoOp", "args": []}, "high_idx": len(traj.high_pddl),
                                "planner_action": {"action": "End", "value": 1}})
         return traj
@@ -102,7 +129,7 @@ class Oracle:
     def _goto(self, object_id: str, high_idx: int, traj: Trajectory):
         pose = find_interaction_pose(self.world, self._pose_target(object_id))
         if pose is None:
-            raise ExecutionError(f"no pose from which {object_id} is visible within reach")
+            raise ExecutionError(f"no pose from which {object_id} is visible within reach", unreachable=object_id)
         try:
             steps = goto_actions(self.graph, self.world.agent, pose)
         except Exception as exc:  # networkx.NetworkXNoPath

@@ -81,7 +81,9 @@ def params_from_goal(cdf: ChallengeDefinition, goal: Expr) -> PddlParams:
             what = parent_type(types[0])
             # the movable receptacle's place, or (without one) the object's place
             mrecep = slots.get("mrecep_target")
-            if types[0] == mrecep or (not mrecep and slots.setdefault("object_target", what) == what):
+            if types[0] == mrecep or (
+                not mrecep and slots.setdefault("object_target", what) == what
+            ):
                 slots.setdefault("parent_target", types[1])
         elif atom.pred in ("holds", "isHot", "isCool", "isClean", "isSliced"):
             slots.setdefault("object_target", parent_type(types[0]))

@@ -175,13 +175,8 @@ def goal_for(params: PddlParams, task_type: str, closed_receptacles: bool = Fals
     if missing:
         raise TaskError(f"{task_type} needs {', '.join(missing)}; got {params.to_json()}")
     variables, body = info.build(params)
-    if params.object_sliced:
-        body = [
-            *body,
-            Atom("isSliced", ("?o1" if info.name == "pick_two_obj_and_place" else "?o",)),
-        ]
-        if info.name == "pick_two_obj_and_place":
-            body.append(Atom("isSliced", ("?o2",)))
+    if params.object_sliced:  # sliceable(o) and isSliced(o) for each object variable
+        body += [Atom("isSliced", (v.var,)) for v in variables if v.type == params.object_type]
     goal: Expr = Exists(variables, And(tuple(body)))
     if closed_receptacles:
         goal = And((goal, closed_receptacles_goal()))

@@ -22,6 +22,8 @@ if TYPE_CHECKING:
 
 HAND_AHEAD, HAND_DROP = 0.45, 0.35
 SETTLE_AFTER = frozenset({"PutObject", "SliceObject"})
+MOVABLE = frozenset({"Bowl", "Box", "Cup", "Mug", "Pan", "Plate", "Pot", "SinkBasin", "BathtubBasin"})
+"""Receptacles where things may pile up or rest across the rim when they do not fit side by side."""
 """Actions after which physics must run (things were placed); joints and holding are kinematic."""
 """Where a held object floats: ahead of and below the camera, as AI2-THOR shows it."""
 
@@ -246,20 +248,24 @@ class Interactions:
                  if not (s.name and _needs_open(loaded_r.entry, s.name) and not joints_open)]
         if not spots:
             return f"{receptacle} has no place to put things"
-        occupied = []
-        for other in self.state.contents(receptacle):
-            b = self.world.built.objects[other].body
-            lo, hi = self.world.client.getAABB(b, -1)
-            from shapely.geometry import box as sbox
+        from shapely.geometry import box as sbox
 
-            occupied.append(sbox(lo[0], lo[1], hi[0], hi[1]))
+        boxes = []
+        for other in self.state.contents(receptacle):
+            lo, hi = self.world.client.getAABB(self.world.built.objects[other].body, -1)
+            boxes.append((lo, hi))
         order = list(range(len(spots)))
         self.rng.shuffle(order)
         for i in order:
             spot = spots[i]
             if entry.dims[2] > spot.clearance + 1e-6:
                 continue
+            top = spot.floor_z + spot.clearance
+            occupied = [sbox(lo[0], lo[1], hi[0], hi[1]) for lo, hi in boxes  # only what is on this shelf
+                        if lo[2] < top and hi[2] > spot.floor_z - 0.01]
             got = sample_in_region(entry, spot, self.rng, occupied, tries=25)
+            if got is None and self.type_of(receptacle) in MOVABLE:
+                got = self._stack_pose(entry, spot, boxes)
             if got is None:
                 continue
             x, y, z, yaw, _ = got
@@ -272,6 +278,32 @@ class Interactions:
                 self._set_held_physics(o, False)
             return None
         return f"{receptacle} is full: no free, stable spot for {oid}"
+
+    def _stack_pose(self, entry, spot, boxes) -> tuple | None:
+        """A bowl, plate, mug or pan takes more than fits side by side: the next thing goes on top of
+        what is there, or across the rim when it is longer than the vessel is wide (a knife in a mug)."""
+        x, y = spot.center
+        tops = [hi[2] for lo, hi in boxes if lo[0] < x < hi[0] and lo[1] < y < hi[1]]
+        z_base = max(tops) if tops else spot.floor_z
+        if entry.dims[0] > spot.size[0] or entry.dims[1] > spot.size[1]:
+            z_base = max(z_base, spot.floor_z + min(spot.clearance, 0.12))  # across the opening
+        if z_base + entry.dims[2] > spot.floor_z + spot.clearance + 0.25:
+            return None
+        lo, hi = np.array(entry.bbox_min[:2]), np.array(entry.bbox_max[:2])
+        centre = (lo + hi) / 2
+        c, s_ = math.cos(spot.yaw), math.sin(spot.yaw)
+        ox = x - (centre[0] * c - centre[1] * s_)
+        oy = y - (centre[0] * s_ + centre[1] * c)
+        return ox, oy, z_base - entry.bbox_min[2] + 0.003, spot.yaw, None
+
+    def set_dirty(self, oid: str, dirty: bool = True) -> None:
+        """Make an object dirty or clean (scene set-up, as ALFRED's `dirty_and_empty` does)."""
+        loaded = self.world.built.objects.get(oid)
+        if loaded is None or oid not in self.state.objects:
+            return
+        self.state = rules.apply(self.state, [fx.SetState(oid, "isDirty", dirty)]) \
+            if self.state.objects[oid].isDirty != dirty else self.state
+        show_state(self.world.client, loaded, "dirty", dirty)
 
     def _move_joint(self, oid: str, open_: bool) -> None:
         loaded = self.world.built.objects[oid]

@@ -36,11 +36,32 @@ def candidate_poses(world: World, object_id: str, reach: float | None = None) ->
     return [p for _, _, p in out]
 
 
-def find_interaction_pose(world: World, object_id: str, limit: int = 60) -> AgentPose | None:
-    """The first candidate pose from which the object is visible (>= 10 px) and within reach."""
+PREVIEW = 100
+"""Side of the cheap segmentation preview used to rule candidate poses out before a full render."""
+
+
+def _seen_in_preview(world: World, pose: AgentPose, body: int) -> bool:
+    from luminous_sim.world.camera import render
+
+    eye = np.array(pose.eye())
+    frame = render(world.client, eye, eye + np.array(pose.view_direction()), width=PREVIEW, height=PREVIEW,
+                   fov=world.config.fov, near=0.05, far=20.0)
+    seg = frame.seg
+    return bool(((seg >= 0) & ((seg & ((1 << 24) - 1)) == body)).any())
+
+
+def find_interaction_pose(world: World, object_id: str, limit: int = 80) -> AgentPose | None:
+    """The first candidate pose from which the object is visible (>= 10 px at full size) and within reach.
+
+    Candidates are screened with a 100x100 segmentation preview; only those that show the object at
+    all get the full-size visibility check.
+    """
     saved = world.agent
+    body = world.built.objects[object_id].body
     try:
         for pose in candidate_poses(world, object_id)[:limit]:
+            if not _seen_in_preview(world, pose, body):
+                continue
             world.agent = pose
             world._frame = None
             if object_id in world.visible_objects():

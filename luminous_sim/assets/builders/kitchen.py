@@ -550,9 +550,10 @@ def sink_basin(v: int, rng: np.random.Generator) -> AssetSpec:
         deck = g.difference(g.box_at((x0, y0, BASIN_H - deck_t), (x1, y1, BASIN_H)), hole)
         parts = [Part(bowl, "porcelain", convex=False), Part(deck, "porcelain", convex=False)]
         parts += _drain(0.0, 0.0, bottom, 0.035)
-        ir = r_bot - 0.01
+        ir = r_bot - 0.005
+        # the square inscribed in the flat bottom (side sqrt(2) r): a bowl or a mug stands in it
         regions.append(Region("inside", "volume", (0.0, 0.0, (bottom + BASIN_H) / 2),
-                              (1.2 * ir, 1.2 * ir * sy, BASIN_H - bottom)))
+                              (1.41 * ir, 1.41 * ir * sy, BASIN_H - bottom)))
         desc = "oval ceramic sink basin set in a flat deck, with a drain"
     else:
         t, bottom = 0.012, 0.012

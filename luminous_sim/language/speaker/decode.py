@@ -1,4 +1,8 @@
-"""Greedy (batched) and beam-search decoding for :class:`SpeakerModel`."""
+"""Greedy (batched) and beam-search decoding for :class:`SpeakerModel`.
+
+Both can block repeated n-grams (``no_repeat_ngram``): a word that would complete an n-gram
+already in the sentence gets probability 0, which stops small models from looping.
+"""
 
 from __future__ import annotations
 
@@ -11,9 +15,21 @@ BANNED = (Vocab.pad_id, Vocab.bos_id, Vocab.unk_id)
 """Ids never generated."""
 
 
-def _log_probs(logits: torch.Tensor) -> torch.Tensor:
+def repeat_banned(seq: list[int], n: int) -> list[int]:
+    """Words that would complete an n-gram already in ``seq`` (none when ``n`` < 1)."""
+    if n < 1 or len(seq) < n - 1:
+        return []
+    prefix = seq[len(seq) - n + 1 :] if n > 1 else []
+    return [seq[i + n - 1] for i in range(len(seq) - n + 1) if seq[i : i + n - 1] == prefix]
+
+
+def _log_probs(logits: torch.Tensor, seqs: list[list[int]], no_repeat_ngram: int) -> torch.Tensor:
     logits = logits.clone()
     logits[:, list(BANNED)] = float("-inf")
+    for row, seq in enumerate(seqs):
+        banned = repeat_banned(seq, no_repeat_ngram)
+        if banned:
+            logits[row, banned] = float("-inf")
     return torch.log_softmax(logits, dim=-1)
 
 
@@ -24,6 +40,7 @@ def greedy_decode(
     lengths: torch.Tensor,
     features: torch.Tensor | None,
     max_len: int = 40,
+    no_repeat_ngram: int = 0,
 ) -> list[list[int]]:
     """Most likely word at each step, for a whole batch at once.
 
@@ -33,17 +50,19 @@ def greedy_decode(
     memory, mask, state = model.encode(src, lengths, features)
     feed = torch.zeros_like(state)
     prev = torch.full((src.size(0),), Vocab.bos_id, dtype=torch.long)
-    done = torch.zeros(src.size(0), dtype=torch.bool)
+    done = [False] * src.size(0)
     out: list[list[int]] = [[] for _ in range(src.size(0))]
     for _ in range(max_len):
         logits, state, feed = model.decode_step(prev, state, feed, memory, mask)
-        prev = _log_probs(logits).argmax(dim=-1)
-        for b in torch.nonzero(~done).flatten().tolist():
-            if prev[b].item() == Vocab.eos_id:
+        prev = _log_probs(logits, out, no_repeat_ngram).argmax(dim=-1)
+        for b, word in enumerate(prev.tolist()):
+            if done[b]:
+                continue
+            if word == Vocab.eos_id:
                 done[b] = True
             else:
-                out[b].append(int(prev[b]))
-        if bool(done.all()):
+                out[b].append(word)
+        if all(done):
             break
     return out
 
@@ -57,6 +76,7 @@ def beam_decode(
     width: int = 3,
     max_len: int = 40,
     alpha: float = 0.7,
+    no_repeat_ngram: int = 0,
 ) -> list[int]:
     """Beam search for one source (batch of 1).
 
@@ -75,7 +95,8 @@ def beam_decode(
         logits, state, feed = model.decode_step(
             prev, state, feed, memory.expand(k, -1, -1), mask.expand(k, -1)
         )
-        total = torch.tensor([s for _, s in beams])[:, None] + _log_probs(logits)
+        log_p = _log_probs(logits, [seq for seq, _ in beams], no_repeat_ngram)
+        total = torch.tensor([s for _, s in beams])[:, None] + log_p
         vocab = total.size(1)
         top = torch.topk(total.flatten(), min(2 * width, total.numel()))
         keep: list[tuple[int, int, float]] = []

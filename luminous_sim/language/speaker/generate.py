@@ -25,6 +25,8 @@ SubgoalLike = Subgoal | Mapping[str, Any] | Sequence[Any]
 LowActionLike = LowAction | Mapping[str, Any] | str
 """A :class:`LowAction`, an ALFRED ``low_actions`` entry, or a bare action token."""
 FeaturesLike = torch.Tensor | np.ndarray | None
+NO_REPEAT_NGRAM = 3
+"""Default n-gram repeat block while decoding."""
 
 
 def as_subgoal(item: SubgoalLike) -> Subgoal:
@@ -61,6 +63,7 @@ class Speaker:
         tgt_vocab: Word vocabulary.
         beam_width: Default beam width (1 = greedy).
         max_len: Longest instruction generated, in tokens.
+        no_repeat_ngram: Block repeating any n-gram of this length (0: off).
         threads: Torch intra-op threads while decoding (1 is fastest for this small model).
     """
 
@@ -71,6 +74,7 @@ class Speaker:
         tgt_vocab: Vocab,
         beam_width: int = 3,
         max_len: int = 40,
+        no_repeat_ngram: int = NO_REPEAT_NGRAM,
         threads: int = 1,
     ) -> None:
         self.model = model.eval()
@@ -78,11 +82,18 @@ class Speaker:
         self.tgt_vocab = tgt_vocab
         self.beam_width = beam_width
         self.max_len = max_len
+        self.no_repeat_ngram = no_repeat_ngram
         self.threads = threads
 
     @classmethod
-    def load(cls, path: str | Path, beam_width: int = 3, max_len: int = 40) -> Speaker:
-        """Load a checkpoint written by training.
+    def load(
+        cls,
+        path: str | Path,
+        beam_width: int = 3,
+        max_len: int = 40,
+        no_repeat_ngram: int = NO_REPEAT_NGRAM,
+    ) -> Speaker:
+        """Load a checkpoint written by training (decoding options as in the constructor).
 
         Raises:
             SpeakerError: The file is missing or not a speaker checkpoint.
@@ -101,6 +112,7 @@ class Speaker:
             Vocab.from_json(data["tgt_vocab"], f"{path} tgt_vocab"),
             beam_width,
             max_len,
+            no_repeat_ngram,
         )
 
     @property
@@ -128,14 +140,23 @@ class Speaker:
         with torch.no_grad(), torch_threads(self.threads):
             if width <= 1:
                 src, lengths, f = encode_sources(sources, feats, self.src_vocab, self.feat_dim)
-                ids = greedy_decode(self.model, src, lengths, f, self.max_len)
+                ids = greedy_decode(self.model, src, lengths, f, self.max_len, self.no_repeat_ngram)
             else:
                 ids = []
                 for tokens, feat in zip(sources, feats):
                     src, lengths, f = encode_sources(
                         [tokens], [feat], self.src_vocab, self.feat_dim
                     )
-                    ids.append(beam_decode(self.model, src, lengths, f, width, self.max_len))
+                    best = beam_decode(
+                        self.model,
+                        src,
+                        lengths,
+                        f,
+                        width,
+                        self.max_len,
+                        no_repeat_ngram=self.no_repeat_ngram,
+                    )
+                    ids.append(best)
         return [self.tgt_vocab.decode(row) for row in ids]
 
     def _step_features(self, features: FeaturesLike, n_low: int) -> np.ndarray | None:

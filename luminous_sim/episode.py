@@ -1,0 +1,151 @@
+"""One expert episode end to end: a scene, a sampled ALFRED task, the oracle's trajectory, ALFRED's
+evaluation, template instructions, and the files a person looks at (frames, video, top-down path)."""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+
+from luminous_sim.assets.objio import write_atomic
+from luminous_sim.planning.trajectory import Trajectory
+from luminous_sim.scene.model import Scene
+from luminous_sim.world.agent import AgentPose
+
+
+TASK_REDRAWS = 3
+"""Tasks redrawn when the sampled one needs an object that no agent pose can see."""
+
+
+@dataclass(frozen=True)
+class EpisodeResult:
+    task_type: str
+    goal: str
+    success: bool
+    goal_conditions: tuple[int, int]
+    low_actions: int
+    planning_seconds: float
+    out_dir: Path | None
+
+
+def poses_along(traj: Trajectory, start: AgentPose) -> list[AgentPose]:
+    """The agent's pose after each low-level action (navigation replayed from the start pose)."""
+    pose, out = start, [start]
+    for a in traj.low_actions:
+        name = a["api_action"]["action"]
+        if name == "MoveAhead":
+            pose = pose.moved()
+        elif name in ("RotateLeft", "RotateRight"):
+            pose = pose.rotated(-1 if name == "RotateLeft" else 1)
+        elif name in ("LookUp", "LookDown"):
+            pose = pose.looked(-1 if name == "LookUp" else 1) or pose
+        out.append(pose)
+    return out
+
+
+def write_video(frames: list[np.ndarray], path: Path, fps: int = 6) -> Path:
+    """An MP4 of the frames (OpenCV, mp4v), written to a temporary name then moved into place."""
+    import os
+
+    import cv2
+
+    path.parent.mkdir(parents=True, exist_ok=True)
+    tmp = path.with_name(f".{path.stem}.tmp{path.suffix}")
+    h, w = frames[0].shape[:2]
+    writer = cv2.VideoWriter(str(tmp), cv2.VideoWriter_fourcc(*"mp4v"), fps, (w, h))
+    for f in frames:
+        writer.write(cv2.cvtColor(f, cv2.COLOR_RGB2BGR))
+    writer.release()
+    os.replace(tmp, path)
+    return path
+
+
+def _prepared_world(scene: Scene, task_type: str):
+    """The world as ALFRED sets a scene up for a task: for cleaning, everything dirtyable is dirty."""
+    from luminous_sim.vocab import abilities
+    from luminous_sim.world.world import World
+
+    world = World(scene)
+    if task_type == "pick_clean_then_place_in_recep":
+        for oid, st in world.interactions.state.objects.items():
+            if abilities(st.object_type).dirtyable and abilities(st.object_type).pickupable:
+                world.interactions.set_dirty(oid, True)
+    return world
+
+
+def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = None,
+                record_frames: bool = True) -> EpisodeResult:
+    """Sample a `task_type` task in `scene`, solve it with the oracle, evaluate it, and write the files."""
+    from luminous_sim.cdf.predicates import to_sexpr
+    from luminous_sim.language.instructions import Describer
+    from luminous_sim.planning.oracle import Oracle
+    from luminous_sim.tasks.evaluate import goal_conditions
+    from luminous_sim.tasks.sample import sample_task
+    from luminous_sim.tasks.templates import task_description
+    from luminous_sim.world.world import World
+
+    rng = np.random.default_rng(np.random.SeedSequence([seed, 11]))
+    world = _prepared_world(scene, task_type)
+    try:
+        task = sample_task(scene, world.interactions.state, task_type, rng)
+        start = world.agent
+        traj = Oracle(world, record_frames=record_frames).run(task.goal)
+        for _ in range(TASK_REDRAWS):  # ALFRED's generator also drops tasks its expert cannot do
+            if traj.success or "cannot be reached" not in traj.failure and "no pose" not in traj.failure:
+                break
+            world.close()
+            world = _prepared_world(scene, task_type)
+            task = sample_task(scene, world.interactions.state, task_type, rng)
+            traj = Oracle(world, record_frames=record_frames).run(task.goal)
+        visible = set(world.visible_objects())
+        done, total = goal_conditions(task, world.interactions.state, visible)
+        traj.goal_conditions = (done, total)
+        traj.success = traj.success and done == total
+        text = Describer(world, rng).describe(traj, task_description(task, rng))
+        if out_dir is not None:
+            _write(Path(out_dir), scene, task, traj, text, start, world)
+    finally:
+        world.close()
+    return EpisodeResult(task_type, to_sexpr(task.goal), traj.success, (done, total), len(traj.low_actions),
+                         traj.planning_seconds, Path(out_dir) if out_dir else None)
+
+
+def _write(out: Path, scene: Scene, task, traj: Trajectory, text, start: AgentPose, world) -> None:
+    from PIL import ImageDraw
+
+    from luminous_sim.scene_outputs import png_bytes
+    from luminous_sim.world.views import _project, top_down
+
+    record = {
+        "task": task.to_dict(), "task_desc": text.task_desc, "high_descs": text.high_descs,
+        "init_action": traj.init_action, "plan": {"high_pddl": traj.high_pddl, "low_actions": traj.low_actions},
+        "images": traj.images, "success": traj.success, "goal_conditions": list(traj.goal_conditions),
+        "replans": traj.replans, "failure": traj.failure, "scene": scene.room.name,
+    }
+    write_atomic(out / "trajectory.json", json.dumps(record, indent=1, sort_keys=True) + "\n")
+    for i, frame in enumerate(traj.frames):
+        write_atomic(out / "frames" / f"{i:09d}.png", png_bytes(frame))
+    if traj.frames:
+        write_video(traj.frames, out / "video.mp4")
+    img = top_down(world.built, labels=True)
+    minx, miny, maxx, maxy = scene.room.bounds
+    client = world.client
+    w, h = img.size
+    margin, height = 0.4, 40.0
+    cx, cy = (minx + maxx) / 2, (miny + maxy) / 2
+    import math
+
+    fov = math.degrees(2 * math.atan((maxy - miny + 2 * margin) / 2 / height))
+    view = np.array(client.computeViewMatrix((cx, cy, height), (cx, cy, 0.0), [0, 1, 0])).reshape(4, 4)
+    proj = np.array(client.computeProjectionMatrixFOV(fov, w / h, height - 3.5, height + 1.0)).reshape(4, 4)
+    path = np.array([[p.x, p.y, 0.05] for p in poses_along(traj, start)])
+    px = _project(view, proj, path, w, h)
+    draw = ImageDraw.Draw(img)
+    draw.line([tuple(p) for p in px], fill=(220, 30, 30), width=3)
+    draw.ellipse([px[0][0] - 5, px[0][1] - 5, px[0][0] + 5, px[0][1] + 5], fill=(30, 160, 30))
+    draw.ellipse([px[-1][0] - 5, px[-1][1] - 5, px[-1][0] + 5, px[-1][1] + 5], fill=(220, 30, 30))
+    write_atomic(out / "top_down.png", png_bytes(img))
+    write_atomic(out / "instructions.txt", "\n".join([text.task_desc, ""] + text.high_descs) + "\n")
+
