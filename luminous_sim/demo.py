@@ -1,5 +1,7 @@
-"""The main job end to end, at its current stage: generate rooms, furnish them, build them in PyBullet,
-and write the scene files and pictures. Later stages add task sampling, the oracle and its video."""
+"""The main job end to end: generate and furnish a room of each type with CSSG, build them in PyBullet
+and write their scene files and pictures; then, in a generated kitchen, sample an ALFRED task, solve
+it with the oracle, and write the trajectory, its frames, a video, the instructions and a top-down
+picture of the path."""
 
 from __future__ import annotations
 
@@ -75,6 +77,23 @@ def _depth(poly, x: float, y: float, yaw_deg: float) -> float:
         if d > 20:
             break
     return d
+
+
+DEMO_TASKS = ("pick_heat_then_place_in_recep", "pick_cool_then_place_in_recep", "pick_and_place_simple")
+"""Task types the demo tries in order until one succeeds (the first is the most involved)."""
+
+
+def run_demo_episode(out: Path, seed: int = 0):
+    """A generated kitchen, an ALFRED task and the oracle's trajectory, written under `out`."""
+    from luminous_sim.episode import run_episode
+
+    scene = generate(empty_cdf("Kitchen"), seed=seed).scene
+    result = None
+    for task_type in DEMO_TASKS:
+        result = run_episode(scene, task_type, seed, out_dir=Path(out))
+        if result.success:
+            break
+    return result
 
 
 def run_demo(out: Path, seed: int = 0, room_types: tuple[str, ...] = ROOM_TYPES) -> list[DemoRoom]:

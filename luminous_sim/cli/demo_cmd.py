@@ -11,15 +11,22 @@ def register(sub: argparse._SubParsersAction) -> None:
     parser.add_argument("--out", type=Path, default=Path("out/demo"))
     parser.add_argument("--seed", type=int, default=0)
     parser.add_argument("--room-types", nargs="*", default=None, help="Kitchen LivingRoom Bedroom Bathroom")
+    parser.add_argument("--no-episode", action="store_true", help="skip the task + oracle episode")
     parser.set_defaults(func=_run)
 
 
 def _run(args: argparse.Namespace) -> int:
-    from luminous_sim.demo import run_demo
+    from luminous_sim.demo import run_demo, run_demo_episode
     from luminous_sim.vocab import ROOM_TYPES
 
     rooms = run_demo(args.out, args.seed, tuple(args.room_types or ROOM_TYPES))
     for r in rooms:
         print(f"{r.room_type:<11} {r.objects:3d} objects  {r.scene_json.parent}/  "
               f"(top_down.png, {len(r.egocentric)} egocentric views; {r.settle_moved} moved while settling)")
+    if not args.no_episode:
+        ep = run_demo_episode(args.out / "episode", args.seed)
+        gc = f"{ep.goal_conditions[0]}/{ep.goal_conditions[1]}"
+        print(f"episode    {ep.task_type}: {'solved' if ep.success else 'NOT solved'} ({gc} goal conditions, "
+              f"{ep.low_actions} low-level actions) -> {ep.out_dir}/ (trajectory.json, frames/, video.mp4, "
+              f"top_down.png, instructions.txt)")
     return 0

@@ -69,8 +69,12 @@ BEDROOM: dict[str, tuple[str, str | None]] = {
 }
 
 
-def _build(layout: dict[str, tuple[str, str | None]], changes: dict[str, dict[str, Any]] | None,
-           held: str | None, **kwargs: Any) -> WorldState:
+def _build(
+    layout: dict[str, tuple[str, str | None]],
+    changes: dict[str, dict[str, Any]] | None,
+    held: str | None,
+    **kwargs: Any,
+) -> WorldState:
     changes = dict(changes or {})
     if held is not None:
         changes[held] = {**changes.get(held, {}), "parent": None, "isPickedUp": True}
@@ -81,17 +85,25 @@ def _build(layout: dict[str, tuple[str, str | None]], changes: dict[str, dict[st
     return WorldState.of(objs, held=held, **kwargs)
 
 
-def kitchen(changes: dict[str, dict[str, Any]] | None = None, held: str | None = None,
-            drop: tuple[str, ...] = (), **kwargs: Any) -> WorldState:
+def kitchen(
+    changes: dict[str, dict[str, Any]] | None = None,
+    held: str | None = None,
+    drop: tuple[str, ...] = (),
+    **kwargs: Any,
+) -> WorldState:
     """The kitchen: everything closed and off, the dishes dirty; `drop` leaves objects out."""
     base = {k: {"isDirty": True} for k in KITCHEN_DIRTY}
     for k, v in (changes or {}).items():
         base[k] = {**base.get(k, {}), **v}
     layout = {k: v for k, v in KITCHEN.items() if k not in drop}
-    kwargs.setdefault("faucet_basin", {f: b for f, b in KITCHEN_FAUCETS.items() if f in layout and b in layout})
+    kwargs.setdefault(
+        "faucet_basin", {f: b for f, b in KITCHEN_FAUCETS.items() if f in layout and b in layout}
+    )
     return _build(layout, {k: v for k, v in base.items() if k in layout}, held, **kwargs)
 
 
-def bedroom(changes: dict[str, dict[str, Any]] | None = None, held: str | None = None, **kwargs: Any) -> WorldState:
+def bedroom(
+    changes: dict[str, dict[str, Any]] | None = None, held: str | None = None, **kwargs: Any
+) -> WorldState:
     """The bedroom: the desk lamp off, drawers, safe and box closed."""
     return _build(BEDROOM, changes, held, **kwargs)

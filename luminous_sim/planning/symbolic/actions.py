@@ -73,7 +73,9 @@ class HighLevelAction:
 
     def __post_init__(self) -> None:
         if self.action not in ACTIONS:
-            raise PlanningError(f"unknown high-level action {self.action!r}; expected one of {', '.join(ACTIONS)}")
+            raise PlanningError(
+                f"unknown high-level action {self.action!r}; expected one of {', '.join(ACTIONS)}"
+            )
         object.__setattr__(self, "args", MappingProxyType(dict(self.args)))
         if "objectId" not in self.args:
             raise PlanningError(f"{self.action} needs an objectId")
@@ -167,7 +169,11 @@ class Plan:
         for i, a in enumerate(self.actions):
             nxt = self.actions[i + 1] if i + 1 < len(self.actions) else None
             out.append(
-                {"high_idx": i, "planner_action": a.to_planner_action(), "discrete_action": a.to_discrete_action(nxt)}
+                {
+                    "high_idx": i,
+                    "planner_action": a.to_planner_action(),
+                    "discrete_action": a.to_discrete_action(nxt),
+                }
             )
         out.append(
             {

@@ -24,8 +24,16 @@ from luminous_sim.planning.symbolic.problem import PddlProblem, build_problem, d
 from luminous_sim.planning.symbolic.relevance import relevance
 from luminous_sim.states import WorldState
 
-FD_ALIAS = "lama-first"
-"""Fast Downward configuration: greedy LAMA (fast, not optimal); "seq-opt-lmcut" for optimal plans."""
+FD_CONFIGS: dict[str, tuple[list[str], list[str]]] = {
+    "lama-first": (["--alias", "lama-first"], []),
+    "optimal": ([], ["--search", "astar(hmax())"]),
+}
+"""Fast Downward configurations: (driver options, search options). `lama-first` is greedy and fast;
+`optimal` is A* with h_max, admissible and able to handle the domain's conditional effects (LM-cut
+is not)."""
+
+FD_CONFIG = "lama-first"
+"""The configuration the `fd` backend uses."""
 
 
 def fast_downward_driver() -> Path:
@@ -37,7 +45,9 @@ def fast_downward_driver() -> Path:
     try:
         import up_fast_downward
     except ImportError:
-        raise PlanningError("backend 'fd' needs the up-fast-downward package: pip install up-fast-downward") from None
+        raise PlanningError(
+            "backend 'fd' needs the up-fast-downward package: pip install up-fast-downward"
+        ) from None
     driver = Path(up_fast_downward.__file__).parent / "downward" / "fast-downward.py"
     if not driver.is_file():
         raise PlanningError(f"up-fast-downward has no Fast Downward driver at {driver}")
@@ -78,16 +88,24 @@ def _run_fd(problem: PddlProblem, timeout: float) -> list[list[str]]:
         d.write_text(domain_text())
         p.write_text(problem.text)
         try:
+            before, after = FD_CONFIGS[FD_CONFIG]
             run = subprocess.run(
-                [sys.executable, str(driver), "--alias", FD_ALIAS, str(d), str(p)],
-                cwd=tmp, capture_output=True, text=True, timeout=timeout, env={**os.environ, "PYTHONHASHSEED": "0"},
+                [sys.executable, str(driver), *before, str(d), str(p), *after],
+                cwd=tmp,
+                capture_output=True,
+                text=True,
+                timeout=timeout,
+                check=False,
+                env={**os.environ, "PYTHONHASHSEED": "0"},
             )
         except subprocess.TimeoutExpired:
             raise PlanningError(f"Fast Downward found no plan within {timeout:.0f} s") from None
         plan = Path(tmp) / "sas_plan"
         if not plan.is_file():
             tail = (run.stdout + run.stderr).strip().splitlines()[-3:]
-            raise PlanningError(f"Fast Downward found no plan (exit {run.returncode}): {' / '.join(tail)}")
+            raise PlanningError(
+                f"Fast Downward found no plan (exit {run.returncode}): {' / '.join(tail)}"
+            )
         lines = [ln.strip() for ln in plan.read_text().splitlines() if ln.strip().startswith("(")]
     return [ln.strip("()").split() for ln in lines]
 
@@ -103,7 +121,10 @@ def _run_up(problem: PddlProblem) -> list[list[str]]:
     parsed = PDDLReader().parse_problem_string(domain_text(), problem.text)
     with OneshotPlanner(name="fast-downward") as planner:
         result = planner.solve(parsed)
-    if result.status not in (Status.SOLVED_SATISFICING, Status.SOLVED_OPTIMALLY) or result.plan is None:
+    if (
+        result.status not in (Status.SOLVED_SATISFICING, Status.SOLVED_OPTIMALLY)
+        or result.plan is None
+    ):
         raise PlanningError(f"unified-planning/Fast Downward found no plan ({result.status.name})")
     return [[ai.action.name, *(str(p) for p in ai.actual_parameters)] for ai in result.plan.actions]
 
@@ -124,8 +145,17 @@ def _to_actions(step: list[str], problem: PddlProblem) -> list[HighLevelAction]:
     if name in ("putobject", "putobjectinreceptacleobject"):
         return [act("PutObject", obj(2), obj(3))]
     if name in ("heatobject", "coolobject", "cleanobject"):
-        return [act({"heatobject": "HeatObject", "coolobject": "CoolObject", "cleanobject": "CleanObject"}[name],
-                    obj(3), obj(2))]
+        return [
+            act(
+                {
+                    "heatobject": "HeatObject",
+                    "coolobject": "CoolObject",
+                    "cleanobject": "CleanObject",
+                }[name],
+                obj(3),
+                obj(2),
+            )
+        ]
     if name in ("toggleobjecton", "toggleobjectoff"):
         return [act("ToggleObject", obj(2))]
     if name == "sliceobject":

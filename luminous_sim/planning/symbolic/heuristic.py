@@ -19,14 +19,24 @@ from collections.abc import Mapping
 
 from luminous_sim.cdf.predicates import And, Atom, Exists, Expr, ForAll, Not, Or, Param, is_variable
 from luminous_sim.planning.symbolic.relevance import devices_of
-from luminous_sim.planning.symbolic.semantics import anchor, atom_true, constants, resolve, signature
+from luminous_sim.planning.symbolic.semantics import (
+    anchor,
+    atom_true,
+    constants,
+    resolve,
+    signature,
+)
 from luminous_sim.states import WorldState
-from luminous_sim.states.tables import FILLABLE, GATING_OPENABLE, SLICING_TOOLS
+from luminous_sim.states.tables import FILLABLE, GATING_OPENABLE, SLICE_OF, SLICING_TOOLS
 from luminous_sim.vocab import SLICED_TYPES, abilities, can_contain
 
 INF = math.inf
 MACRO = 5.0
-_DEVICE_NAME = {"isHot": ("Microwave", "hot"), "isCool": ("Fridge", "cool"), "isClean": ("SinkBasin", "clean")}
+_DEVICE_NAME = {
+    "isHot": ("Microwave", "hot"),
+    "isCool": ("Fridge", "cool"),
+    "isClean": ("SinkBasin", "clean"),
+}
 
 
 def _mentions_sliced(expr: Expr, var: str) -> bool:
@@ -119,7 +129,9 @@ class _Node:
         raise TypeError(f"not a goal expression: {e!r}")
 
     def _ground(self, atom: Atom, env: Mapping[str, str]) -> list[tuple[str, ...]]:
-        choices = [[env[a]] if is_variable(a) else resolve(a, self.s, self.est.names) for a in atom.args]
+        choices = [
+            [env[a]] if is_variable(a) else resolve(a, self.s, self.est.names) for a in atom.args
+        ]
         return list(itertools.product(*choices))
 
     def _domain(self, p: Param, proxies: bool) -> list[tuple[str, float]]:
@@ -189,7 +201,9 @@ class _Node:
                 return self._fail(f"{r} is not a movable receptacle")
             return self.put_in(o, r)
         if pred in ("isHot", "isCool", "isClean", "isFilled"):
-            return self.device(o, "isClean" if pred == "isFilled" else pred, fill=pred == "isFilled")
+            return self.device(
+                o, "isClean" if pred == "isFilled" else pred, fill=pred == "isFilled"
+            )
         if pred == "isSliced":
             return self.slice_cost(o)
         if pred in ("isToggled", "isOn"):
@@ -212,7 +226,11 @@ class _Node:
         o = ids[0]
         if pred in ("inReceptacle", "inReceptacleObject"):
             chain = [o, *self.s.ancestors(o)]
-            movers = [x for x in chain[: chain.index(ids[1])] if self.pickupable(x)] if ids[1] in chain else []
+            movers = (
+                [x for x in chain[: chain.index(ids[1])] if self.pickupable(x)]
+                if ids[1] in chain
+                else []
+            )
             if not movers:
                 return self._fail(f"nothing can take {o} out of {ids[1]}")
             return min(self.reach(x) for x in movers) + 2
@@ -234,7 +252,7 @@ class _Node:
         if pred == "isOpen":
             return self.goto(self.anchor(o)) + 1
         if pred == "=":
-            return self._fail(f"{o} cannot differ from itself")
+            return self._fail(f"two different objects are needed where there is only {o}")
         return 1.0  # holds, atLocation
 
     # -- action estimates ---------------------------------------------------------------------
@@ -252,7 +270,11 @@ class _Node:
         return abilities(self.s[o].object_type).pickupable
 
     def closed_gates(self, o: str) -> int:
-        return sum(1 for a in self.s.ancestors(o) if self.s[a].object_type in GATING_OPENABLE and not self.s[a].isOpen)
+        return sum(
+            1
+            for a in self.s.ancestors(o)
+            if self.s[a].object_type in GATING_OPENABLE and not self.s[a].isOpen
+        )
 
     def reach(self, o: str) -> float:
         """Cost to have `o` in hand."""
@@ -265,7 +287,12 @@ class _Node:
             elif self.held is not None and self.held in self.s.ancestors(o):
                 c = 3.0
             else:
-                c = self.goto(self.anchor(o)) + self.closed_gates(o) + 1 + (1 if self.held is not None else 0)
+                c = (
+                    self.goto(self.anchor(o))
+                    + self.closed_gates(o)
+                    + 1
+                    + (1 if self.held is not None else 0)
+                )
             self._reach[o] = c
         return c
 
@@ -289,6 +316,8 @@ class _Node:
             best = self.reach(o) + self._place(o, r)
         elif self.pickupable(o) and self._via_movable(otype, rtype):
             best = self.reach(o) + 6
+        elif otype in SLICE_OF and not self.s[o].isSliced and can_contain(rtype, SLICE_OF[otype]):
+            best = self.slice_cost(o) + 3  # only its slices fit (a Toaster takes BreadSliced)
         for m in self.s.ancestors(o):
             if m == r or not abilities(self.s[m].object_type).movable_receptacle:
                 break
@@ -320,7 +349,9 @@ class _Node:
         fits = [d for d in devs if can_contain(self.s[d].object_type, otype)]
         if fits and self.pickupable(o):
             return self.reach(o) + min(self.goto(d) for d in fits) + MACRO
-        if self.pickupable(o) and any(self._via_movable(otype, self.s[d].object_type) for d in devs):
+        if self.pickupable(o) and any(
+            self._via_movable(otype, self.s[d].object_type) for d in devs
+        ):
             return self.reach(o) + 3 + MACRO
         return self._fail(f"{o} ({otype}) cannot go in a {dtype}: cannot make it {word}")
 
@@ -335,5 +366,9 @@ class _Node:
         if not knives:
             return self._fail(f"no Knife or ButterKnife in the scene: cannot slice {o}")
         held = self.s.get(self.held)
-        knife = 0.0 if held is not None and held.object_type in SLICING_TOOLS else min(self.reach(k) for k in knives)
+        knife = (
+            0.0
+            if held is not None and held.object_type in SLICING_TOOLS
+            else min(self.reach(k) for k in knives)
+        )
         return knife + (2.0 if self.held == o else 0.0) + 1.0 + MACRO

@@ -28,7 +28,9 @@ def _low(action: str, object_id: str, receptacle_id: str | None = None) -> dict[
 
 def faucet_of(state: WorldState, basin: str) -> str | None:
     """The faucet that serves a sink basin (`WorldState.faucet_basin`), or None."""
-    return next((f for f, b in sorted(state.faucet_basin.items()) if b == basin and f in state), None)
+    return next(
+        (f for f, b in sorted(state.faucet_basin.items()) if b == basin and f in state), None
+    )
 
 
 def expand_macro(action: HighLevelAction, state: WorldState) -> list[dict[str, Any]]:
@@ -101,7 +103,9 @@ def try_action(state: WorldState, action: HighLevelAction) -> tuple[WorldState, 
         return state, str(exc)
     after = state
     for step in steps:
-        after, why = rules.step(after, step["action"], step["objectId"], step.get("receptacleObjectId"))
+        after, why = rules.step(
+            after, step["action"], step["objectId"], step.get("receptacleObjectId")
+        )
         if why is not None:
             return state, f"{action!r}: {step['action']} refused: {why}"
     return after, None

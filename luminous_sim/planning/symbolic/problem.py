@@ -17,13 +17,25 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from importlib import resources
 
-from luminous_sim.cdf.predicates import And, Atom, Exists, Expr, ForAll, Not, Or, is_variable
+from luminous_sim.cdf.predicates import And, Atom, Exists, Expr, Not, Or, is_variable
 from luminous_sim.errors import PlanningError
 from luminous_sim.planning.symbolic.relevance import Relevance, relevance
-from luminous_sim.planning.symbolic.semantics import AT_LOCATION, anchor, atom_true, prepare_goal, resolve
+from luminous_sim.planning.symbolic.semantics import (
+    AT_LOCATION,
+    anchor,
+    atom_true,
+    prepare_goal,
+    resolve,
+)
 from luminous_sim.states import WorldState
+from luminous_sim.states.tables import (
+    DEFAULT_SLICE_COUNTS,
+    FILLABLE,
+    GATING_OPENABLE,
+    SLICE_OF,
+    slice_id,
+)
 from luminous_sim.tasks.expressions import parents
-from luminous_sim.states.tables import DEFAULT_SLICE_COUNTS, FILLABLE, GATING_OPENABLE, SLICE_OF, slice_id
 from luminous_sim.vocab import abilities, can_contain
 
 ESCAPES: tuple[tuple[str, str], ...] = (
@@ -35,15 +47,25 @@ ESCAPES: tuple[tuple[str, str], ...] = (
 )
 """ALFRED's identifier escapes (A gen/game_states/planned_game_state.py)."""
 
-DOMAIN_CONSTANTS = frozenset({"MicrowaveType", "FridgeType", "SinkBasinType", "BathtubBasinType", "KnifeType",
-                              "ButterKnifeType"})
+DOMAIN_CONSTANTS = frozenset(
+    {
+        "MicrowaveType",
+        "FridgeType",
+        "SinkBasinType",
+        "BathtubBasinType",
+        "KnifeType",
+        "ButterKnifeType",
+    }
+)
 AGENT = "agent0"
 START = "loc_start"
 
 
 def domain_text() -> str:
     """The text of `luminous_sim/planning/domain/luminous_domain.pddl`."""
-    return resources.files("luminous_sim.planning").joinpath("domain/luminous_domain.pddl").read_text()
+    return (
+        resources.files("luminous_sim.planning").joinpath("domain/luminous_domain.pddl").read_text()
+    )
 
 
 def pddl_name(object_id: str) -> str:
@@ -111,7 +133,9 @@ def build_problem(
 
 
 class _Builder:
-    def __init__(self, state: WorldState, goal: Expr, names: dict[str, str], at: str | None, rel: Relevance):
+    def __init__(
+        self, state: WorldState, goal: Expr, names: dict[str, str], at: str | None, rel: Relevance
+    ):
         self.s = state
         self.goal = goal
         self.names = names
@@ -129,7 +153,9 @@ class _Builder:
         lowered = {}
         for k, v in self.pddl.items():
             if v.lower() in lowered:
-                raise PlanningError(f"objects {lowered[v.lower()]} and {k} have the same PDDL name {v}")
+                raise PlanningError(
+                    f"objects {lowered[v.lower()]} and {k} have the same PDDL name {v}"
+                )
             lowered[v.lower()] = k
         self.fresh = 0
 
@@ -146,44 +172,67 @@ class _Builder:
         places = sorted({anchor(self.s, k) for k in self.ids})
         locs = {location_name(p): p for p in places}
         goal_types = _param_types(self.goal)
-        rtypes = sorted({self.type_of(k) for k in all_ids if self.kind(k) == "receptacle"}
-                        | {t for t in goal_types if is_fixed_receptacle(t)})
-        otypes = sorted({self.type_of(k) for k in all_ids if self.kind(k) == "item"}
-                        | {t for t in goal_types if not is_fixed_receptacle(t)})
+        rtypes = sorted(
+            {self.type_of(k) for k in all_ids if self.kind(k) == "receptacle"}
+            | {t for t in goal_types if is_fixed_receptacle(t)}
+        )
+        otypes = sorted(
+            {self.type_of(k) for k in all_ids if self.kind(k) == "item"}
+            | {t for t in goal_types if not is_fixed_receptacle(t)}
+        )
         objects = [f"{AGENT} - agent", *(f"{loc} - location" for loc in locs)]
         if self.at is None:
             objects.append(f"{START} - location")
         objects += [f"{t}Type - rtype" for t in rtypes if f"{t}Type" not in DOMAIN_CONSTANTS]
         objects += [f"{t}Type - otype" for t in otypes if f"{t}Type" not in DOMAIN_CONSTANTS]
         objects += [f"{self.pddl[k]} - {self.kind(k)}" for k in all_ids]
-        init = [f"(atLocation {AGENT} {location_name(anchor(self.s, self.at)) if self.at else START})",
-                "(= (total-cost) 0)"]
-        init += [f"(canContain {r}Type {o}Type)" for r in rtypes for o in otypes if can_contain(r, o)]
-        init += [f"(canContainObject {m}Type {o}Type)" for m in otypes if abilities(m).movable_receptacle
-                 for o in otypes if can_contain(m, o)]
+        init = [
+            f"(atLocation {AGENT} {location_name(anchor(self.s, self.at)) if self.at else START})",
+            "(= (total-cost) 0)",
+        ]
+        init += [
+            f"(canContain {r}Type {o}Type)" for r in rtypes for o in otypes if can_contain(r, o)
+        ]
+        init += [
+            f"(canContainObject {m}Type {o}Type)"
+            for m in otypes
+            if abilities(m).movable_receptacle
+            for o in otypes
+            if can_contain(m, o)
+        ]
         for k in self.ids:
             init += self.facts(k)
         for whole, xs in self.slices.items():
             for x in xs:
                 sliced = self.type_of(x)
-                init += [f"(objectType {self.pddl[x]} {sliced}Type)", f"(sliceOf {self.pddl[x]} {self.pddl[whole]})",
-                         f"(removed {self.pddl[x]})", f"(pickupable {self.pddl[x]})"]
+                init += [
+                    f"(objectType {self.pddl[x]} {sliced}Type)",
+                    f"(sliceOf {self.pddl[x]} {self.pddl[whole]})",
+                    f"(removed {self.pddl[x]})",
+                    f"(pickupable {self.pddl[x]})",
+                ]
         goal = self.expr(self.goal, {})
-        text = "\n".join([
-            f"(define (problem {name})",
-            "  (:domain luminous)",
-            "  (:objects",
-            *(f"    {o}" for o in objects),
-            "  )",
-            "  (:init",
-            *(f"    {f}" for f in init),
-            "  )",
-            f"  (:goal {goal})",
-            "  (:metric minimize (total-cost))",
-            ")",
-            "",
-        ])
-        return PddlProblem(text, {v.lower(): k for k, v in self.pddl.items()}, {k.lower(): v for k, v in locs.items()})
+        text = "\n".join(
+            [
+                f"(define (problem {name})",
+                "  (:domain luminous)",
+                "  (:objects",
+                *(f"    {o}" for o in objects),
+                "  )",
+                "  (:init",
+                *(f"    {f}" for f in init),
+                "  )",
+                f"  (:goal {goal})",
+                "  (:metric minimize (total-cost))",
+                ")",
+                "",
+            ]
+        )
+        return PddlProblem(
+            text,
+            {v.lower(): k for k, v in self.pddl.items()},
+            {k.lower(): v for k, v in locs.items()},
+        )
 
     def facts(self, k: str) -> list[str]:
         s, n = self.s, self.pddl[k]
@@ -192,7 +241,10 @@ class _Builder:
         loc = location_name(anchor(s, k))
         out = []
         if self.kind(k) == "receptacle":
-            out += [f"(receptacleType {n} {o.object_type}Type)", f"(receptacleAtLocation {n} {loc})"]
+            out += [
+                f"(receptacleType {n} {o.object_type}Type)",
+                f"(receptacleAtLocation {n} {loc})",
+            ]
         else:
             out.append(f"(objectType {n} {o.object_type}Type)")
             if s.held == k:
@@ -204,17 +256,28 @@ class _Builder:
             if p in self.pddl:
                 out.append(f"({pred} {n} {self.pddl[p]})")
         flags = {
-            "pickupable": ab.pickupable, "openable": ab.openable, "gating": o.object_type in GATING_OPENABLE,
-            "opened": o.isOpen, "toggleable": ab.toggleable, "isToggled": o.isToggled,
-            "sliceable": ab.sliceable, "isSliced": o.isSliced, "fillable": o.object_type in FILLABLE,
-            "isFilled": o.isFilledWithLiquid, "isDirty": o.isDirty,
+            "pickupable": ab.pickupable,
+            "openable": ab.openable,
+            "gating": o.object_type in GATING_OPENABLE,
+            "opened": o.isOpen,
+            "toggleable": ab.toggleable,
+            "isToggled": o.isToggled,
+            "sliceable": ab.sliceable,
+            "isSliced": o.isSliced,
+            "fillable": o.object_type in FILLABLE,
+            "isFilled": o.isFilledWithLiquid,
+            "isDirty": o.isDirty,
             "isReceptacleObject": ab.movable_receptacle and ab.receptacle,
         }
         out += [f"({f} {n})" for f, v in flags.items() if v]
         for pred in ("isHot", "isCool", "isClean"):
             if atom_true(s, None, pred, (k,)):
                 out.append(f"({pred} {n})")
-        out += [f"(faucetFor {n} {self.pddl[b]})" for f, b in s.faucet_basin.items() if f == k and b in self.pddl]
+        out += [
+            f"(faucetFor {n} {self.pddl[b]})"
+            for f, b in s.faucet_basin.items()
+            if f == k and b in self.pddl
+        ]
         return out
 
     # -- goal ---------------------------------------------------------------------------------
@@ -269,7 +332,9 @@ class _Builder:
             alts.append(self.ground(a.pred, combo, a.args, env))
         return alts[0] if len(alts) == 1 else f"(or {' '.join(alts)})"
 
-    def ground(self, pred: str, combo: tuple[str, ...], raw: tuple[str, ...], env: dict[str, str | None]) -> str:
+    def ground(
+        self, pred: str, combo: tuple[str, ...], raw: tuple[str, ...], env: dict[str, str | None]
+    ) -> str:
         args = [c if is_variable(c) else self.pddl[c] for c in combo]
         if pred in ("inReceptacle", "inReceptacleObject"):
             second = combo[1]
@@ -294,8 +359,10 @@ class _Builder:
         if pred == AT_LOCATION:
             self.fresh += 1
             lv = f"?l{self.fresh}"
-            return (f"(exists ({lv} - location) (and (atLocation {AGENT} {lv}) "
-                    f"(or (objectAtLocation {args[0]} {lv}) (receptacleAtLocation {args[0]} {lv}))))")
+            return (
+                f"(exists ({lv} - location) (and (atLocation {AGENT} {lv}) "
+                f"(or (objectAtLocation {args[0]} {lv}) (receptacleAtLocation {args[0]} {lv}))))"
+            )
         return f"({pred} {' '.join(args)})"
 
 

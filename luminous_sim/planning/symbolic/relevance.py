@@ -14,7 +14,17 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-from luminous_sim.cdf.predicates import PREDICATES, And, Atom, Exists, Expr, ForAll, Not, Or, is_variable
+from luminous_sim.cdf.predicates import (
+    PREDICATES,
+    And,
+    Atom,
+    Exists,
+    Expr,
+    ForAll,
+    Not,
+    Or,
+    is_variable,
+)
 from luminous_sim.planning.symbolic.semantics import AT_LOCATION, constants, resolve
 from luminous_sim.states import WorldState
 from luminous_sim.states.tables import FILLABLE, GATING_OPENABLE, SLICING_TOOLS
@@ -97,17 +107,30 @@ def devices_of(state: WorldState) -> dict[str, tuple[str, ...]]:
     }
 
 
-def relevance(state: WorldState, goal: Expr, names: Mapping[str, str], full: bool = False) -> Relevance:
+def relevance(
+    state: WorldState, goal: Expr, names: Mapping[str, str], full: bool = False
+) -> Relevance:
     """The relevance filter for a goal (NNF, see `semantics.prepare_goal`) in a state."""
     devices = devices_of(state)
     receptacles = [k for k, o in state.objects.items() if abilities(o.object_type).receptacle]
     if full:
         everything = frozenset(state.objects)
-        openers = frozenset(k for k, o in state.objects.items() if abilities(o.object_type).openable)
-        toggles = frozenset(k for k, o in state.objects.items() if o.object_type in ("DeskLamp", "FloorLamp"))
+        openers = frozenset(
+            k for k, o in state.objects.items() if abilities(o.object_type).openable
+        )
+        toggles = frozenset(
+            k for k, o in state.objects.items() if o.object_type in ("DeskLamp", "FloorLamp")
+        )
         named = _named(state, goal, names)
-        return Relevance(everything, frozenset(receptacles), openers, toggles | _toggle_targets(state, goal, names),
-                         devices, named, full=True)
+        return Relevance(
+            everything,
+            frozenset(receptacles),
+            openers,
+            toggles | _toggle_targets(state, goal, names),
+            devices,
+            named,
+            full=True,
+        )
 
     keep: set[str] = set()
     dests: set[str] = set()
@@ -127,8 +150,12 @@ def relevance(state: WorldState, goal: Expr, names: Mapping[str, str], full: boo
             used_devices[pred] = devices[pred]
         if pred in WASHING:
             used_devices["isClean"] = devices["isClean"]
-            keep.update(f for f, b in state.faucet_basin.items() if b in devices["isClean"] and f in state)
-        if pred == "isSliced" or any(types.get(a) in SLICED_TYPES for a in atom.args if is_variable(a)):
+            keep.update(
+                f for f, b in state.faucet_basin.items() if b in devices["isClean"] and f in state
+            )
+        if pred == "isSliced" or any(
+            types.get(a) in SLICED_TYPES for a in atom.args if is_variable(a)
+        ):
             keep.update(k for k, o in state.objects.items() if o.object_type in SLICING_TOOLS)
         if pred in ("isToggled", "isOn"):
             toggles.update(cands[0])
@@ -149,15 +176,26 @@ def relevance(state: WorldState, goal: Expr, names: Mapping[str, str], full: boo
     keep |= {a for k in list(keep) for a in state.ancestors(k)}
     for k in keep:
         obj = state[k]
-        if obj.object_type in GATING_OPENABLE and (k in dests or any(k in state.ancestors(x) for x in keep)):
+        if obj.object_type in GATING_OPENABLE and (
+            k in dests or any(k in state.ancestors(x) for x in keep)
+        ):
             openers.add(k)
-    openers.update(d for ids in used_devices.values() for d in ids if abilities(state[d].object_type).openable)
-    return Relevance(frozenset(keep), frozenset(dests), frozenset(openers), frozenset(toggles),
-                     used_devices, _named(state, goal, names))
+    openers.update(
+        d for ids in used_devices.values() for d in ids if abilities(state[d].object_type).openable
+    )
+    return Relevance(
+        frozenset(keep),
+        frozenset(dests),
+        frozenset(openers),
+        frozenset(toggles),
+        used_devices,
+        _named(state, goal, names),
+    )
 
 
-def _candidates(atom: Atom, types: Mapping[str, str | None], state: WorldState,
-                names: Mapping[str, str]) -> list[list[str]]:
+def _candidates(
+    atom: Atom, types: Mapping[str, str | None], state: WorldState, names: Mapping[str, str]
+) -> list[list[str]]:
     info = PREDICATES.get(atom.pred)
     out = []
     for i, a in enumerate(atom.args):
@@ -182,8 +220,12 @@ def _connecting_movables(state: WorldState, pairs: list[tuple[list[str], list[st
             for rt in rtypes:
                 if can_contain(rt, ot):
                     continue
-                out.update(m for m in movables
-                           if can_contain(state[m].object_type, ot) and can_contain(rt, state[m].object_type))
+                out.update(
+                    m
+                    for m in movables
+                    if can_contain(state[m].object_type, ot)
+                    and can_contain(rt, state[m].object_type)
+                )
     return out
 
 
@@ -205,8 +247,15 @@ def _parking(state: WorldState, keep: set[str], receptacles: list[str]) -> set[s
         open_spots = [r for r in out if state[r].object_type not in GATING_OPENABLE]
         if any(can_contain(state[r].object_type, obj.object_type) for r in open_spots):
             continue
-        spot = next((r for r in fixed if state[r].object_type not in GATING_OPENABLE
-                     and can_contain(state[r].object_type, obj.object_type)), None)
+        spot = next(
+            (
+                r
+                for r in fixed
+                if state[r].object_type not in GATING_OPENABLE
+                and can_contain(state[r].object_type, obj.object_type)
+            ),
+            None,
+        )
         if spot is not None:
             out.add(spot)
     return out

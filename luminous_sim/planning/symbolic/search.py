@@ -63,14 +63,20 @@ def candidate_actions(node: Node, rel: Relevance) -> Iterator[HighLevelAction]:
     s = node.world
     held = s.held
     if held is None:
-        pick = [k for k, o in s.objects.items()
-                if abilities(o.object_type).pickupable and enclosing_closed(s, k) is None]
+        pick = [
+            k
+            for k, o in s.objects.items()
+            if abilities(o.object_type).pickupable and enclosing_closed(s, k) is None
+        ]
         for o in _distinct(s, pick, rel.named):
             yield act("PickupObject", o)
     else:
         htype = s[held].object_type
-        dests = [r for r in s.objects
-                 if r in rel.destinations and r != held and can_contain(s[r].object_type, htype)]
+        dests = [
+            r
+            for r in s.objects
+            if r in rel.destinations and r != held and can_contain(s[r].object_type, htype)
+        ]
         for r in _distinct(s, dests, rel.named):
             yield act("PutObject", held, r)
         for name, pred in _MACROS:
@@ -95,8 +101,10 @@ def candidate_actions(node: Node, rel: Relevance) -> Iterator[HighLevelAction]:
 def successors(node: Node, rel: Relevance) -> Iterator[tuple[list[HighLevelAction], float, Node]]:
     """(actions, cost, next node) for every applicable interaction, with its GotoLocation."""
     for a in candidate_actions(node, rel):
-        place = anchor(node.world, a.receptacle_id if a.action == "PutObject" else
-                       (a.receptacle_id or a.object_id))
+        place = anchor(
+            node.world,
+            a.receptacle_id if a.action == "PutObject" else (a.receptacle_id or a.object_id),
+        )
         after, why = try_action(node.world, a)
         if why is not None:
             continue
@@ -139,7 +147,9 @@ def astar(
         if hn == 0 and is_goal(node):
             return SearchResult(_path(parent, node), g, expanded, False)
         expanded += 1
-        if expanded > max_expansions or (deadline is not None and expanded % 64 == 0 and time.perf_counter() > deadline):
+        if expanded > max_expansions or (
+            deadline is not None and expanded % 64 == 0 and time.perf_counter() > deadline
+        ):
             return SearchResult(None, 0.0, expanded, False)
         for actions, cost, nxt in successors(node, rel):
             g2 = g + cost
@@ -154,7 +164,9 @@ def astar(
     return SearchResult(None, 0.0, expanded, True)
 
 
-def _path(parent: dict[Node, tuple[Node, list[HighLevelAction]]], node: Node) -> list[HighLevelAction]:
+def _path(
+    parent: dict[Node, tuple[Node, list[HighLevelAction]]], node: Node
+) -> list[HighLevelAction]:
     out: list[HighLevelAction] = []
     while node in parent:
         node, actions = parent[node]

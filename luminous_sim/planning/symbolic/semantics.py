@@ -48,8 +48,20 @@ def signature(state: WorldState, object_id: str) -> tuple:
     obj = state[object_id]
     contents = tuple(sorted(state[c].object_type for c in state.contents(object_id)))
     books = tuple(object_id in getattr(state, k) for k in ("heated", "cooled", "cleaned"))
-    return (obj.object_type, obj.parent, obj.isOpen, obj.isToggled, obj.isDirty, obj.isSliced,
-            obj.temperature, obj.isCooked, obj.isFilledWithLiquid, obj.isPickedUp, contents, books)
+    return (
+        obj.object_type,
+        obj.parent,
+        obj.isOpen,
+        obj.isToggled,
+        obj.isDirty,
+        obj.isSliced,
+        obj.temperature,
+        obj.isCooked,
+        obj.isFilledWithLiquid,
+        obj.isPickedUp,
+        contents,
+        books,
+    )
 
 
 def resolve(name: str, state: WorldState, names: Mapping[str, str]) -> list[str]:
@@ -64,7 +76,9 @@ def resolve(name: str, state: WorldState, names: Mapping[str, str]) -> list[str]
     slices = [k for k in state.objects if k.startswith(oid + "|")]
     if not slices and name not in names:
         known = ", ".join(sorted(names)) or "none"
-        raise PlanningError(f"goal names {name!r}, which is neither a mapped name ({known}) nor an object id")
+        raise PlanningError(
+            f"goal names {name!r}, which is neither a mapped name ({known}) nor an object id"
+        )
     return slices
 
 
@@ -88,19 +102,27 @@ def atom_true(state: WorldState, at: str | None, pred: str, ids: tuple[str, ...]
     return PREDICATE_FUNCTIONS[pred](state, ids)
 
 
-def ground_choices(atom: Atom, env: Mapping[str, str], state: WorldState, names: Mapping[str, str]) -> list[tuple[str, ...]]:
+def ground_choices(
+    atom: Atom, env: Mapping[str, str], state: WorldState, names: Mapping[str, str]
+) -> list[tuple[str, ...]]:
     """The ground argument tuples an atom stands for (more than one when it names a sliced object)."""
     choices = [[env[a]] if is_variable(a) else resolve(a, state, names) for a in atom.args]
     return list(itertools.product(*choices))
 
 
 def holds(
-    expr: Expr, state: WorldState, at: str | None, names: Mapping[str, str], env: Mapping[str, str] | None = None
+    expr: Expr,
+    state: WorldState,
+    at: str | None,
+    names: Mapping[str, str],
+    env: Mapping[str, str] | None = None,
 ) -> bool:
     """Whether a goal (with the planner's `atLocation`) holds in a state with the agent at `at`."""
     env = env or {}
     if isinstance(expr, Atom):
-        return any(atom_true(state, at, expr.pred, g) for g in ground_choices(expr, env, state, names))
+        return any(
+            atom_true(state, at, expr.pred, g) for g in ground_choices(expr, env, state, names)
+        )
     if isinstance(expr, Not):
         return not holds(expr.arg, state, at, names, env)
     if isinstance(expr, And):
@@ -130,7 +152,9 @@ def nnf(expr: Expr, negate: bool = False) -> Expr:
     raise PlanningError(f"not a goal expression: {expr!r}")
 
 
-def _lamp_typed(arg: str, types: Mapping[str, str | None], state: WorldState, names: Mapping[str, str]) -> bool:
+def _lamp_typed(
+    arg: str, types: Mapping[str, str | None], state: WorldState, names: Mapping[str, str]
+) -> bool:
     if is_variable(arg):
         return types.get(arg) in LAMPS
     oid = names.get(arg, arg)

@@ -1,8 +1,9 @@
 """`solve`: a goal and a state in, a checked high-level plan out (or a `PlanningError` saying why).
 
-The default backend is the built-in A* (`search`). The same problem can be handed to Fast
-Downward through unified-planning (`backend="fd"`) or to pyperplan (`backend="pyperplan"`) as PDDL
-(`problem.to_pddl_problem` over `luminous_domain.pddl`); those need their optional packages.
+The default backend is the built-in A* (`search`). The same problem can be handed, as PDDL
+(`problem.build_problem` over `luminous_domain.pddl`), to Fast Downward (`backend="fd"`) or to
+unified-planning's Fast Downward engine (`backend="up"`); both need the optional up-fast-downward
+package (see the package docstring for why pyperplan is not a backend).
 Whatever the backend, the plan is replayed through the rules on the full state and the goal is
 checked before it is returned.
 """
@@ -61,14 +62,17 @@ def solve(
             is unknown or not installed.
     """
     if backend not in BACKENDS:
-        raise PlanningError(f"unknown planner backend {backend!r}; expected one of {', '.join(BACKENDS)}")
+        raise PlanningError(
+            f"unknown planner backend {backend!r}; expected one of {', '.join(BACKENDS)}"
+        )
     names = dict(names or {})
     if close_receptacles:
         goal = And((goal, closed_receptacles_goal()))
     t0 = time.perf_counter()
     prepared = prepare_goal(goal, state, names)
-    movable_types = frozenset(o.object_type for o in state.objects.values()
-                              if abilities(o.object_type).movable_receptacle)
+    movable_types = frozenset(
+        o.object_type for o in state.objects.values() if abilities(o.object_type).movable_receptacle
+    )
     est = Estimator(prepared, names, movable_types)
     if est(state, at) == float("inf"):
         reasons = list(dict.fromkeys(est.reasons))[:3] or ["unsatisfiable"]
@@ -125,7 +129,9 @@ def _check(
             continue
         target = a.receptacle_id if a.receptacle_id is not None else a.object_id
         if where != anchor(state, target):
-            raise PlanningError(f"plan step {i}: {a!r} is not done at {anchor(state, target)} (agent at {where})")
+            raise PlanningError(
+                f"plan step {i}: {a!r} is not done at {anchor(state, target)} (agent at {where})"
+            )
         state, why = try_action(state, a)
         if why is not None:
             raise PlanningError(f"plan step {i}: {why}")
