@@ -76,7 +76,7 @@ def _prepared_world(scene: Scene, task_type: str):
 
 
 def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = None,
-                record_frames: bool = True) -> EpisodeResult:
+                record_frames: bool = True, return_trajectory: bool = False):
     """Sample a `task_type` task in `scene`, solve it with the oracle, evaluate it, and write the files."""
     from luminous_sim.cdf.predicates import to_sexpr
     from luminous_sim.language.instructions import Describer
@@ -108,8 +108,9 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
             _write(Path(out_dir), scene, task, traj, text, start, world)
     finally:
         world.close()
-    return EpisodeResult(task_type, to_sexpr(task.goal), traj.success, (done, total), len(traj.low_actions),
-                         traj.planning_seconds, Path(out_dir) if out_dir else None)
+    result = EpisodeResult(task_type, to_sexpr(task.goal), traj.success, (done, total), len(traj.low_actions),
+                           traj.planning_seconds, Path(out_dir) if out_dir else None)
+    return (result, traj) if return_trajectory else result
 
 
 def _write(out: Path, scene: Scene, task, traj: Trajectory, text, start: AgentPose, world) -> None:

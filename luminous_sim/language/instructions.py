@@ -68,6 +68,8 @@ class Describer:
 
     def landmark(self, object_id: str) -> str:
         """The object named with a landmark next to it: "the counter by the window"."""
+        if "|" not in object_id:  # only a type name is known ("apple")
+            return f"the {object_id}" if object_id else "the next spot"
         t = type_of(object_id)
         here = self._position(object_id)
         name = f"the {spoken(t)}"
@@ -144,8 +146,10 @@ class Describer:
             if pa["action"] == "GotoLocation":
                 nav = [a["discrete_action"]["action"] for a in traj.low_actions if a["high_idx"] == h["high_idx"]]
                 target = next((x["planner_action"].get("receptacleObjectId") or x["planner_action"].get("objectId")
-                               for x in traj.high_pddl if x["high_idx"] == h["high_idx"] + 1), None)
-                highs.append(self.goto(nav, target or ""))
+                               for x in traj.high_pddl if x["high_idx"] == h["high_idx"] + 1
+                               and x["planner_action"]["action"] not in ("GotoLocation", "End")), None)
+                named = (h["discrete_action"].get("args") or [""])[0]
+                highs.append(self.goto(nav, target or named))
             else:
                 highs.append(self.interaction(pa["action"], pa))
         return Instructions(task_desc, highs)

@@ -92,23 +92,31 @@ class Oracle:
 
     def _execute(self, actions: list, traj: Trajectory) -> None:
         for k, hl in enumerate(actions):
-            nxt = actions[k + 1].action if k + 1 < len(actions) else "End"
-            high_idx = len(traj.high_pddl)
-            if hl.action == "GotoLocation":
-                target = hl.args.get("objectId") or hl.args.get("target")
-                pose = self._goto(target, high_idx, traj)
-                discrete = [type_name(self._next_object(actions, k) or target)]
-                planner = {"action": "GotoLocation", "location": pose.location_string()}
-            else:
-                state = self.world.interactions.state
-                steps = expand(hl.action, hl.args, state, keep_open=nxt not in ("GotoLocation", "End"))
-                for step in steps:
-                    self._interact(step, high_idx, traj)
-                planner = {"action": hl.action, **{k2: v for k2, v in hl.args.items()}}
-                discrete = [type_name(hl.args.get("objectId"))] + (
-                    [type_name(hl.args["receptacleObjectId"])] if hl.action == "PutObject" else [])
-            traj.high_pddl.append({"discrete_action": {"action": hl.action, "args": discrete},
-                                   "high_idx": high_idx, "planner_action": planner})
+            try:
+                self._execute_one(actions, k, hl, traj)
+            except ExecutionError:
+                traj.failed_subgoals.append(hl.action)
+                raise
+
+    def _execute_one(self, actions: list, k: int, hl, traj: Trajectory) -> None:
+        """Run high-level action `k`, recording its low-level actions and its high_pddl entry."""
+        nxt = actions[k + 1].action if k + 1 < len(actions) else "End"
+        high_idx = len(traj.high_pddl)
+        if hl.action == "GotoLocation":
+            target = hl.args.get("objectId") or hl.args.get("target")
+            pose = self._goto(target, high_idx, traj)
+            discrete = [type_name(self._next_object(actions, k) or target)]
+            planner = {"action": "GotoLocation", "location": pose.location_string()}
+        else:
+            state = self.world.interactions.state
+            steps = expand(hl.action, hl.args, state, keep_open=nxt not in ("GotoLocation", "End"))
+            for step in steps:
+                self._interact(step, high_idx, traj)
+            planner = {"action": hl.action, **{k2: v for k2, v in hl.args.items()}}
+            discrete = [type_name(hl.args.get("objectId"))] + (
+                [type_name(hl.args["receptacleObjectId"])] if hl.action == "PutObject" else [])
+        traj.high_pddl.append({"discrete_action": {"action": hl.action, "args": discrete},
+                               "high_idx": high_idx, "planner_action": planner})
 
     @staticmethod
     def _next_object(actions: list, k: int) -> str | None:

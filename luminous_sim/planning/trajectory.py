@@ -23,6 +23,8 @@ class Trajectory:
     replans: int = 0
     planning_seconds: float = 0.0
     failure: str = ""
+    failed_subgoals: list[str] = field(default_factory=list)
+    """High-level action types whose execution failed (before a replan)."""
 
     def add_frame(self, rgb: np.ndarray | None, high_idx: int, low_idx: int) -> None:
         if rgb is None:

@@ -186,6 +186,18 @@ class World:
                 out[oid] = m
         return out
 
+    def boxes(self) -> dict[str, list[int]]:
+        """2D boxes [x_min, y_min, x_max, y_max] of every object in view, in ALFRED's convention."""
+        from luminous_sim.world.masks import bbox_from_mask
+
+        return {oid: bbox_from_mask(m) for oid, m in self.instance_masks().items()}
+
+    def top_down(self):
+        """A labelled top-down map image of the room as it is now (PIL image)."""
+        from luminous_sim.world.views import top_down
+
+        return top_down(self.built, grid=self.nav.points())
+
     def object_distance(self, object_id: str) -> float:
         """Distance from the camera to the object's nearest point (AABB), as AI2-THOR measures it."""
         body = self.built.objects[object_id].body

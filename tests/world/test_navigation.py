@@ -99,3 +99,16 @@ def test_egl_renderer_matches_tiny_renderer_geometry(kitchen_scene):
             assert f.rgb.std() > 10
             seen[renderer] = set(w.instance_masks())
     assert len(seen["tiny"] & seen["egl"]) >= 0.8 * len(seen["tiny"])
+
+
+def test_sensors_boxes_depth_segmentation_and_map(world):
+    f = world.frame()
+    masks = world.instance_masks()
+    boxes = world.boxes()
+    assert masks and set(boxes) == set(masks)
+    for oid, (x0, y0, x1, y1) in boxes.items():
+        rows, cols = np.nonzero(masks[oid])
+        assert x0 == cols.min() and x1 == cols.max() and y0 == rows.min() + 1 and y1 == rows.max() + 1
+        assert float(np.median(f.depth[masks[oid]])) < 20.0
+    img = world.top_down()
+    assert img.size[0] > 100 and np.asarray(img).std() > 10
