@@ -79,6 +79,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     )
     p.add_argument("--beam", type=int, default=3, help="beam width (1: greedy; default 3)")
     p.add_argument("--json", action="store_true", help="print {task_desc, high_descs} JSON")
+    _no_repeat_option(p)
     p.set_defaults(func=cmd_describe)
 
     p = sub.add_parser("evaluate", help="BLEU-4 on the trajectories the checkpoint held out")
@@ -86,7 +87,17 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument("--data", required=True, type=Path, help="the folder the model was trained from")
     p.add_argument("--beam", type=int, default=3)
     p.add_argument("--all", action="store_true", help="score every trajectory under --data instead")
+    _no_repeat_option(p)
     p.set_defaults(func=cmd_evaluate)
+
+
+def _no_repeat_option(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "--no-repeat-ngram",
+        type=int,
+        default=3,
+        help="never repeat an n-gram of this length (0: off; default 3)",
+    )
 
 
 def cmd_train(args: argparse.Namespace) -> int:
@@ -131,7 +142,9 @@ def cmd_train(args: argparse.Namespace) -> int:
 
 def cmd_describe(args: argparse.Namespace) -> int:
     """Print the generated goal directive and numbered step instructions."""
-    speaker = _speaker_module("generate").Speaker.load(args.model, beam_width=args.beam)
+    speaker = _speaker_module("generate").Speaker.load(
+        args.model, beam_width=args.beam, no_repeat_ngram=args.no_repeat_ngram
+    )
     goal, steps = speaker.describe_trajectory(args.traj)
     if args.json:
         print(json.dumps({"task_desc": goal, "high_descs": steps}, indent=2))
@@ -156,7 +169,9 @@ def cmd_evaluate(args: argparse.Namespace) -> int:
             raise SpeakerError(
                 f"{args.data}: none of the checkpoint's held-out trajectories are here (use --all)"
             )
-    speaker = generate.Speaker.load(args.model, beam_width=args.beam)
+    speaker = generate.Speaker.load(
+        args.model, beam_width=args.beam, no_repeat_ngram=args.no_repeat_ngram
+    )
     ev = evaluate(speaker, trajs, beam_width=args.beam)
     print(
         json.dumps(
