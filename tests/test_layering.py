@@ -1,4 +1,5 @@
-"""Imports point down only: pybullet lives in luminous_sim/world/ and nowhere else in the package."""
+"""Imports point down (or sideways) only, as DESIGN.md's layer table says, and pybullet lives in
+luminous_sim/world/ alone. Function-level (lazy) imports count too."""
 
 from __future__ import annotations
 
@@ -7,29 +8,49 @@ from pathlib import Path
 
 PKG = Path(__file__).resolve().parents[1] / "luminous_sim"
 
+LAYER = {
+    "errors": 0, "vocab": 0, "assets": 0, "cdf": 0,
+    "scene": 1, "rooms": 1, "cssg": 1, "states": 1,
+    "world": 2,
+    "tasks": 3, "planning": 3, "language": 3,
+    "env": 4,
+    "data": 5, "eval": 5, "cli": 5, "demo": 5, "episode": 5, "scene_outputs": 5,
+}
+PYBULLET = {"pybullet", "pybullet_utils", "pybullet_data"}
+
 
 def _imports(path: Path) -> set[str]:
-    names = set()
+    names: set[str] = set()
     for node in ast.walk(ast.parse(path.read_text())):
         if isinstance(node, ast.Import):
-            names |= {a.name.split(".")[0] for a in node.names}
-        elif isinstance(node, ast.ImportFrom) and node.module:
-            names.add(node.module.split(".")[0] if node.level == 0 else "")
+            names |= {a.name for a in node.names}
+        elif isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
+            names.add(node.module)
     return names
 
 
-def test_pybullet_only_in_world():
-    offenders = [
-        str(p.relative_to(PKG)) for p in PKG.rglob("*.py")
-        if "world" not in p.relative_to(PKG).parts[:1] and {"pybullet", "pybullet_utils"} & _imports(p)
-    ]
-    assert not offenders, f"pybullet imported outside world/: {offenders}"
+def _package(path: Path) -> str:
+    rel = path.relative_to(PKG).parts
+    return rel[0].removesuffix(".py")
 
 
-def test_pure_layers_do_not_import_upper_layers():
-    lower = {"vocab", "assets", "cdf"}
-    upper = ("luminous_sim.world", "luminous_sim.env", "luminous_sim.cli", "luminous_sim.data")
-    for sub in lower:
-        for p in (PKG / sub).rglob("*.py"):
-            text = p.read_text()
-            assert not any(f"import {u}" in text or f"from {u}" in text for u in upper), p
+def test_every_package_has_a_layer():
+    packages = {_package(p) for p in PKG.rglob("*.py") if p.name != "__init__.py" or p.parent != PKG}
+    assert packages <= set(LAYER), f"add to LAYER: {sorted(packages - set(LAYER))}"
+
+
+def test_imports_point_down_and_pybullet_stays_in_world():
+    problems = []
+    for path in sorted(PKG.rglob("*.py")):
+        if path.parent == PKG and path.name == "__init__.py":
+            continue
+        own = _package(path)
+        for name in _imports(path):
+            parts = name.split(".")
+            if parts[0] in PYBULLET and own != "world":
+                problems.append(f"{path.relative_to(PKG)} imports {name} (pybullet belongs to world/)")
+            if parts[0] == "luminous_sim" and len(parts) > 1 and parts[1] in LAYER:
+                target = parts[1]
+                if LAYER[target] > LAYER[own]:
+                    problems.append(f"{path.relative_to(PKG)} (L{LAYER[own]}) imports {name} (L{LAYER[target]})")
+    assert not problems, "\n".join(problems)
