@@ -7,7 +7,7 @@ from __future__ import annotations
 import time
 from typing import Any
 
-from luminous_sim.cdf.predicates import Expr
+from luminous_sim.cdf.predicates import And, Atom, Expr, Not
 from luminous_sim.errors import PlanningError
 from luminous_sim.planning.alfred_actions import DISCRETE_NAV, interaction_api, nav_api, type_name
 from luminous_sim.planning.expand import Step, _gating_parent, expand
@@ -23,10 +23,12 @@ MAX_REPLANS = 3
 class ExecutionError(PlanningError):
     """A low-level action failed while executing the plan (the oracle replans)."""
 
-    def __init__(self, message: str, unreachable: str | None = None):
+    def __init__(self, message: str, unreachable: str | None = None, full: tuple[str, str] | None = None):
         super().__init__(message)
         self.unreachable = unreachable
         """An object no pose can see: the next plan must do without it."""
+        self.full = full
+        """(object, receptacle) that did not fit: the next plan must leave the object elsewhere."""
 
 
 def without(state, excluded: set[str]):
@@ -66,10 +68,12 @@ class Oracle:
         traj = Trajectory(init_action=self.world.agent.to_alfred())
         self._frame(traj, high_idx=0, low_idx=0)
         excluded: set[str] = set()
+        forbidden: list[Expr] = []
         for attempt in range(self.max_replans + 1):
             t0 = time.perf_counter()
+            target = And((goal, *forbidden)) if forbidden else goal
             try:
-                plan = solve(without(self.world.interactions.state, excluded), goal, names=names)
+                plan = solve(without(self.world.interactions.state, excluded), target, names=names)
             except PlanningError as exc:
                 traj.failure = str(exc)
                 break
@@ -84,6 +88,8 @@ class Oracle:
                 traj.failure = str(exc)
                 if exc.unreachable:
                     excluded.add(exc.unreachable)
+                if exc.full:
+                    forbidden.append(Not(Atom("inReceptacle", exc.full)))
         traj.high_pddl.append({"discrete_action": {"action": "NoOp", "args": []}, "high_idx": len(traj.high_pddl),
                                "planner_action": {"action": "End", "value": 1}})
         return traj
@@ -159,7 +165,9 @@ class Oracle:
     def _low(self, api: dict[str, Any], discrete: dict[str, Any], high_idx: int, traj: Trajectory) -> None:
         result = self.world.step(api)
         if not result.success:
-            raise ExecutionError(f"{api['action']} failed: {result.error}")
+            full = (api["objectId"], api["receptacleObjectId"]) if api["action"] == "PutObject" and (
+                "full" in result.error or "no place" in result.error) else None
+            raise ExecutionError(f"{api['action']} failed: {result.error}", full=full)
         traj.low_actions.append({"api_action": api, "discrete_action": discrete, "high_idx": high_idx})
         self._frame(traj, high_idx, len(traj.low_actions) - 1)
 

@@ -248,12 +248,15 @@ class Interactions:
                  if not (s.name and _needs_open(loaded_r.entry, s.name) and not joints_open)]
         if not spots:
             return f"{receptacle} has no place to put things"
-        from shapely.geometry import box as sbox
+        from luminous_sim.cssg.pose import footprint
 
-        boxes = []
+        boxes, prints = [], []
         for other in self.state.contents(receptacle):
-            lo, hi = self.world.client.getAABB(self.world.built.objects[other].body, -1)
+            loaded = self.world.built.objects[other]
+            lo, hi = self.world.client.getAABB(loaded.body, -1)
             boxes.append((lo, hi))
+            pos, yaw = self.world.built.pose_of(other)
+            prints.append(footprint(loaded.entry, pos[0], pos[1], yaw))  # oriented, not the world AABB
         order = list(range(len(spots)))
         self.rng.shuffle(order)
         for i in order:
@@ -261,9 +264,13 @@ class Interactions:
             if entry.dims[2] > spot.clearance + 1e-6:
                 continue
             top = spot.floor_z + spot.clearance
-            occupied = [sbox(lo[0], lo[1], hi[0], hi[1]) for lo, hi in boxes  # only what is on this shelf
+            occupied = [fp for (lo, hi), fp in zip(boxes, prints)  # only what is on this shelf
                         if lo[2] < top and hi[2] > spot.floor_z - 0.01]
-            got = sample_in_region(entry, spot, self.rng, occupied, tries=25)
+            got = sample_in_region(entry, spot, self.rng, occupied, tries=60)
+            if got is None and spot.gated:  # the back half too, rather than refusing
+                from dataclasses import replace as dc_replace
+
+                got = sample_in_region(entry, dc_replace(spot, gated=False), self.rng, occupied, tries=60)
             if got is None and self.type_of(receptacle) in MOVABLE:
                 got = self._stack_pose(entry, spot, boxes)
             if got is None:
