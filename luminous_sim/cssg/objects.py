@@ -53,7 +53,10 @@ def place_object(draft: SceneDraft, req: Request, by_name: dict[str, str],
             occupied[key] = [p.footprint for p in draft.placed if p.obj.parent == spot.host.id]
         hanging = spot.host.type in HANGERS
         if hanging:
-            got = None if occupied[key] else hang_pose(entry, spot)
+            host = next(p for p in draft.placed if p.obj.id == spot.host.id)
+            region = next(r for r in host.entry.regions if r["name"] == spot.name)
+            back = region["center"][1] + host.entry.link_origins[region["link"]][1] - host.entry.bbox_min[1]
+            got = None if occupied[key] else hang_pose(entry, spot, host_back=back)
         else:
             got = sample_in_region(entry, spot, draft.rng, occupied[key], facing=facing)
         if got is None:

@@ -103,12 +103,21 @@ HANGERS = frozenset({"TowelHolder", "HandTowelHolder", "ToiletPaperHanger"})
 """Receptacles that things hang on (a bar, a ring, a spindle) rather than stand in."""
 
 
-def hang_pose(entry: AssetEntry, spot: RegionSpot) -> tuple[float, float, float, float, Polygon]:
-    """The pose that hangs an object centred on a hanger's region, lengthwise along it."""
+def hang_pose(entry: AssetEntry, spot: RegionSpot, host_back: float | None = None) -> tuple[float, float, float,
+                                                                                          float, Polygon]:
+    """The pose that hangs an object centred on a hanger's region, lengthwise along it.
+
+    `host_back` is how far behind the region centre the hanger's back (the wall) is: the object is
+    moved forward until its own back clears it.
+    """
     lo, hi = np.array(entry.bbox_min[:2]), np.array(entry.bbox_max[:2])
     centre = (lo + hi) / 2
     yaw = spot.yaw
-    origin = np.array(spot.center) - rotate(centre[None], yaw)[0]
+    forward = 0.0
+    if host_back is not None:
+        forward = max(0.0, (hi[1] - lo[1]) / 2 - host_back + 0.01)
+    front = rotate(np.array([[0.0, 1.0]]), yaw)[0]
+    origin = np.array(spot.center) + front * forward - rotate(centre[None], yaw)[0]
     corners = np.array([[lo[0], lo[1]], [hi[0], lo[1]], [hi[0], hi[1]], [lo[0], hi[1]]])
     fp = Polygon(rotate(corners, yaw) + origin)
     return float(origin[0]), float(origin[1]), spot.floor_z - entry.bbox_min[2] + 0.002, yaw, fp
