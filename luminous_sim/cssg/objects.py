@@ -8,6 +8,7 @@ from shapely.geometry import Polygon
 from luminous_sim.cssg.draft import Placed, SceneDraft
 from luminous_sim.cssg.regions import HANGERS, RegionSpot, fits, hang_pose, region_spots, sample_in_region
 from luminous_sim.cssg.requests import Request
+from luminous_sim.cssg.walls import clashes
 from luminous_sim.cssg.tables import supports_for
 
 
@@ -57,6 +58,9 @@ def place_object(draft: SceneDraft, req: Request, by_name: dict[str, str],
             region = next(r for r in host.entry.regions if r["name"] == spot.name)
             back = region["center"][1] + host.entry.link_origins[region["link"]][1] - host.entry.bbox_min[1]
             got = None if occupied[key] else hang_pose(entry, spot, host_back=back)
+            if got is not None and clashes(draft, entry, got[0], got[1], got[3], got[2] + entry.bbox_min[2],
+                                           ignore=spot.host.id):
+                got = None  # a towel hanging down into what stands below its holder
         else:
             got = sample_in_region(entry, spot, draft.rng, occupied[key], facing=facing)
         if got is None:

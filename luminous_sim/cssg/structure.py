@@ -24,6 +24,8 @@ def _width(e: AssetEntry) -> float:
 
 def _add_against(draft: SceneDraft, wall: Wall, entry: AssetEntry, u_start: float, z: float = 0.0,
                  v_extra: float = 0.0, fixed: bool = True) -> SceneObject:
+    # stay within the wall, clear of the walls at both ends (a slot at a corner, a wider asset)
+    u_start = min(max(u_start, GAP), wall.length - _width(entry) - GAP)
     pose = against_wall(wall, entry, u_start, GAP, v_extra)
     return draft.add(entry, pose.x, pose.y, z - entry.bbox_min[2], pose.yaw, "fixture", fixed)
 

@@ -36,12 +36,14 @@ def _openings(draft: SceneDraft, wall: Wall) -> list[tuple[float, float]]:
     return spans
 
 
-def _clashes(draft: SceneDraft, entry: AssetEntry, x: float, y: float, yaw: float, z0: float) -> bool:
-    """Whether a wall piece at bottom height z0 would cut into furniture standing below it, or another piece."""
+def clashes(draft: SceneDraft, entry: AssetEntry, x: float, y: float, yaw: float, z0: float,
+            ignore: str | None = None) -> bool:
+    """Whether a wall piece at bottom height z0 would cut into anything placed so far (furniture, things on
+    it, another wall piece)."""
     fp = footprint(entry, x, y, yaw, margin=0.02)
     z1 = z0 + entry.dims[2]
-    for p in draft.placed:
-        if p.obj.parent is not None or p.obj.layer == "object":
+    for p in draft.placed:  # furniture, fixtures and the things standing on them
+        if p.obj.id == ignore:
             continue
         top = p.obj.position[2] + p.entry.bbox_max[2]
         bottom = p.obj.position[2] + p.entry.bbox_min[2]
@@ -52,7 +54,7 @@ def _clashes(draft: SceneDraft, entry: AssetEntry, x: float, y: float, yaw: floa
 
 def _add(draft: SceneDraft, req: Request, entry: AssetEntry, wall: Wall, u_center: float, z0: float) -> bool:
     x, y, yaw = _origin_for(wall, entry, u_center, 0.005)
-    if _clashes(draft, entry, x, y, yaw, z0):
+    if clashes(draft, entry, x, y, yaw, z0):
         return False
     draft.add(entry, x, y, z0 - entry.bbox_min[2], yaw, "decoration", fixed=True, name=req.name, states=req.states,
               color=req.colour())
