@@ -16,7 +16,10 @@ from luminous_sim.world.agent import AgentPose
 
 
 TASK_REDRAWS = 3
-"""Tasks redrawn when the sampled one needs an object that no agent pose can see."""
+"""Tasks redrawn when the sampled one cannot be done in this scene (ALFRED's generator drops those too)."""
+REDRAW_ON = ("cannot be reached", "no pose", "is full", "no plan found")
+"""Failures that say the task, not the oracle, is the problem: an object nobody can see, a receptacle
+with no room left."""
 
 
 @dataclass(frozen=True)
@@ -130,7 +133,7 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
         start = world.agent
         traj = Oracle(world, record_frames=record_frames).run(task.goal)
         for _ in range(TASK_REDRAWS):  # ALFRED's generator also drops tasks its expert cannot do
-            if traj.success or "cannot be reached" not in traj.failure and "no pose" not in traj.failure:
+            if traj.success or not any(k in f for f in traj.failures for k in REDRAW_ON):
                 break
             world.close()
             world = _prepared_world(scene, task_type)

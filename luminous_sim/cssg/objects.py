@@ -20,7 +20,8 @@ def _hosts(draft: SceneDraft, req: Request, by_name: dict[str, str]) -> tuple[li
         hosts = [p for p in draft.placed if p.obj.id == target]
         return hosts, ("surface" if support.relation == "on" else "volume")
     allowed = supports_for(req.type)
-    return [p for p in draft.placed if p.obj.type in allowed and p.obj.layer != "object"], None
+    # default objects never go in wall-mounted cabinets: nobody standing on the floor could see them there
+    return [p for p in draft.placed if p.obj.type in allowed and p.obj.layer not in ("object", "decoration")], None
 
 
 def _facing_point(draft: SceneDraft, req: Request, by_name: dict[str, str]) -> tuple[float, float] | None:

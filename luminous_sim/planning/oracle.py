@@ -18,6 +18,8 @@ from luminous_sim.world.poses import find_interaction_pose
 from luminous_sim.world.world import World
 
 MAX_REPLANS = 3
+PLAN_TIMEOUT = 8.0
+"""Seconds one (re)planning call may take; plans take milliseconds when the goal is reachable."""
 
 
 class ExecutionError(PlanningError):
@@ -73,9 +75,11 @@ class Oracle:
             t0 = time.perf_counter()
             target = And((goal, *forbidden)) if forbidden else goal
             try:
-                plan = solve(without(self.world.interactions.state, excluded), target, names=names)
+                plan = solve(without(self.world.interactions.state, excluded), target, names=names,
+                             timeout=PLAN_TIMEOUT)
             except PlanningError as exc:
                 traj.failure = str(exc)
+                traj.failures.append(traj.failure)
                 break
             finally:
                 traj.planning_seconds += time.perf_counter() - t0
@@ -86,6 +90,7 @@ class Oracle:
             except ExecutionError as exc:
                 traj.replans = attempt + 1
                 traj.failure = str(exc)
+                traj.failures.append(traj.failure)
                 if exc.unreachable:
                     excluded.add(exc.unreachable)
                 if exc.full:
@@ -154,9 +159,14 @@ class Oracle:
 
     def _interact(self, step: Step, high_idx: int, traj: Trajectory) -> None:
         look_at = step.receptacle_id or step.object_id
-        if look_at not in self.world.visible_objects():
+        inter = self.world.interactions
+        if look_at not in self.world.visible_objects() and inter.open_container_in_view(look_at) is None:
             self._goto(look_at, high_idx, traj)  # e.g. an apple that an opened door revealed elsewhere
-        mask = self.world.instance_masks().get(look_at)
+        masks = self.world.instance_masks()
+        mask = masks.get(look_at)
+        if mask is None or mask.sum() < self.world.config.min_visible_pixels:
+            container = inter.open_container_in_view(look_at)
+            mask = masks.get(container) if container else mask  # the open container it is taken from
         if mask is None:
             raise ExecutionError(f"{look_at} is not visible for {step.action}")
         api = interaction_api(step.action, step.object_id, step.receptacle_id)

@@ -25,6 +25,8 @@ class Trajectory:
     failure: str = ""
     failed_subgoals: list[str] = field(default_factory=list)
     """High-level action types whose execution failed (before a replan)."""
+    failures: list[str] = field(default_factory=list)
+    """Why each failed attempt failed, in order."""
 
     def add_frame(self, rgb: np.ndarray | None, high_idx: int, low_idx: int) -> None:
         if rgb is None:

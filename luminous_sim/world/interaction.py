@@ -101,12 +101,24 @@ class Interactions:
             return resolve_point(tuple(act["point"]), seg, inst, self.held, self._interactable)
         return None
 
+    def open_container_in_view(self, oid: str) -> str | None:
+        """The open container `oid` sits in, if that container is visible and within reach: AI2-THOR
+        lets the agent take things out of an open fridge or microwave it is looking into, however few
+        pixels of them show."""
+        parent = self.state.objects[oid].parent if oid in self.state.objects else None
+        if parent is None or not self.state.objects[parent].isOpen:
+            return None
+        if parent in self.world.visible_objects() and self.world.object_distance(oid) <= \
+                self.world.config.visibility_distance:
+            return parent
+        return None
+
     def _in_reach(self, oid: str) -> str | None:
-        """None if the object is visible and within reach, else why not."""
+        """None if the object is visible and within reach (or in an open container in view), else why not."""
         if oid not in self.world.built.objects:
             return f"unknown object id {oid!r}"
         visible = self.world.visible_objects()
-        if oid not in visible:
+        if oid not in visible and self.open_container_in_view(oid) is None:
             d = self.world.object_distance(oid)
             if d > self.world.config.visibility_distance:
                 return f"{oid} is too far away ({d:.2f} m > {self.world.config.visibility_distance} m)"

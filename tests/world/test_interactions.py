@@ -76,6 +76,12 @@ def test_cool_in_fridge_and_put_rules(world, kitchen_scene):
     pos = world.built.pose_of(apple)[0]
     lo, hi = map(np.array, world.client.getAABB(world.built.objects[fridge].body, -1))
     assert np.all(pos >= lo - 0.01) and np.all(pos <= hi + 0.01), "the apple is physically in the fridge"
+    assert not world.step({"action": "PickupObject", "objectId": apple}).success  # shut in the fridge
+    assert world.step({"action": "OpenObject", "objectId": fridge}).success
+    near = world.object_distance(apple) <= world.config.visibility_distance
+    assert (world.interactions.open_container_in_view(apple) == fridge) == near
+    r = world.step({"action": "PickupObject", "objectId": apple})
+    assert r.success == near, r.error  # out of the open fridge in view, if it is within 1.5 m
 
 
 def test_heat_in_microwave(world, kitchen_scene):
