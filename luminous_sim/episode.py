@@ -122,9 +122,7 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
     from luminous_sim.language.instructions import Describer
     from luminous_sim.planning.oracle import Oracle
     from luminous_sim.tasks.evaluate import goal_conditions
-    from luminous_sim.tasks.sample import sample_task
     from luminous_sim.tasks.templates import task_description
-    from luminous_sim.world.world import World
 
     rng = np.random.default_rng(np.random.SeedSequence([seed, 11]))
     world = _prepared_world(scene, task_type)
@@ -154,10 +152,8 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
 
 
 def _write(out: Path, scene: Scene, task, traj: Trajectory, text, start: AgentPose, world) -> None:
-    from PIL import ImageDraw
-
-    from luminous_sim.scene_outputs import png_bytes
-    from luminous_sim.world.views import _project, top_down
+    from luminous_sim.assets.objio import png_bytes
+    from luminous_sim.world.views import top_down
 
     record = {
         "task": task.to_dict(), "task_desc": text.task_desc, "high_descs": text.high_descs,
@@ -170,23 +166,7 @@ def _write(out: Path, scene: Scene, task, traj: Trajectory, text, start: AgentPo
         write_atomic(out / "frames" / f"{i:09d}.png", png_bytes(frame))
     if traj.frames:
         write_video(traj.frames, out / "video.mp4")
-    img = top_down(world.built, labels=True)
-    minx, miny, maxx, maxy = scene.room.bounds
-    client = world.client
-    w, h = img.size
-    margin, height = 0.4, 40.0
-    cx, cy = (minx + maxx) / 2, (miny + maxy) / 2
-    import math
-
-    fov = math.degrees(2 * math.atan((maxy - miny + 2 * margin) / 2 / height))
-    view = np.array(client.computeViewMatrix((cx, cy, height), (cx, cy, 0.0), [0, 1, 0])).reshape(4, 4)
-    proj = np.array(client.computeProjectionMatrixFOV(fov, w / h, height - 3.5, height + 1.0)).reshape(4, 4)
-    path = np.array([[p.x, p.y, 0.05] for p in poses_along(traj, start)])
-    px = _project(view, proj, path, w, h)
-    draw = ImageDraw.Draw(img)
-    draw.line([tuple(p) for p in px], fill=(220, 30, 30), width=3)
-    draw.ellipse([px[0][0] - 5, px[0][1] - 5, px[0][0] + 5, px[0][1] + 5], fill=(30, 160, 30))
-    draw.ellipse([px[-1][0] - 5, px[-1][1] - 5, px[-1][0] + 5, px[-1][1] + 5], fill=(220, 30, 30))
-    write_atomic(out / "top_down.png", png_bytes(img))
+    path = np.array([[p.x, p.y] for p in poses_along(traj, start)])
+    write_atomic(out / "top_down.png", png_bytes(top_down(world.built, path=path)))
     write_atomic(out / "instructions.txt", "\n".join([text.task_desc, ""] + text.high_descs) + "\n")
 

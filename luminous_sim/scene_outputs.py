@@ -3,23 +3,13 @@ physics), a labelled top-down picture with the reachable grid, and an egocentric
 
 from __future__ import annotations
 
-import io
 import json
 from pathlib import Path
 
 import numpy as np
-from PIL import Image
 
-from luminous_sim.assets.objio import write_atomic
+from luminous_sim.assets.objio import png_bytes, write_atomic
 from luminous_sim.cssg.generate import Generated
-
-
-def png_bytes(img: Image.Image | np.ndarray) -> bytes:
-    if isinstance(img, np.ndarray):
-        img = Image.fromarray(img)
-    buf = io.BytesIO()
-    img.save(buf, format="PNG")
-    return buf.getvalue()
 
 
 def write_scene_outputs(generated: Generated, out_dir: Path, physics: bool = True) -> dict:

@@ -66,6 +66,18 @@ def read_collision_obj(text: str) -> list[trimesh.Trimesh]:
     return hulls
 
 
+def png_bytes(image) -> bytes:
+    """PNG file content of a PIL image or an (H, W, 3) uint8 array."""
+    import io
+
+    from PIL import Image
+
+    img = Image.fromarray(image) if isinstance(image, np.ndarray) else image
+    buf = io.BytesIO()
+    img.save(buf, format="PNG")
+    return buf.getvalue()
+
+
 def write_atomic(path: Path, text: str | bytes) -> None:
     """Write a file so that readers see the old or the new content, never a torn one."""
     path.parent.mkdir(parents=True, exist_ok=True)

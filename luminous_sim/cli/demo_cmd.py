@@ -21,8 +21,8 @@ def _run(args: argparse.Namespace) -> int:
 
     rooms = run_demo(args.out, args.seed, tuple(args.room_types or ROOM_TYPES))
     for r in rooms:
-        print(f"{r.room_type:<11} {r.objects:3d} objects  {r.scene_json.parent}/  "
-              f"(top_down.png, {len(r.egocentric)} egocentric views; {r.settle_moved} moved while settling)")
+        print(f"{r.room_type:<11} {r.objects:3d} objects  {r.out_dir}/  (scene.json, report.json: "
+              f"{'valid' if r.valid else 'NOT valid'}, {r.moved} moved while settling; top_down.png, egocentric.png)")
     if not args.no_episode:
         ep = run_demo_episode(args.out / "episode", args.seed)
         gc = f"{ep.goal_conditions[0]}/{ep.goal_conditions[1]}"

@@ -3,7 +3,6 @@ heaviest relation, on the free-floor grid, footprint collision-free and clear of
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 
 import numpy as np
@@ -213,7 +212,3 @@ def register(ctx: FloorContext, name: str, placed_obj, entry) -> None:
     if placed_obj.type in SEGMENTED_FIXTURES:
         ctx.alternates[name] = [Placed2D(p.obj.type, p.obj.position[0], p.obj.position[1], p.obj.yaw, p.entry)
                                 for p in ctx.draft.placed if p.obj.type == placed_obj.type]
-
-
-def heading_of(yaw: float) -> int:
-    return int(round(yaw / (math.pi / 2))) % 4

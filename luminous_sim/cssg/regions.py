@@ -6,7 +6,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from shapely.geometry import Point, Polygon
+from shapely.geometry import Polygon
 
 from luminous_sim.assets.catalog import AssetEntry
 from luminous_sim.cssg.pose import rotate
@@ -91,12 +91,6 @@ def sample_in_region(
             continue
         return float(origin[0]), float(origin[1]), spot.floor_z - entry.bbox_min[2] + 0.002, yaw, fp
     return None
-
-
-def contains_point(spot: RegionSpot, x: float, y: float) -> bool:
-    """Whether a world point lies over the region's rectangle."""
-    local = rotate(np.array([[x - spot.center[0], y - spot.center[1]]]), -spot.yaw)[0]
-    return bool(abs(local[0]) <= spot.size[0] / 2 and abs(local[1]) <= spot.size[1] / 2) and Point(x, y).is_valid
 
 
 HANGERS = frozenset({"TowelHolder", "HandTowelHolder", "ToiletPaperHanger"})

@@ -12,7 +12,7 @@ import networkx as nx
 import numpy as np
 
 from luminous_sim.cdf.graph import oriented_relations, resolve_order
-from luminous_sim.cdf.relations import RELATIONS, STRUCTURE_ELEMENTS
+from luminous_sim.cdf.relations import STRUCTURE_ELEMENTS
 from luminous_sim.cdf.schema import ChallengeDefinition
 from luminous_sim.cssg.tables import layer_of, placement, room_defaults, supports_for
 from luminous_sim.vocab import room_objects

@@ -9,7 +9,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from luminous_sim.language.names import spoken, type_of
+from luminous_sim.language.names import spoken
+from luminous_sim.scene.ids import type_of_id as type_of
 from luminous_sim.language.verbs import VERBS, colour_word, preposition
 
 if TYPE_CHECKING:

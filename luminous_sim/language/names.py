@@ -17,10 +17,3 @@ def spoken(object_type: str) -> str:
         return SPECIAL[object_type]
     return " ".join(w.lower() for w in re.findall(r"[A-Z][a-z]*|[a-z]+", object_type))
 
-
-def type_of(object_id: str) -> str:
-    """The object type in an id (`Apple|...|AppleSliced_2` -> AppleSliced)."""
-    last = object_id.split("|")[-1]
-    if "_" in last and last.split("_")[0].isalpha():
-        return last.split("_")[0]
-    return object_id.split("|")[0]

@@ -5,6 +5,8 @@ from __future__ import annotations
 
 from typing import Any
 
+from luminous_sim.scene.ids import type_of_id
+
 DISCRETE_NAV = {"MoveAhead": "MoveAhead_25", "RotateLeft": "RotateLeft_90", "RotateRight": "RotateRight_90",
                 "LookUp": "LookUp_15", "LookDown": "LookDown_15"}
 
@@ -25,11 +27,5 @@ def interaction_api(action: str, object_id: str, receptacle_id: str | None = Non
 
 
 def type_name(object_id: str | None) -> str:
-    """`Apple|+00.1|...|AppleSliced_2` -> `applesliced`; `Sink|...|SinkBasin` style ids use the last type."""
-    if not object_id:
-        return ""
-    parts = object_id.split("|")
-    last = parts[-1]
-    if "_" in last and last.split("_")[0].isalpha() and not last[0] in "+-":
-        return last.split("_")[0].lower()
-    return parts[0].lower()
+    """The lower-cased type ALFRED writes in `discrete_action.args` (`...|AppleSliced_2` -> `applesliced`)."""
+    return type_of_id(object_id).lower() if object_id else ""

@@ -19,6 +19,10 @@ def thor_object_id(object_type: str, position: tuple[float, float, float], taken
     return oid
 
 
-def slice_object_id(parent_id: str, sliced_type: str, index: int) -> str:
-    """ALFRED's slice ids: `Apple|x|y|z|AppleSliced_1` (1-based)."""
-    return f"{parent_id}|{sliced_type}_{index + 1}"
+def type_of_id(object_id: str) -> str:
+    """The object type in an id: `Apple|+00.1|...` -> Apple, `Apple|...|AppleSliced_2` -> AppleSliced."""
+    last = object_id.split("|")[-1]
+    head, _, tail = last.rpartition("_")
+    if head.isalpha() and tail.isdigit():
+        return head
+    return object_id.split("|")[0]

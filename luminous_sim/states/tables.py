@@ -98,6 +98,6 @@ DEFAULT_SLICE_COUNTS: dict[str, int] = {
 def slice_id(parent_id: str, sliced_type: str, index: int) -> str:
     """ALFRED's id of a slice (0-based `index`): ``Apple|x|y|z|AppleSliced_1`` for index 0.
 
-    Same format as `luminous_sim.scene.ids.slice_object_id`, restated to keep imports light.
+    ALFRED's slice id format (`Apple|x|y|z|AppleSliced_1`).
     """
     return f"{parent_id}|{sliced_type}_{index + 1}"

@@ -9,7 +9,7 @@ import numpy as np
 from PIL import Image, ImageDraw, ImageFont
 
 from luminous_sim.assets.catalog import AssetEntry
-from luminous_sim.assets.objio import write_atomic
+from luminous_sim.assets.objio import png_bytes, write_atomic
 from luminous_sim.world.asset_loader import load_asset, set_joint, show_state
 from luminous_sim.world.camera import render
 from luminous_sim.world.client import add_floor, new_client
@@ -54,9 +54,5 @@ def render_sheet(entries: Sequence[AssetEntry], out: Path, tile: int = 160, cols
         x, y = c * tile, r * (tile + label_h)
         sheet.paste(Image.fromarray(render_thumbnail(entry, tile, states_on)), (x, y))
         draw.text((x + 3, y + tile), entry.id, fill="black", font=font)
-    import io
-
-    buf = io.BytesIO()
-    sheet.save(buf, format="PNG")
-    write_atomic(Path(out), buf.getvalue())
+    write_atomic(Path(out), png_bytes(sheet))
     return Path(out)

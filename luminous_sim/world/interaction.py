@@ -8,7 +8,6 @@ import math
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
-import pybullet as p
 
 from luminous_sim.cssg.regions import region_spots, sample_in_region
 from luminous_sim.states import effects as fx

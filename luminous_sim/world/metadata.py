@@ -5,6 +5,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any
 
+from luminous_sim.states.tables import FILLABLE
 from luminous_sim.vocab import abilities
 
 if TYPE_CHECKING:
@@ -36,7 +37,7 @@ def object_metadata(world: World, visible: dict[str, int]) -> list[dict[str, Any
             "distance": round(world.object_distance(oid), 4),
             "pickupable": ab.pickupable, "receptacle": ab.receptacle, "openable": ab.openable,
             "toggleable": ab.toggleable, "sliceable": ab.sliceable, "dirtyable": ab.dirtyable,
-            "cookable": ab.heatable, "canFillWithLiquid": st.object_type in _FILLABLE,
+            "cookable": ab.heatable, "canFillWithLiquid": st.object_type in FILLABLE,
             "moveable": ab.movable_receptacle,
             "isOpen": st.isOpen, "isToggled": st.isToggled, "isDirty": st.isDirty, "isSliced": st.isSliced,
             "isCooked": st.isCooked, "isFilledWithLiquid": st.isFilledWithLiquid, "isPickedUp": st.isPickedUp,
@@ -46,5 +47,3 @@ def object_metadata(world: World, visible: dict[str, int]) -> list[dict[str, Any
         })
     return out
 
-
-_FILLABLE = {"Mug", "Cup", "Bowl", "Pot", "Kettle", "WateringCan", "Glassbottle", "WineBottle", "HousePlant"}

@@ -20,8 +20,10 @@ def _project(view: np.ndarray, proj: np.ndarray, pts: np.ndarray, w: int, h: int
     return np.stack([(ndc[:, 0] + 1) / 2 * w, (1 - ndc[:, 1]) / 2 * h], axis=1)
 
 
-def top_down(built: BuiltScene, px_per_m: int = 90, labels: bool = True, grid: np.ndarray | None = None) -> Image.Image:
-    """A near-orthographic view from high above (north up), with object types written on them."""
+def top_down(built: BuiltScene, px_per_m: int = 90, labels: bool = True, grid: np.ndarray | None = None,
+             path: np.ndarray | None = None) -> Image.Image:
+    """A near-orthographic view from high above (north up), with object types written on them; `grid`
+    points are drawn as dots and an agent `path` ((N, 2) metres) as a red line from a green start."""
     minx, miny, maxx, maxy = built.scene.room.bounds
     margin = 0.4
     span_x, span_y = maxx - minx + 2 * margin, maxy - miny + 2 * margin
@@ -37,6 +39,11 @@ def top_down(built: BuiltScene, px_per_m: int = 90, labels: bool = True, grid: n
     draw = ImageDraw.Draw(img)
     view = np.array(client.computeViewMatrix(eye, target, [0, 1, 0])).reshape(4, 4)
     proj = np.array(client.computeProjectionMatrixFOV(fov, w / h, height - 3.5, height + 1.0)).reshape(4, 4)
+    if path is not None and len(path):
+        px = _project(view, proj, np.hstack([path, np.full((len(path), 1), 0.05)]), w, h)
+        draw.line([tuple(p) for p in px], fill=(220, 30, 30), width=3)
+        for (x, y), colour in ((px[0], (30, 160, 30)), (px[-1], (220, 30, 30))):
+            draw.ellipse([x - 5, y - 5, x + 5, y + 5], fill=colour)
     if grid is not None and len(grid):
         pts = _project(view, proj, np.hstack([grid, np.zeros((len(grid), 1))]), w, h)
         for x, y in pts:

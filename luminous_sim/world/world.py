@@ -6,7 +6,6 @@ it was (lastActionSuccess false, errorMessage set), as AI2-THOR does.
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass, field
 from typing import Any, Literal
 
@@ -179,12 +178,8 @@ class World:
     def instance_masks(self) -> dict[str, np.ndarray]:
         """Boolean mask of every object visible in the current frame."""
         bodies = self.instance_ids()
-        out = {}
-        for body, oid in self.body_to_object().items():
-            m = bodies == body
-            if m.any():
-                out[oid] = m
-        return out
+        names = self.body_to_object()
+        return {names[b]: bodies == b for b in np.unique(bodies) if b in names}
 
     def boxes(self) -> dict[str, list[int]]:
         """2D boxes [x_min, y_min, x_max, y_max] of every object in view, in ALFRED's convention."""
@@ -235,6 +230,3 @@ class World:
             "lastActionSuccess": self.last.success,
             "errorMessage": self.last.error,
         }
-
-    def yaw_of(self, object_id: str) -> float:
-        return math.degrees(self.built.pose_of(object_id)[1])
