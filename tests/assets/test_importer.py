@@ -71,22 +71,24 @@ def test_missing_file_unknown_type_and_absurd_scale(user_root, tmp_path):
         import_mesh(src, "Vase", scale=-1.0)
 
 
+def _tube(path):
+    """A cylinder wall with both caps removed: two large holes that hole-filling cannot close."""
+    tube = trimesh.creation.cylinder(0.04, 0.1, sections=12)
+    tube.update_faces(np.abs(tube.face_normals[:, 2]) < 0.5)
+    tube.remove_unreferenced_vertices()
+    tube.export(path)
+    return path
+
+
 def test_open_mesh_cannot_be_a_container(user_root, tmp_path):
-    open_cup = trimesh.creation.cylinder(0.04, 0.1, sections=12)
-    open_cup.update_faces(open_cup.face_normals[:, 2] < 0.5)  # drop the top cap and keep the rest
-    open_cup.remove_unreferenced_vertices()
-    path = tmp_path / "cup.stl"
-    open_cup.export(path)
-    result_or_error = None
-    try:
-        result_or_error = import_mesh(path, "Cup", up="z")
-    except AssetError as exc:
-        result_or_error = exc
-    # trimesh may close a single planar hole; either it was repaired into a closed cup or refused clearly
-    if isinstance(result_or_error, AssetError):
-        assert "watertight" in str(result_or_error)
-    else:
-        assert Catalog.load().get(result_or_error.asset_id).dims[2] == pytest.approx(0.1, abs=0.005)
+    with pytest.raises(AssetError, match="watertight"):
+        import_mesh(_tube(tmp_path / "cup.stl"), "Cup", up="z")
+    assert not (user_root / "catalog.json").exists()
+
+
+def test_open_mesh_is_fine_where_it_holds_nothing(user_root, tmp_path):
+    result = import_mesh(_tube(tmp_path / "vase.stl"), "Candle", up="z")
+    assert Catalog.load().get(result.asset_id).dims[2] == pytest.approx(0.1, abs=0.005)
 
 
 def test_cli_import_exit_codes(user_root, tmp_path, capsys):

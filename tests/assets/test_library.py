@@ -155,3 +155,37 @@ def test_support_surfaces_are_flat_where_declared(entry, region):
         assert len(off) <= 1, f"surface at z={cz} is not where things would rest: {off}"
     finally:
         client.disconnect()
+
+
+STATEFUL = sorted({(e.type, s) for e in ENTRIES for s in ("on", "dirty")
+                   if any(v["state"] == s for v in e.visuals)})
+
+
+@pytest.mark.parametrize("type_name,state", STATEFUL, ids=[f"{t}:{s}" for t, s in STATEFUL])
+def test_state_visuals_look_different(type_name, state):
+    """Switched on (lit lamp, running water, lit screen) or dirty, an asset renders visibly differently."""
+    from luminous_sim.world.asset_loader import load_asset, show_state
+    from luminous_sim.world.camera import render
+    from luminous_sim.world.client import new_client
+
+    entry = CATALOG.of_type(type_name)[0]
+    client = new_client()
+    try:
+        loaded = load_asset(client, entry, (0.0, 0.0, -entry.bbox_min[2]), fixed=True)
+        for j in entry.joints:  # open lids and doors so a lit laptop screen or microwave shows
+            if j["kind"] != "fixed":
+                from luminous_sim.world.asset_loader import set_joint
+
+                set_joint(client, loaded, j["name"], j["upper"])
+        lo, hi = np.array(entry.bbox_min), np.array(entry.bbox_max)
+        centre = (lo + hi) / 2 - [0, 0, entry.bbox_min[2]]
+        radius = float(np.linalg.norm(hi - lo))
+        frames = []
+        for active in (False, True):
+            show_state(client, loaded, state, active)
+            eye = centre + np.array([0.3, 1.0, 0.9]) * radius
+            frames.append(render(client, eye, centre, width=96, height=96, fov=45, near=0.01).rgb.astype(int))
+        changed = (np.abs(frames[1] - frames[0]).sum(axis=2) > 30).mean()
+        assert changed > 0.002, f"{entry.id} looks the same {state} ({changed:.4f} of pixels changed)"
+    finally:
+        client.disconnect()

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from luminous_sim.scene.ids import slice_object_id
+from luminous_sim.scene.ids import type_of_id
 from luminous_sim.states import (
     Attach,
     MoveJoint,
@@ -74,5 +74,5 @@ def test_slice_tables_agree_with_the_vocabulary_and_scene_ids():
     assert set(DEFAULT_SLICE_COUNTS) == set(SLICE_OF)
     assert all(abilities(p).sliceable for p in SLICE_OF) and abilities("Egg").sliceable and "Egg" not in SLICE_OF
     for i in range(3):
-        assert slice_id("Apple|+00.46|+00.82|+02.27", "AppleSliced", i) == slice_object_id(
-            "Apple|+00.46|+00.82|+02.27", "AppleSliced", i)
+        sid = slice_id("Apple|+00.46|+00.82|+02.27", "AppleSliced", i)
+        assert sid == f"Apple|+00.46|+00.82|+02.27|AppleSliced_{i + 1}" and type_of_id(sid) == "AppleSliced"

@@ -147,8 +147,34 @@ def test_movable_receptacle_carries_its_contents(world, kitchen_scene):
     assert gap < 0.15, "the apple rides on the plate"
     assert state(world, apple).parent == plate
     world.step("RotateLeft")
-    counter = state(world, plate)
-    assert counter.isPickedUp
+    assert state(world, plate).isPickedUp
+    counter = kitchen_scene.object(plate).parent
+    go_to(world, counter)
+    r = world.step({"action": "PutObject", "objectId": plate, "receptacleObjectId": counter})
+    assert r.success, r.error
+    assert state(world, plate).parent == counter and state(world, apple).parent == plate
+    gap = np.linalg.norm(world.built.pose_of(apple)[0][:2] - world.built.pose_of(plate)[0][:2])
+    assert gap < 0.12, "put down, the plate still carries the apple"
+
+
+def test_put_refuses_incompatible_and_full_receptacles(world, kitchen_scene, monkeypatch):
+    knife, micro = obj(kitchen_scene, "knife"), obj(kitchen_scene, "microwave")
+    go_to(world, knife)
+    assert world.step({"action": "PickupObject", "objectId": knife}).success
+    go_to(world, micro)
+    assert world.step({"action": "OpenObject", "objectId": micro}).success
+    before = world.interactions.state
+    r = world.step({"action": "PutObject", "objectId": knife, "receptacleObjectId": micro})
+    assert not r.success and "compatib" in r.error  # a knife never goes in a microwave in ALFRED
+    assert world.interactions.state == before and world.interactions.held == knife
+    counter = kitchen_scene.object(knife).parent
+    go_to(world, counter)
+    import luminous_sim.world.interaction as interaction
+
+    monkeypatch.setattr(interaction, "sample_in_region", lambda *a, **k: None)  # no free spot anywhere
+    r = world.step({"action": "PutObject", "objectId": knife, "receptacleObjectId": counter})
+    assert not r.success and "full" in r.error
+    assert world.interactions.held == knife and state(world, knife).parent is None
 
 
 def test_target_by_mask_and_point(world, kitchen_scene):

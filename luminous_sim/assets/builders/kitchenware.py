@@ -211,6 +211,17 @@ def mug(v: int, rng: np.random.Generator) -> AssetSpec:
     parts = [Part(body, "ceramic", convex=False), Part(handle, "ceramic", convex=False)]
     stain = g.cylinder(r * 0.85, 0.002, (0, 0, 0.009), sections=16)
     parts.append(Part(stain, "dirt", state="dirty"))
+    # coffee drips down the outside and a tide line inside the rim: dirt that shows from any side
+    out_r = max(p[0] for p in profile) + 0.0015
+    for k, a in enumerate(np.linspace(0.4, 2 * np.pi + 0.4, 5, endpoint=False)):
+        drip = g.ellipsoid((0.006, 0.0025, 0.012 + 0.004 * (k % 2)), (0, 0, 0))
+        parts.append(Part(g.transformed(drip, yaw=float(a), offset=(out_r * np.cos(a), out_r * np.sin(a),
+                                                                       h * (0.62 + 0.08 * (k % 3)))), "dirt",
+                          state="dirty"))
+    ring = g.container([(min(p[0] for p in profile) - 0.0045, h * 0.72), (min(p[0] for p in profile) - 0.0045,
+                                                                        h * 0.8)], wall=0.001, bottom=0.0,
+                       sections=20)
+    parts.append(Part(ring, "dirt", state="dirty"))
     inner = min(p[0] for p in profile) - 0.006
     return AssetSpec(
         "Mug", v, "small", [Link("base", parts, 0.3)],
