@@ -14,7 +14,6 @@ from luminous_sim.planning.trajectory import Trajectory
 from luminous_sim.scene.model import Scene
 from luminous_sim.world.agent import AgentPose
 
-
 TASK_REDRAWS = 3
 """Tasks redrawn when the sampled one cannot be done in this scene (ALFRED's generator drops those too)."""
 REDRAW_ON = ("cannot be reached", "no pose", "is full", "no plan found")
@@ -78,64 +77,36 @@ def _prepared_world(scene: Scene, task_type: str):
     return world
 
 
-def fits_in(world, object_type: str, receptacle_type: str) -> bool:
-    """Whether some object of `object_type` fits some region of some `receptacle_type` in the scene
-    (the compatibility table says a Pan may go in a Cabinet; a 35 cm deep wall cabinet says otherwise)."""
-    from luminous_sim.cssg.regions import HANGERS
-
-    objs = [lo.entry for oid, lo in world.built.objects.items() if lo.entry.type == object_type]
-    hosts = [lo.entry for oid, lo in world.built.objects.items() if lo.entry.type == receptacle_type]
-    if receptacle_type in HANGERS or not objs or not hosts:
-        return True
-    for o in objs:
-        w, d, h = sorted(o.dims[:2]) + [o.dims[2]]
-        for e in hosts:
-            for r in e.regions:
-                rw, rd = sorted(r["size"][:2])
-                if w <= rw and d <= rd and h <= r["size"][2] + (0.3 if r["kind"] == "surface" else 0.0):
-                    return True
-    return False
-
-
-def _fitting_task(scene: Scene, world, task_type: str, rng: np.random.Generator, tries: int = 8):
-    """A sampled task whose object (and movable receptacle) physically fit the receptacle it names."""
-    from luminous_sim.tasks.sample import sample_task
-
-    task = None
-    for _ in range(tries):
-        task = sample_task(scene, world.interactions.state, task_type, rng)
-        p = task.params
-        obj = p.object_target + ("Sliced" if p.object_sliced else "")
-        inner = p.mrecep_target or obj
-        if p.parent_target and not fits_in(world, inner, p.parent_target):
-            continue
-        if p.mrecep_target and not fits_in(world, obj, p.mrecep_target):
-            continue
-        return task
-    return task
-
-
 def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = None,
                 record_frames: bool = True, return_trajectory: bool = False):
     """Sample a `task_type` task in `scene`, solve it with the oracle, evaluate it, and write the files."""
     from luminous_sim.cdf.predicates import to_sexpr
     from luminous_sim.language.instructions import Describer
     from luminous_sim.planning.oracle import Oracle
+    from luminous_sim.planning.task_fit import draw_task
+    from luminous_sim.tasks.errors import TaskSamplingError
     from luminous_sim.tasks.evaluate import goal_conditions
     from luminous_sim.tasks.templates import task_description
 
     rng = np.random.default_rng(np.random.SeedSequence([seed, 11]))
     world = _prepared_world(scene, task_type)
+    unreachable: set[str] = set()
     try:
-        task = _fitting_task(scene, world, task_type, rng)
+        task = draw_task(scene, world, task_type, rng)
         start = world.agent
         traj = Oracle(world, record_frames=record_frames).run(task.goal)
         for _ in range(TASK_REDRAWS):  # ALFRED's generator also drops tasks its expert cannot do
             if traj.success or not any(k in f for f in traj.failures for k in REDRAW_ON):
                 break
+            unreachable.update(traj.unreachable)
+            fresh = _prepared_world(scene, task_type)
+            try:
+                redrawn = draw_task(scene, fresh, task_type, rng, excluded=unreachable)
+            except TaskSamplingError:  # nothing else to draw: the failed episode stands
+                fresh.close()
+                break
             world.close()
-            world = _prepared_world(scene, task_type)
-            task = _fitting_task(scene, world, task_type, rng)
+            world, task = fresh, redrawn
             traj = Oracle(world, record_frames=record_frames).run(task.goal)
         visible = set(world.visible_objects())
         done, total = goal_conditions(task, world.interactions.state, visible)

@@ -7,7 +7,7 @@ from __future__ import annotations
 import time
 from typing import Any
 
-from luminous_sim.cdf.predicates import And, Atom, Expr, Not
+from luminous_sim.cdf.predicates import And, Atom, Exists, Expr, Not
 from luminous_sim.errors import PlanningError
 from luminous_sim.planning.alfred_actions import DISCRETE_NAV, interaction_api, nav_api, type_name
 from luminous_sim.planning.expand import Step, _gating_parent, expand
@@ -33,23 +33,21 @@ class ExecutionError(PlanningError):
         """(object, receptacle) that did not fit: the next plan must leave the object elsewhere."""
 
 
-def without(state, excluded: set[str]):
-    """The state with objects the agent cannot get at (and nothing resting on them) left out."""
-    if not excluded:
-        return state
-    keep = {k: v for k, v in state.objects.items()
-            if k not in excluded and not any(a in excluded for a in _ancestors(state, k))}
-    if state.held in excluded:
-        return state
-    return state.replace(objects=keep)
-
-
-def _ancestors(state, oid: str) -> list[str]:
-    out, p = [], state.objects[oid].parent
-    while p is not None and p in state.objects:
-        out.append(p)
-        p = state.objects[p].parent
-    return out
+def with_forbidden(goal: Expr, forbidden: list[Expr]) -> Expr:
+    """The goal with ground conjuncts added inside its outer `exists` (equivalent, as they mention
+    none of its variables), where the planner's estimate sees them next to the atoms they contradict:
+    with one coffee table too full for the box, "box on a coffee table, box not on this one" is
+    recognised as impossible at once instead of after a search that exhausts its budget."""
+    if not forbidden:
+        return goal
+    if isinstance(goal, Exists):
+        body = goal.body.args if isinstance(goal.body, And) else (goal.body,)
+        return Exists(goal.params, And((*body, *forbidden)))
+    if isinstance(goal, And):
+        k = next((i for i, a in enumerate(goal.args) if isinstance(a, Exists)), None)
+        if k is not None:
+            return And(goal.args[:k] + (with_forbidden(goal.args[k], forbidden),) + goal.args[k + 1:])
+    return And((goal, *forbidden))
 
 
 class Oracle:
@@ -73,9 +71,9 @@ class Oracle:
         forbidden: list[Expr] = []
         for attempt in range(self.max_replans + 1):
             t0 = time.perf_counter()
-            target = And((goal, *forbidden)) if forbidden else goal
+            target = with_forbidden(goal, forbidden)
             try:
-                plan = solve(without(self.world.interactions.state, excluded), target, names=names,
+                plan = solve(self.world.interactions.state.without(excluded), target, names=names,
                              timeout=PLAN_TIMEOUT)
             except PlanningError as exc:
                 traj.failure = str(exc)
@@ -93,6 +91,7 @@ class Oracle:
                 traj.failures.append(traj.failure)
                 if exc.unreachable:
                     excluded.add(exc.unreachable)
+                    traj.unreachable.append(exc.unreachable)
                 if exc.full:
                     forbidden.append(Not(Atom("inReceptacle", exc.full)))
         traj.high_pddl.append({"discrete_action": {"action": "NoOp", "args": []}, "high_idx": len(traj.high_pddl),

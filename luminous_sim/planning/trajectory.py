@@ -27,6 +27,8 @@ class Trajectory:
     """High-level action types whose execution failed (before a replan)."""
     failures: list[str] = field(default_factory=list)
     """Why each failed attempt failed, in order."""
+    unreachable: list[str] = field(default_factory=list)
+    """Objects no pose could see (left out of later plans, and of later task draws)."""
 
     def add_frame(self, rgb: np.ndarray | None, high_idx: int, low_idx: int) -> None:
         if rgb is None:

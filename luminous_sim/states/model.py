@@ -208,6 +208,15 @@ class WorldState:
             obj = self.objects.get(obj.parent)
         return out
 
+    def without(self, excluded: set[str] | frozenset[str]) -> WorldState:
+        """The state with some objects (and everything resting on or in them) left out; the held
+        object is never left out."""
+        if not excluded:
+            return self
+        gone = {k for k in self.objects if k != self.held and (
+            k in excluded or any(a in excluded for a in self.ancestors(k)))}
+        return self.replace(objects={k: v for k, v in self.objects.items() if k not in gone})
+
     def replace(self, **changes: Any) -> WorldState:
         """A copy with some fields changed."""
         return dataclasses.replace(self, **changes)

@@ -51,8 +51,10 @@ PREDICATE_FUNCTIONS: dict[str, _Pred] = {
     "inReceptacleObject": lambda s, a: (
         s[a[1]].object_type in _MOVABLE and in_receptacle(s, a[0], a[1])
     ),
-    "isHot": lambda s, a: a[0] in s.heated or s[a[0]].temperature == "Hot",
-    "isCool": lambda s, a: a[0] in s.cooled or s[a[0]].temperature == "Cold",
+    # ALFRED's bookkeeping, as its evaluator counts: heated/cooled by the agent, so the slices of a
+    # heated apple (new objects) are not "hot" however warm they are.
+    "isHot": lambda s, a: a[0] in s.heated,
+    "isCool": lambda s, a: a[0] in s.cooled,
     "isClean": lambda s, a: is_clean(s, a[0]),
     "isDirty": lambda s, a: s[a[0]].isDirty,
     "isSliced": lambda s, a: s[a[0]].isSliced,

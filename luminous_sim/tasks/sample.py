@@ -10,6 +10,7 @@ still feasible.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import replace
 
 import numpy as np
@@ -135,6 +136,7 @@ def sample_task(
     *,
     sliced: bool | None = None,
     closed_receptacles: bool = False,
+    keep: Callable[[PddlParams], bool] | None = None,
 ) -> TaskInstance:
     """Draw a feasible ALFRED task of a type for a scene, with a templated instruction.
 
@@ -145,11 +147,19 @@ def sample_task(
         rng: every draw comes from it (same seed, same task).
         sliced: force the sliced (True) or unsliced (False) variant; None lets the draw decide.
         closed_receptacles: add ALFRED's "every receptacle closed" conjunct to the goal.
+        keep: a further filter on the candidates (e.g. what the physical world can support).
 
     Raises:
         TaskSamplingError: no task of the type is feasible; the message says why.
     """
-    params = draw_params(feasible_params(scene, state, task_type, sliced), rng)
+    cands = feasible_params(scene, state, task_type, sliced)
+    if keep is not None:
+        kept = [p for p in cands if keep(p)]
+        if not kept:
+            raise TaskSamplingError(f"no {task_type} task in {_where(scene)}: none of the {len(cands)} "
+                                    "candidates passes the filter (e.g. no free spot in the receptacle)")
+        cands = kept
+    params = draw_params(cands, rng)
     task = TaskInstance(
         task_type, params, goal_for(params, task_type, closed_receptacles), scene.seed
     )

@@ -14,7 +14,7 @@ from luminous_sim.states import effects as fx
 from luminous_sim.states import rules
 from luminous_sim.states.model import ObjectState, WorldState
 from luminous_sim.world.asset_loader import base_link_pose, load_asset, set_joint, show_state
-from luminous_sim.world.masks import rle_to_mask, resolve_point, resolve_target
+from luminous_sim.world.masks import resolve_point, resolve_target, rle_to_mask
 
 if TYPE_CHECKING:
     from luminous_sim.world.world import StepResult, World
@@ -33,11 +33,17 @@ def initial_state(world: World) -> WorldState:
     for o in world.scene.objects:
         objs[o.id] = ObjectState(
             o.id, o.type, isOpen=bool(o.states.get("isOpen", False)), isToggled=bool(o.states.get("isToggled", False)),
-            isDirty=bool(o.states.get("isDirty", False)), parent=o.parent,
+            isDirty=bool(o.states.get("isDirty", False)), parent=o.parent, temperature=_temperature(o.states),
+            isFilledWithLiquid=bool(o.states.get("isFilled", False)),
         )
     slices = {oid: loaded.entry.slices["count"] for oid, loaded in world.built.objects.items() if loaded.entry.slices}
     return WorldState(objs, held=None, heated=frozenset(), cooled=frozenset(), cleaned=frozenset(),
                       controls=_controls(world), faucet_basin=_faucet_basins(world), slice_counts=slices)
+
+
+def _temperature(states: dict) -> str:
+    """A CDF's initial isHot/isCold as a temperature (physical only: ALFRED's isHot means "was heated")."""
+    return "Hot" if states.get("isHot") else "Cold" if states.get("isCold") else "RoomTemp"
 
 
 def _nearest(world: World, oid: str, candidates: list[str]) -> str | None:
@@ -158,7 +164,7 @@ class Interactions:
         if name in SETTLE_AFTER:
             self._settle()
         elif self.held:
-            self._carry(self.held)
+            self.carry(self.held)
         return StepResult(True, "", act)
 
     # ------------------------------------------------------------------ physical side
@@ -167,7 +173,7 @@ class Interactions:
         for _ in range(self.world.config.interaction_steps):
             self.world.client.stepSimulation()
         if self.held:
-            self._carry(self.held)
+            self.carry(self.held)
 
     def _apply_physical(self, name: str, effects: list, target: str, receptacle: str | None) -> str | None:
         if name == "PutObject":
@@ -232,7 +238,7 @@ class Interactions:
         old = base_link_pose(self.world.client, body)
         self._move_rigidly(family, old, self._hand_frame())
 
-    def _carry(self, oid: str) -> None:
+    def carry(self, oid: str) -> None:
         """Keep the held object (and what it carries) in front of the camera after the agent moves."""
         body = self.world.built.objects[oid].body
         self._move_rigidly(self._family(oid), base_link_pose(self.world.client, body), self._hand_frame())
@@ -249,11 +255,15 @@ class Interactions:
                                   asset=self.world.built.objects[receptacle].entry.id, position=pos, layer="object")
         return base.model_copy(update={"position": tuple(round(v, 4) for v in pos), "yaw": round(yaw, 5)})
 
-    def _place(self, oid: str, receptacle: str) -> str | None:
-        """Put the held object at a free, stable spot of the receptacle's open regions."""
+    def find_spot(self, oid: str, receptacle: str, rng: np.random.Generator | None = None,
+                  assume_open: bool = False) -> tuple[float, float, float, float] | str:
+        """A free, stable pose (x, y, z, yaw) for `oid` in the receptacle's open regions, or why there
+        is none. Nothing moves; with `rng` given the world's own random stream is left untouched;
+        `assume_open` counts the regions behind a closed door too."""
+        rng = self.rng if rng is None else rng
         loaded_r = self.world.built.objects[receptacle]
         entry = self.world.built.objects[oid].entry
-        joints_open = self.state.objects[receptacle].isOpen
+        joints_open = assume_open or self.state.objects[receptacle].isOpen
         host = self._host_now(receptacle)
         spots = [s for s in region_spots(host, loaded_r.entry)
                  if not (s.name and _needs_open(loaded_r.entry, s.name) and not joints_open)]
@@ -263,39 +273,59 @@ class Interactions:
 
         boxes, prints = [], []
         for other in self.state.contents(receptacle):
+            if other == oid:
+                continue
             loaded = self.world.built.objects[other]
             lo, hi = self.world.client.getAABB(loaded.body, -1)
             boxes.append((lo, hi))
             pos, yaw = self.world.built.pose_of(other)
             prints.append(footprint(loaded.entry, pos[0], pos[1], yaw))  # oriented, not the world AABB
-        order = list(range(len(spots)))
-        self.rng.shuffle(order)
-        for i in order:
+        for i in self._spot_order(spots, rng):
             spot = spots[i]
             if entry.dims[2] > spot.clearance + 1e-6:
                 continue
             top = spot.floor_z + spot.clearance
             occupied = [fp for (lo, hi), fp in zip(boxes, prints)  # only what is on this shelf
                         if lo[2] < top and hi[2] > spot.floor_z - 0.01]
-            got = sample_in_region(entry, spot, self.rng, occupied, tries=60)
+            got = sample_in_region(entry, spot, rng, occupied, tries=60)
             if got is None and spot.gated:  # the back half too, rather than refusing
                 from dataclasses import replace as dc_replace
 
-                got = sample_in_region(entry, dc_replace(spot, gated=False), self.rng, occupied, tries=60)
+                got = sample_in_region(entry, dc_replace(spot, gated=False), rng, occupied, tries=60)
             if got is None and self.type_of(receptacle) in MOVABLE:
                 got = self._stack_pose(entry, spot, boxes)
-            if got is None:
-                continue
-            x, y, z, yaw, _ = got
-            body = self.world.built.objects[oid].body
-            c = self.world.client
-            new = ((x, y, z), c.getQuaternionFromEuler([0, 0, yaw]))
-            family = self._family(oid)
-            self._move_rigidly(family, base_link_pose(c, body), new)
-            for o in family:
-                self._set_held_physics(o, False)
-            return None
+            if got is not None:
+                return got[:4]
         return f"{receptacle} is full: no free, stable spot for {oid}"
+
+    def _spot_order(self, spots: list, rng: np.random.Generator) -> list[int]:
+        """Regions to try: those the agent could see and reach from here first (in random order), as
+        AI2-THOR puts things where the agent looks, so they can be taken out again from the same spot."""
+        order = list(range(len(spots)))
+        rng.shuffle(order)
+        eye = np.array(self.world.agent.eye())
+        reach = self.world.config.visibility_distance
+
+        def far(i: int) -> bool:
+            sp = spots[i]
+            return float(np.linalg.norm(np.array([*sp.center, sp.floor_z]) - eye)) > reach
+
+        return sorted(order, key=far)
+
+    def _place(self, oid: str, receptacle: str) -> str | None:
+        """Put the held object at a free, stable spot of the receptacle's open regions."""
+        got = self.find_spot(oid, receptacle)
+        if isinstance(got, str):
+            return got
+        x, y, z, yaw = got
+        body = self.world.built.objects[oid].body
+        c = self.world.client
+        new = ((x, y, z), c.getQuaternionFromEuler([0, 0, yaw]))
+        family = self._family(oid)
+        self._move_rigidly(family, base_link_pose(c, body), new)
+        for o in family:
+            self._set_held_physics(o, False)
+        return None
 
     def _stack_pose(self, entry, spot, boxes) -> tuple | None:
         """A bowl, plate, mug or pan takes more than fits side by side: the next thing goes on top of

@@ -17,7 +17,6 @@ if TYPE_CHECKING:
 def candidate_poses(world: World, object_id: str, reach: float | None = None) -> list[AgentPose]:
     """Grid poses near the object, facing it (cardinal heading), pitched at it; nearest first."""
     reach = reach or world.config.visibility_distance
-    pos, _ = world.built.pose_of(object_id)
     body = world.built.objects[object_id].body
     lo, hi = map(np.array, world.client.getAABB(body, -1))
     center = (lo + hi) / 2
@@ -27,12 +26,17 @@ def candidate_poses(world: World, object_id: str, reach: float | None = None) ->
         if d > reach + 0.3:
             continue
         yaw = math.degrees(math.atan2(center[0] - x, center[1] - y)) % 360
-        rot = int(round(yaw / 90)) % 4 * 90
+        rot = round(yaw / 90) % 4 * 90
+        off = (yaw - rot + 180) % 360 - 180
+        # an object 20-45 degrees off the nearest heading may sit at the edge of the 60-degree view:
+        # the other heading beside it is tried too, after the straight-on poses at that distance
+        headings = [(rot, 0.0)] + ([((rot + (90 if off > 0 else -90)) % 360, 0.25)] if abs(off) > 20 else [])
         pitch = math.degrees(math.atan2(CAMERA_HEIGHT - center[2], max(d, 0.05)))
         base = int(np.clip(round(pitch / 15) * 15, HORIZON_MIN, HORIZON_MAX))
-        for h in dict.fromkeys([base, min(base + 15, HORIZON_MAX), max(base - 15, HORIZON_MIN)]):
-            out.append((abs(d - 1.0), d, AgentPose(float(x), float(y), rot, h)))
-    out.sort(key=lambda t: (t[0], t[1], t[2].x, t[2].y, t[2].horizon))
+        for r, penalty in headings:
+            for h in dict.fromkeys([base, min(base + 15, HORIZON_MAX), max(base - 15, HORIZON_MIN)]):
+                out.append((abs(d - 1.0) + penalty, d, AgentPose(float(x), float(y), r, h)))
+    out.sort(key=lambda t: (t[0], t[1], t[2].x, t[2].y, t[2].rotation, t[2].horizon))
     return [p for _, _, p in out]
 
 
@@ -58,15 +62,20 @@ def find_interaction_pose(world: World, object_id: str, limit: int = 80) -> Agen
     """
     saved = world.agent
     body = world.built.objects[object_id].body
+    held = world.interactions.held
     try:
         for pose in candidate_poses(world, object_id)[:limit]:
+            world.agent = pose
+            if held is not None:  # what the agent carries hangs in front of the camera and may hide it
+                world.interactions.carry(held)
             if not _seen_in_preview(world, pose, body):
                 continue
-            world.agent = pose
             world._frame = None
             if object_id in world.visible_objects():
                 return pose
         return None
     finally:
         world.agent = saved
+        if held is not None:
+            world.interactions.carry(held)
         world._frame = None

@@ -111,7 +111,7 @@ class World:
             if name in NAVIGATION:
                 result = self._navigate(name, act)
                 if result.success and self.interactions.held:
-                    self.interactions._carry(self.interactions.held)
+                    self.interactions.carry(self.interactions.held)
             elif name in INTERACTION:
                 result = self.interactions.run(name, act)
             else:

@@ -85,3 +85,36 @@ def test_budget_exhaustion_is_a_planning_error():
     )
     with pytest.raises(PlanningError, match="budget"):
         solve(kitchen(), goal, {"table": "DiningTable|1"}, max_expansions=3)
+
+
+def test_a_forbidden_receptacle_that_is_the_only_one_is_refused_at_once():
+    """The oracle forbids a receptacle that turned out full; with no other of its type the planner
+    must say so at once, not search until its budget runs out."""
+    from luminous_sim.cdf.predicates import Atom, Not
+    from luminous_sim.planning.oracle import with_forbidden
+
+    goal = goal_for(PddlParams("KeyChain", "Shelf", mrecep_target="Box"), "pick_and_place_with_movable_recep")
+    forbidden = with_forbidden(goal, [Not(Atom("inReceptacle", ("Box|1", "Shelf|1")))])
+    t0 = time.perf_counter()
+    with pytest.raises(PlanningError, match=r"and its negation|no binding"):
+        solve(bedroom(), forbidden)
+    assert time.perf_counter() - t0 < 1.0
+    solve(bedroom(), goal)  # without the forbidden pair it is solvable
+
+
+def test_with_forbidden_keeps_the_goal_equivalent():
+    from luminous_sim.cdf.predicates import And, Atom, Exists, Not, to_sexpr
+    from luminous_sim.planning.oracle import with_forbidden
+
+    goal = goal_for(PddlParams("Apple", "Fridge"), "pick_and_place_simple")
+    ban = Not(Atom("inReceptacle", ("Apple|1", "Fridge|1")))
+    assert with_forbidden(goal, []) is goal
+    pushed = with_forbidden(goal, [ban])
+    assert isinstance(pushed, Exists) and ban in pushed.body.args
+    wrapped = with_forbidden(And((Atom("isOpen", ("Fridge|1",)), goal)), [ban])
+    assert isinstance(wrapped.args[1], Exists) and ban in wrapped.args[1].body.args
+    assert to_sexpr(with_forbidden(Atom("isOpen", ("Fridge|1",)), [ban])).startswith("(and")
+    state = kitchen()
+    plan = solve(state, pushed)
+    assert "Fridge|1" not in {a.args.get("receptacleObjectId") for a in plan.actions if a.action == "PutObject"} \
+        or len(state.of_type("Apple")) > 1

@@ -75,9 +75,10 @@ def test_state_predicates():
     )
     names = NAMES | {"potato": "Potato|1", "knife": "Knife|1", "mw": "Microwave|1", "mug2": "Mug|2"}
     for text, expected in [
-        ("(isHot apple)", True),
+        # warm or cold is not enough: isHot/isCool mean "heated/cooled by the agent", as ALFRED counts
+        ("(isHot apple)", False),
         ("(isCool apple)", False),
-        ("(isCool potato)", True),
+        ("(isCool potato)", False),
         ("(isOpen fridge)", True),
         ("(isDirty mug)", True),
         ("(isClean mug)", False),
@@ -91,6 +92,15 @@ def test_state_predicates():
         ("(isSliced apple)", False),
     ]:
         assert goal_satisfied(parse_expr(text), s, names) is expected, text
+
+
+def test_slices_of_a_heated_apple_are_not_heated():
+    """ALFRED's evaluator counts heated ids; slices are new objects, so the expert slices first."""
+    s = K.replace(heated=frozenset({"Apple|1"}))
+    s = apply(s, [Slice("Apple|1", "AppleSliced", 2)])
+    assert sat("(isSliced s)", s, {"s": "Apple|1|AppleSliced_1"})
+    assert not sat("(isHot s)", s, {"s": "Apple|1|AppleSliced_1"})
+    assert sat("(isHot s)", s.replace(heated=frozenset({"Apple|1|AppleSliced_1"})), {"s": "Apple|1|AppleSliced_1"})
 
 
 def test_bookkeeping_sets_make_hot_cool_clean():

@@ -98,6 +98,8 @@ class _Node:
             assert isinstance(e.arg, Atom), "the goal must be in negation normal form"
             return sum(self.literal(e.arg.pred, g, False) for g in self._ground(e.arg, env))
         if isinstance(e, And):
+            if self._contradicts(e, env):
+                return INF
             total = 0.0
             for a in e.args:
                 total += self.cost(a, env)
@@ -127,6 +129,22 @@ class _Node:
                     break
             return total
         raise TypeError(f"not a goal expression: {e!r}")
+
+    def _contradicts(self, e: And, env: dict[str, str]) -> bool:
+        """Whether the conjunction asks for a ground atom and for its negation."""
+        pos, neg = set(), set()
+        for a in e.args:
+            atom, bucket = (a, pos) if isinstance(a, Atom) else (a.arg, neg) if isinstance(a, Not) else (None, None)
+            if atom is None:
+                continue
+            ground = self._ground(atom, env)
+            if len(ground) == 1:
+                bucket.add((atom.pred, ground[0]))
+        clash = pos & neg
+        if clash:
+            pred, ids = min(clash)
+            self.est.reasons.append(f"the goal asks for ({pred} {' '.join(ids)}) and its negation")
+        return bool(clash)
 
     def _ground(self, atom: Atom, env: Mapping[str, str]) -> list[tuple[str, ...]]:
         choices = [

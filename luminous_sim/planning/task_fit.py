@@ -1,0 +1,61 @@
+"""Which of a scene's symbolically feasible tasks its world can physically support.
+
+The task sampler reasons over types and the compatibility table (a Pan may go in a Cabinet); the
+world knows that this 35 cm deep wall cabinet is too shallow for this pan, and that the side table is
+already covered. ALFRED's generator drops tasks its expert fails; we rule most of them out up front.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+
+import numpy as np
+
+from luminous_sim.cssg.regions import HANGERS
+from luminous_sim.scene.model import Scene
+from luminous_sim.tasks.model import PddlParams, TaskInstance
+from luminous_sim.tasks.sample import sample_task
+from luminous_sim.vocab import parent_type
+from luminous_sim.world.world import World
+
+SPOT_SEED = 2024
+"""Seed of the dry-run placements (kept apart from the world's own random stream)."""
+
+
+def has_room(world: World, object_type: str, receptacle_type: str, excluded: Iterable[str] = ()) -> bool:
+    """Whether some object of `object_type` has a free, stable spot in some `receptacle_type` now
+    (doors counted as open). Slices that do not exist yet are stood in for by their whole."""
+    state = world.interactions.state.without(set(excluded))
+    objs = state.of_type(object_type) or state.of_type(parent_type(object_type) or "")
+    hosts = state.of_type(receptacle_type)
+    if receptacle_type in HANGERS or not objs or not hosts:
+        return True
+    rng = np.random.default_rng(SPOT_SEED)
+    return any(not isinstance(world.interactions.find_spot(o, h, rng, assume_open=True), str)
+               for o in objs for h in hosts if o != h)
+
+
+def physically_feasible(world: World, params: PddlParams, excluded: Iterable[str] = ()) -> bool:
+    """The task's object (or its movable receptacle) has room in the target receptacle, and the
+    object has room in its movable receptacle."""
+    obj = params.object_target + ("Sliced" if params.object_sliced else "")
+    inner = params.mrecep_target or obj
+    if params.parent_target and not has_room(world, inner, params.parent_target, excluded):
+        return False
+    return not (params.mrecep_target and not has_room(world, obj, params.mrecep_target, excluded))
+
+
+def draw_task(scene: Scene, world: World, task_type: str, rng: np.random.Generator,
+              excluded: Iterable[str] = ()) -> TaskInstance:
+    """A feasible task of `task_type` that the world can physically support, leaving out `excluded`
+    objects (ones the oracle found no pose to see). Raises TaskSamplingError when there is none."""
+    excluded = set(excluded)
+    verdict: dict[tuple, bool] = {}
+
+    def fits(p: PddlParams) -> bool:
+        key = (p.object_target, p.object_sliced, p.mrecep_target, p.parent_target)
+        if key not in verdict:
+            verdict[key] = physically_feasible(world, p, excluded)
+        return verdict[key]
+
+    return sample_task(scene, world.interactions.state.without(excluded), task_type, rng, keep=fits)
