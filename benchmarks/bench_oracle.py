@@ -5,6 +5,8 @@ length per type next to ALFRED's (spec 2.3, train means).
     python benchmarks/bench_oracle.py --n 50 --jobs 2   # the issue's figure (about 5 s per episode)
     python benchmarks/bench_oracle.py --n 5
 
+Rooms are default rooms of a room type the task type allows; where none of three supports a task of
+the type (two of a kind for pick_two), a room is generated for a drawn task ('for task' column).
 Every episode is appended to a JSON-lines file (--out) as it finishes; a rerun with the same file
 skips the episodes already there, so a long run can be stopped and resumed.
 """
@@ -30,35 +32,30 @@ ROOMS = {"pick_and_place_simple": ["Kitchen", "LivingRoom", "Bedroom", "Bathroom
          "look_at_obj_in_light": ["LivingRoom", "Bedroom"], "pick_clean_then_place_in_recep": ["Kitchen", "Bathroom"],
          "pick_heat_then_place_in_recep": ["Kitchen"], "pick_cool_then_place_in_recep": ["Kitchen"],
          "pick_and_place_with_movable_recep": ["Kitchen", "LivingRoom", "Bedroom"]}
-SCENE_TRIES = 4
-"""Scenes drawn for one task slot until one supports a task of the type (the rest count as 'no task')."""
 
 
 def episode(task_type: str, k: int) -> dict:
-    """Run task slot `k` of `task_type` in a freshly generated default room and say how it went."""
-    from luminous_sim.cssg.baseline import empty_cdf
-    from luminous_sim.cssg.generate import generate
+    """Run task slot `k` of `task_type` in a generated room that supports such a task."""
     from luminous_sim.episode import run_episode
     from luminous_sim.errors import LuminousError
+    from luminous_sim.tasks.scenes import scene_for_task
 
     room = ROOMS[task_type][k % len(ROOMS[task_type])]
-    no_task = 0
-    for attempt in range(SCENE_TRIES):
-        seed = 1000 + k + 100_000 * attempt
-        scene = generate(empty_cdf(room), seed=seed).scene
+    seed = 1000 + k
+    try:
+        scene = scene_for_task(task_type, room, seed)
         t0 = time.perf_counter()
-        try:
-            r, traj = run_episode(scene, task_type, seed=k, record_frames=False, return_trajectory=True)
-        except LuminousError:
-            no_task += 1  # no feasible task of this type in this scene
-            continue
-        ok_subgoals = [h["planner_action"]["action"] for h in traj.high_pddl if h["planner_action"]["action"] != "End"]
-        return {"type": task_type, "k": k, "room": room, "scene_seed": seed, "goal": r.goal, "success": r.success,
-                "goal_conditions": list(r.goal_conditions), "low_actions": r.low_actions,
-                "planning_seconds": r.planning_seconds, "episode_seconds": time.perf_counter() - t0,
-                "subgoals_ok": ok_subgoals, "subgoals_failed": traj.failed_subgoals, "failures": traj.failures,
-                "replans": traj.replans, "no_task": no_task}
-    return {"type": task_type, "k": k, "room": room, "no_task": no_task, "success": None}
+        r, traj = run_episode(scene, task_type, seed=k, record_frames=False, return_trajectory=True)
+    except LuminousError as exc:  # no room of this type supports the task, or none fits physically
+        return {"type": task_type, "k": k, "room": room, "scene_seed": seed, "success": None, "no_task": 1,
+                "why": str(exc)}
+    ok_subgoals = [h["planner_action"]["action"] for h in traj.high_pddl if h["planner_action"]["action"] != "End"]
+    return {"type": task_type, "k": k, "room": room, "scene_seed": seed, "task_driven": bool(scene.source),
+            "goal": r.goal, "success": r.success,
+            "goal_conditions": list(r.goal_conditions), "low_actions": r.low_actions,
+            "planning_seconds": r.planning_seconds, "episode_seconds": time.perf_counter() - t0,
+            "subgoals_ok": ok_subgoals, "subgoals_failed": traj.failed_subgoals, "failures": traj.failures,
+            "replans": traj.replans, "no_task": 0}
 
 
 def _median(records: list[dict], key: str) -> float:
@@ -70,7 +67,7 @@ def summarise(records: list[dict], types: list[str]) -> None:
     for r in records:
         by_type[r["type"]].append(r)
     subgoal_ok, subgoal_all = Counter(), Counter()
-    print(f"{'task type':36}{'success':>16}{'goal-cond.':>12}{'no task':>9}{'plan (med)':>12}"
+    print(f"{'task type':36}{'success':>16}{'goal-cond.':>12}{'no task':>9}{'for task':>9}{'plan (med)':>12}"
           f"{'low actions':>13}{'ALFRED':>8}{'episode':>10}")
     total_ok = total_n = 0
     for t in types:
@@ -87,7 +84,8 @@ def summarise(records: list[dict], types: list[str]) -> None:
         mean_len = statistics.mean(r["low_actions"] for r in rs) if rs else float("nan")
         sr = f"{ok}/{len(rs)} ({100 * ok / len(rs):.0f}%)" if rs else "n/a"
         gc = f"{100 * done / tot:.0f}%" if tot else "n/a"
-        print(f"{t:36}{sr:>16}{gc:>12}{skipped:>9}{1000 * _median(rs, 'planning_seconds'):>10.0f}ms"
+        driven = sum(r.get("task_driven", False) for r in rs)
+        print(f"{t:36}{sr:>16}{gc:>12}{skipped:>9}{driven:>9}{1000 * _median(rs, 'planning_seconds'):>10.0f}ms"
               f"{mean_len:>13.1f}{ALFRED_MEAN_LENGTH[t]:>8.1f}{_median(rs, 'episode_seconds'):>9.1f}s")
     if total_n:
         print(f"{'all':36}{f'{total_ok}/{total_n} ({100 * total_ok / total_n:.1f}%)':>16}")
