@@ -14,6 +14,7 @@ from luminous_sim.states import effects as fx
 from luminous_sim.states import rules
 from luminous_sim.states.model import ObjectState, WorldState
 from luminous_sim.world.asset_loader import base_link_pose, load_asset, set_joint, show_state
+from luminous_sim.world.doors import hits_agent, swept_boxes
 from luminous_sim.world.masks import resolve_point, resolve_target, rle_to_mask
 
 if TYPE_CHECKING:
@@ -154,6 +155,9 @@ class Interactions:
         if why:
             return StepResult(False, why, act)
         err = rules.check(name, self.state, target, receptacle)
+        if not err and name == "OpenObject" and hits_agent(swept_boxes(self.world, target), self.world.agent.x,
+                                                            self.world.agent.y):
+            err = f"{target} cannot be opened: it would hit the agent (step back first)"
         if err:
             return StepResult(False, err, act)
         effects = rules.effects(name, self.state, target, receptacle)

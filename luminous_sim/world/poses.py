@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from luminous_sim.world.agent import CAMERA_HEIGHT, HORIZON_MAX, HORIZON_MIN, AgentPose
+from luminous_sim.world.doors import hits_agent, swept_boxes
 
 if TYPE_CHECKING:
     from luminous_sim.world.world import World
@@ -55,7 +56,8 @@ def _seen_in_preview(world: World, pose: AgentPose, body: int) -> bool:
 
 
 def find_interaction_pose(world: World, object_id: str, limit: int = 80) -> AgentPose | None:
-    """The first candidate pose from which the object is visible (>= 10 px at full size) and within reach.
+    """The first candidate pose from which the object is visible (>= 10 px at full size) and within reach,
+    and, for a closed door, drawer or lid, clear of its swing.
 
     Candidates are screened with a 100x100 segmentation preview; only those that show the object at
     all get the full-size visibility check.
@@ -63,8 +65,12 @@ def find_interaction_pose(world: World, object_id: str, limit: int = 80) -> Agen
     saved = world.agent
     body = world.built.objects[object_id].body
     held = world.interactions.held
+    state = world.interactions.state.objects.get(object_id)
+    sweep = swept_boxes(world, object_id) if state is not None and not state.isOpen else []
     try:
         for pose in candidate_poses(world, object_id)[:limit]:
+            if sweep and hits_agent(sweep, pose.x, pose.y):
+                continue  # it will be opened from here: its door must swing clear of the agent
             world.agent = pose
             if held is not None:  # what the agent carries hangs in front of the camera and may hide it
                 world.interactions.carry(held)
