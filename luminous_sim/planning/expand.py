@@ -6,6 +6,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from luminous_sim.errors import PlanningError
 from luminous_sim.states.model import WorldState
 from luminous_sim.states.tables import GATING_OPENABLE
 
@@ -29,46 +30,49 @@ def _gating_parent(state: WorldState, oid: str) -> str | None:
     return None
 
 
-def expand(action: str, args: dict, state: WorldState, keep_open: bool) -> list[Step]:
+def expand(action: str, args: dict, state: WorldState, keep_open: bool = False,
+           auto_doors: bool = True) -> list[Step]:
     """Low-level steps of one high-level action, given the state before it.
 
     `keep_open`: the next high-level action is neither GotoLocation nor End, so the automatic close
     after Pickup/Put/Slice is skipped (ALFRED's `should_keep_door_open`).
+    `auto_doors`: Pickup/Put/Slice open (and close) the container they reach into, as ALFRED's
+    expansions do; the symbolic planner, which opens doors with explicit actions, turns this off.
+
+    Raises:
+        PlanningError: CleanObject at a basin no faucet serves, or an unknown action.
     """
     o = args.get("objectId")
-    if action in ("PickupObject", "SliceObject"):
-        parent = _gating_parent(state, o)
-        opened = parent is not None and not state.objects[parent].isOpen
-        steps = ([Step("OpenObject", parent)] if opened else []) + [Step(action, o)]
-        return steps + ([Step("CloseObject", parent)] if opened and not keep_open else [])
-    if action == "PutObject":
-        r = args["receptacleObjectId"]
-        gate = r if state.objects[r].object_type in GATING_OPENABLE else _gating_parent(state, r)
-        opened = gate is not None and not state.objects[gate].isOpen
-        steps = ([Step("OpenObject", gate)] if opened else []) + [Step("PutObject", o, r)]
+    if action in ("PickupObject", "SliceObject", "PutObject"):
+        r = args.get("receptacleObjectId")
+        if r is None:
+            gate = _gating_parent(state, o)
+        else:
+            gate = r if state.objects[r].object_type in GATING_OPENABLE else _gating_parent(state, r)
+        opened = auto_doors and gate is not None and not state.objects[gate].isOpen
+        steps = ([Step("OpenObject", gate)] if opened else []) + [Step(action, o, r)]
         return steps + ([Step("CloseObject", gate)] if opened and not keep_open else [])
-    if action in ("OpenObject", "CloseObject"):
+    if action in ("OpenObject", "CloseObject", "ToggleObjectOn", "ToggleObjectOff"):
         return [Step(action, o)]
     if action == "ToggleObject":
         return [Step("ToggleObjectOff" if state.objects[o].isToggled else "ToggleObjectOn", o)]
-    if action in ("ToggleObjectOn", "ToggleObjectOff"):
-        return [Step(action, o)]
-    if action == "HeatObject":
+    if action in ("HeatObject", "CoolObject"):
         m = args["receptacleObjectId"]
         first = [] if state.objects[m].isOpen else [Step("OpenObject", m)]
-        return first + [Step("PutObject", o, m), Step("CloseObject", m), Step("ToggleObjectOn", m),
-                        Step("ToggleObjectOff", m), Step("OpenObject", m), Step("PickupObject", o),
-                        Step("CloseObject", m)]
-    if action == "CoolObject":
-        f = args["receptacleObjectId"]
-        first = [] if state.objects[f].isOpen else [Step("OpenObject", f)]
-        return first + [Step("PutObject", o, f), Step("CloseObject", f), Step("OpenObject", f),
-                        Step("PickupObject", o), Step("CloseObject", f)]
+        run = [Step("ToggleObjectOn", m), Step("ToggleObjectOff", m)] if action == "HeatObject" else []
+        return first + [Step("PutObject", o, m), Step("CloseObject", m), *run, Step("OpenObject", m),
+                        Step("PickupObject", o), Step("CloseObject", m)]
     if action == "CleanObject":
         basin = args["receptacleObjectId"]
-        faucet = next((fa for fa, b in state.faucet_basin.items() if b == basin), None)
+        faucet = faucet_of(state, basin)
         if faucet is None:
-            return [Step("PutObject", o, basin), Step("PickupObject", o)]
-        return [Step("PutObject", o, basin), Step("ToggleObjectOn", faucet), Step("ToggleObjectOff", faucet),
+            raise PlanningError(f"CleanObject: no faucet serves {basin}")
+        off = [Step("ToggleObjectOff", faucet)] if state.objects[faucet].isToggled else []
+        return [Step("PutObject", o, basin), *off, Step("ToggleObjectOn", faucet), Step("ToggleObjectOff", faucet),
                 Step("PickupObject", o)]
-    raise ValueError(f"no expansion for high-level action {action!r}")
+    raise PlanningError(f"no expansion for high-level action {action!r}")
+
+
+def faucet_of(state: WorldState, basin: str) -> str | None:
+    """The faucet that serves a sink basin (`WorldState.faucet_basin`), or None."""
+    return next((f for f, b in sorted(state.faucet_basin.items()) if b == basin and f in state), None)

@@ -15,22 +15,9 @@ from __future__ import annotations
 from typing import Any
 
 from luminous_sim.errors import PlanningError
+from luminous_sim.planning.expand import expand
 from luminous_sim.planning.symbolic.actions import HighLevelAction
 from luminous_sim.states import WorldState, rules
-
-
-def _low(action: str, object_id: str, receptacle_id: str | None = None) -> dict[str, Any]:
-    out = {"action": action, "objectId": object_id}
-    if receptacle_id is not None:
-        out["receptacleObjectId"] = receptacle_id
-    return out
-
-
-def faucet_of(state: WorldState, basin: str) -> str | None:
-    """The faucet that serves a sink basin (`WorldState.faucet_basin`), or None."""
-    return next(
-        (f for f, b in sorted(state.faucet_basin.items()) if b == basin and f in state), None
-    )
 
 
 def expand_macro(action: HighLevelAction, state: WorldState) -> list[dict[str, Any]]:
@@ -46,49 +33,18 @@ def expand_macro(action: HighLevelAction, state: WorldState) -> list[dict[str, A
     Raises:
         PlanningError: CleanObject on a basin no faucet serves, or an id the state lacks.
     """
-    a, o, r = action.action, action.object_id, action.receptacle_id
-    if a == "GotoLocation":
+    if action.action == "GotoLocation":
         return []
-    if a in ("PickupObject", "OpenObject", "CloseObject", "SliceObject"):
-        return [_low(a, o)]
-    if a == "PutObject":
-        return [_low(a, o, r)]
-    if a == "ToggleObject":
-        return [_low("ToggleObjectOff" if state[o].isToggled else "ToggleObjectOn", o)]
-    assert r is not None
-    device = state[r]
-    first = [] if device.isOpen else [_low("OpenObject", r)]
-    if a == "HeatObject":
-        return first + [
-            _low("PutObject", o, r),
-            _low("CloseObject", r),
-            _low("ToggleObjectOn", r),
-            _low("ToggleObjectOff", r),
-            _low("OpenObject", r),
-            _low("PickupObject", o),
-            _low("CloseObject", r),
-        ]
-    if a == "CoolObject":
-        return first + [
-            _low("PutObject", o, r),
-            _low("CloseObject", r),
-            _low("OpenObject", r),
-            _low("PickupObject", o),
-            _low("CloseObject", r),
-        ]
-    if a == "CleanObject":
-        faucet = faucet_of(state, r)
-        if faucet is None:
-            raise PlanningError(f"CleanObject: no faucet serves {r}")
-        off = [_low("ToggleObjectOff", faucet)] if state[faucet].isToggled else []
-        return [
-            _low("PutObject", o, r),
-            *off,
-            _low("ToggleObjectOn", faucet),
-            _low("ToggleObjectOff", faucet),
-            _low("PickupObject", o),
-        ]
-    raise PlanningError(f"no expansion for {a}")
+    args = {"objectId": action.object_id}
+    if action.receptacle_id is not None:
+        args["receptacleObjectId"] = action.receptacle_id
+    out = []
+    for step in expand(action.action, args, state, auto_doors=False):
+        low = {"action": step.action, "objectId": step.object_id}
+        if step.receptacle_id is not None:
+            low["receptacleObjectId"] = step.receptacle_id
+        out.append(low)
+    return out
 
 
 def try_action(state: WorldState, action: HighLevelAction) -> tuple[WorldState, str | None]:
