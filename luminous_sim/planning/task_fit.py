@@ -13,9 +13,11 @@ import numpy as np
 
 from luminous_sim.cssg.regions import HANGERS
 from luminous_sim.scene.model import Scene
+from luminous_sim.states.tables import GATING_OPENABLE
 from luminous_sim.tasks.model import PddlParams, TaskInstance
 from luminous_sim.tasks.sample import sample_task
-from luminous_sim.vocab import parent_type
+from luminous_sim.vocab import abilities, parent_type
+from luminous_sim.world.sightlines import seeable
 from luminous_sim.world.world import World
 
 SPOT_SEED = 2024
@@ -45,11 +47,28 @@ def physically_feasible(world: World, params: PddlParams, excluded: Iterable[str
     return not (params.mrecep_target and not has_room(world, obj, params.mrecep_target, excluded))
 
 
+def unseeable(world: World) -> set[str]:
+    """Pickupable objects no sight line from a reachable pose meets (for one in a closed container, the
+    container is what must be seen): tasks leave them out, as ALFRED's generator drops what its
+    expert cannot reach."""
+    state = world.interactions.state
+    targets: dict[str, str] = {}
+    for oid, o in state.objects.items():
+        if not abilities(o.object_type).pickupable or oid == state.held:
+            continue
+        gate = next((a for a in state.ancestors(oid) if state[a].object_type in GATING_OPENABLE
+                     and not state[a].isOpen), None)
+        targets[oid] = gate or oid
+    seen = seeable(world, sorted(set(targets.values())))
+    return {oid for oid, t in targets.items() if not seen[t]}
+
+
 def draw_task(scene: Scene, world: World, task_type: str, rng: np.random.Generator,
               excluded: Iterable[str] = ()) -> TaskInstance:
-    """A feasible task of `task_type` that the world can physically support, leaving out `excluded`
-    objects (ones the oracle found no pose to see). Raises TaskSamplingError when there is none."""
-    excluded = set(excluded)
+    """A feasible task of `task_type` that the world can physically support, leaving out objects no
+    one can see and `excluded` ones (the oracle found no pose to see them). Raises TaskSamplingError
+    when there is none."""
+    excluded = set(excluded) | unseeable(world)
     verdict: dict[tuple, bool] = {}
 
     def fits(p: PddlParams) -> bool:

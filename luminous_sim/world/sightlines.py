@@ -1,0 +1,70 @@
+"""Which objects an agent could see from somewhere it can stand: rays from the camera at every reachable
+grid point within reach to points on the object, as AI2-THOR tests visibility by raycasts to an
+object's visibility points. A few thousand rays per scene in one `rayTestBatch`, no rendering.
+
+Used to keep objects no one can see out of sampled tasks, and to report them per generated scene.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from luminous_sim.world.agent import CAMERA_HEIGHT, HORIZON_MAX
+
+if TYPE_CHECKING:
+    from luminous_sim.world.world import World
+
+POINTS_PER_OBJECT = 5
+"""The AABB's centre, the centre of its top, and three points on its top around it."""
+OVERSHOOT = 0.3
+"""Metres a sight line runs past its target point."""
+RAY_BATCH = 16384
+"""PyBullet's limit on rays per rayTestBatch call."""
+MAX_PITCH_DOWN = HORIZON_MAX + 30.0
+"""Steepest downward sight line the camera can frame (the lowest horizon plus half the 60-degree fov)."""
+
+
+def _targets(lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+    c = (lo + hi) / 2
+    top = hi[2] - 0.2 * (hi[2] - lo[2])
+    q = (hi - lo) / 4
+    return np.array([c, [c[0], c[1], top], [c[0] - q[0], c[1] - q[1], top], [c[0] + q[0], c[1] - q[1], top],
+                     [c[0], c[1] + q[1], top]])
+
+
+def seeable(world: World, object_ids: list[str], reach: float | None = None) -> dict[str, bool]:
+    """For each object: whether a straight sight line from the camera at some reachable grid point hits
+    it first, within `reach` (the visibility distance) and within the camera's pitch range."""
+    reach = reach or world.config.visibility_distance
+    pts = world.nav.points()
+    c = world.client
+    out = {oid: False for oid in object_ids}
+    froms, tos, owners = [], [], []
+    for oid in object_ids:
+        body = world.built.objects[oid].body
+        lo, hi = map(np.array, c.getAABB(body, -1))
+        eyes = np.column_stack([pts, np.full(len(pts), CAMERA_HEIGHT)])
+        near = np.linalg.norm(np.clip(eyes, lo, hi) - eyes, axis=1) <= reach  # as World.object_distance
+        for t in _targets(lo, hi):
+            d_xy = np.hypot(pts[:, 0] - t[0], pts[:, 1] - t[1])
+            pitch = np.degrees(np.arctan2(CAMERA_HEIGHT - t[2], np.maximum(d_xy, 1e-6)))
+            ok = near & (pitch <= MAX_PITCH_DOWN)
+            for x, y in pts[ok]:
+                eye = np.array([x, y, CAMERA_HEIGHT])
+                ray = t - eye
+                # carried on past the point, which may lie in a hollow (a bowl's middle) the ray never meets
+                end = t + ray / max(np.linalg.norm(ray), 1e-6) * OVERSHOOT
+                froms.append(tuple(float(v) for v in eye))
+                tos.append(tuple(float(v) for v in end))
+                owners.append((oid, body))
+    if not froms:
+        return out
+    hits = []
+    for k in range(0, len(froms), RAY_BATCH):
+        hits += c.rayTestBatch(froms[k:k + RAY_BATCH], tos[k:k + RAY_BATCH])
+    for (oid, body), hit in zip(owners, hits, strict=True):
+        if hit[0] == body:
+            out[oid] = True
+    return out

@@ -1,0 +1,36 @@
+"""Sight lines from reachable poses: what an agent could see, checked by rays (and against the renderer)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from luminous_sim.planning.task_fit import unseeable
+from luminous_sim.world.poses import find_interaction_pose
+from luminous_sim.world.sightlines import seeable
+from tests.world.conftest import obj
+
+
+def _move(world, oid, xyz):
+    body = world.built.objects[oid].body
+    _, orn = world.client.getBasePositionAndOrientation(body)
+    world.client.resetBasePositionAndOrientation(body, xyz, orn)
+
+
+def test_objects_on_the_counter_are_seeable_and_the_renderer_agrees(world, kitchen_scene):
+    names = ["apple", "knife", "mug", "plate"]
+    ids = [obj(kitchen_scene, n) for n in names]
+    seen = seeable(world, ids)
+    assert all(seen.values()), seen
+    for oid in ids:
+        assert find_interaction_pose(world, oid) is not None
+
+
+def test_an_object_shut_in_the_fridge_or_out_of_reach_is_not(world, kitchen_scene):
+    apple, fridge = obj(kitchen_scene, "apple"), obj(kitchen_scene, "fridge")
+    lo, hi = map(np.array, world.client.getAABB(world.built.objects[fridge].body, -1))
+    _move(world, apple, tuple((lo + hi) / 2))  # inside the closed fridge's body
+    assert seeable(world, [apple]) == {apple: False}
+    far = world.nav.points().max(axis=0) + 3.0  # beyond the room, out of every pose's reach
+    _move(world, apple, (float(far[0]), float(far[1]), 0.9))
+    assert seeable(world, [apple]) == {apple: False}
+    assert apple in unseeable(world)
