@@ -12,6 +12,8 @@ import numpy as np
 from luminous_sim.scene.model import Scene
 from luminous_sim.world.scene_builder import BuiltScene, build_scene, settle_report
 
+VISIBILITY_DISTANCE = 1.5
+"""ALFRED's reach, for the sight-line check."""
 PENETRATION_TOL = 0.01
 """Interpenetration deeper than 1 cm is a defect."""
 
@@ -21,6 +23,9 @@ class PhysicsReport:
     interpenetrations: list[dict] = field(default_factory=list)
     moved: dict[str, float] = field(default_factory=dict)
     fell: list[str] = field(default_factory=list)
+    unseeable: list[str] = field(default_factory=list)
+    """Pickupable objects (or the closed containers holding them) that no reachable pose has a sight
+    line to: not a physics defect, but an agent could never interact with them."""
 
     @property
     def ok(self) -> bool:
@@ -60,6 +65,30 @@ def interpenetrations(built: BuiltScene, tol: float = PENETRATION_TOL) -> list[d
     return out
 
 
+def unseeable_objects(built: BuiltScene) -> list[str]:
+    """Pickupable objects no sight line from the reachable grid meets (through a closed container's
+    door: the container must be seen)."""
+    from luminous_sim.cssg.validate import scene_reachable_grid
+    from luminous_sim.states.tables import GATING_OPENABLE
+    from luminous_sim.vocab import abilities
+    from luminous_sim.world.sightlines import seeable_bodies
+
+    by_id = {o.id: o for o in built.scene.objects}
+    targets = {}
+    for o in built.scene.objects:
+        if not abilities(o.type).pickupable:
+            continue
+        t, p = o.id, o.parent
+        while p is not None and p in by_id:
+            if by_id[p].type in GATING_OPENABLE and not by_id[p].states.get("isOpen"):
+                t = p
+            p = by_id[p].parent
+        targets[o.id] = t
+    bodies = {t: built.objects[t].body for t in set(targets.values()) if t in built.objects}
+    seen = seeable_bodies(built.client, bodies, scene_reachable_grid(built.scene), VISIBILITY_DISTANCE)
+    return sorted(oid for oid, t in targets.items() if not seen.get(t, False))
+
+
 def check_physics(scene: Scene, settle_steps: int = 240) -> PhysicsReport:
     """Build the scene, look for interpenetrations, settle, and report what moved or fell."""
     built = build_scene(scene, settle_steps=0)
@@ -71,6 +100,7 @@ def check_physics(scene: Scene, settle_steps: int = 240) -> PhysicsReport:
             client.stepSimulation()
         settled = settle_report(built)
         report.moved, report.fell = settled.moved, settled.fell
+        report.unseeable = unseeable_objects(built)
         return report
     finally:
         built.client.disconnect()

@@ -37,33 +37,31 @@ def _targets(lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
 def seeable(world: World, object_ids: list[str], reach: float | None = None) -> dict[str, bool]:
     """For each object: whether a straight sight line from the camera at some reachable grid point hits
     it first, within `reach` (the visibility distance) and within the camera's pitch range."""
-    reach = reach or world.config.visibility_distance
-    pts = world.nav.points()
-    c = world.client
-    out = {oid: False for oid in object_ids}
+    bodies = {oid: world.built.objects[oid].body for oid in object_ids}
+    return seeable_bodies(world.client, bodies, world.nav.points(), reach or world.config.visibility_distance)
+
+
+def seeable_bodies(client, bodies: dict[str, int], points: np.ndarray, reach: float) -> dict[str, bool]:
+    """`seeable` for bodies in any PyBullet client, the agent standing at `points` ((N, 2) metres)."""
+    out = {oid: False for oid in bodies}
     froms, tos, owners = [], [], []
-    for oid in object_ids:
-        body = world.built.objects[oid].body
-        lo, hi = map(np.array, c.getAABB(body, -1))
-        eyes = np.column_stack([pts, np.full(len(pts), CAMERA_HEIGHT)])
+    for oid, body in bodies.items():
+        lo, hi = map(np.array, client.getAABB(body, -1))
+        eyes = np.column_stack([points, np.full(len(points), CAMERA_HEIGHT)])
         near = np.linalg.norm(np.clip(eyes, lo, hi) - eyes, axis=1) <= reach  # as World.object_distance
         for t in _targets(lo, hi):
-            d_xy = np.hypot(pts[:, 0] - t[0], pts[:, 1] - t[1])
+            d_xy = np.hypot(points[:, 0] - t[0], points[:, 1] - t[1])
             pitch = np.degrees(np.arctan2(CAMERA_HEIGHT - t[2], np.maximum(d_xy, 1e-6)))
-            ok = near & (pitch <= MAX_PITCH_DOWN)
-            for x, y in pts[ok]:
-                eye = np.array([x, y, CAMERA_HEIGHT])
+            for eye in eyes[near & (pitch <= MAX_PITCH_DOWN)]:
                 ray = t - eye
                 # carried on past the point, which may lie in a hollow (a bowl's middle) the ray never meets
                 end = t + ray / max(np.linalg.norm(ray), 1e-6) * OVERSHOOT
                 froms.append(tuple(float(v) for v in eye))
                 tos.append(tuple(float(v) for v in end))
                 owners.append((oid, body))
-    if not froms:
-        return out
     hits = []
     for k in range(0, len(froms), RAY_BATCH):
-        hits += c.rayTestBatch(froms[k:k + RAY_BATCH], tos[k:k + RAY_BATCH])
+        hits += client.rayTestBatch(froms[k:k + RAY_BATCH], tos[k:k + RAY_BATCH])
     for (oid, body), hit in zip(owners, hits, strict=True):
         if hit[0] == body:
             out[oid] = True

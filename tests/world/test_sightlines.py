@@ -34,3 +34,19 @@ def test_an_object_shut_in_the_fridge_or_out_of_reach_is_not(world, kitchen_scen
     _move(world, apple, (float(far[0]), float(far[1]), 0.9))
     assert seeable(world, [apple]) == {apple: False}
     assert apple in unseeable(world)
+
+
+def test_physics_check_reports_unseeable_objects(kitchen_scene):
+    from luminous_sim.vocab import abilities
+    from luminous_sim.world.physics_check import check_physics
+
+    report = check_physics(kitchen_scene, settle_steps=10)
+    types = {o.id: o.type for o in kitchen_scene.objects}
+    assert all(abilities(types[o]).pickupable for o in report.unseeable)
+    assert not {obj(kitchen_scene, n) for n in ("apple", "knife", "mug", "plate")} & set(report.unseeable)
+    apple = obj(kitchen_scene, "apple")
+    lo = np.array(kitchen_scene.room.bounds[:2])
+    away = [o.model_copy(update={"position": (float(lo[0]) - 3.0, float(lo[1]) - 3.0, 0.5), "parent": None})
+            if o.id == apple else o for o in kitchen_scene.objects]
+    moved = check_physics(kitchen_scene.model_copy(update={"objects": away}), settle_steps=10)
+    assert apple in moved.unseeable and "unseeable" in moved.to_dict()
