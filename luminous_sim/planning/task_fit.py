@@ -48,13 +48,14 @@ def physically_feasible(world: World, params: PddlParams, excluded: Iterable[str
 
 
 def unseeable(world: World) -> set[str]:
-    """Pickupable objects no sight line from a reachable pose meets (for one in a closed container, the
-    container is what must be seen): tasks leave them out, as ALFRED's generator drops what its
-    expert cannot reach."""
+    """Objects to interact with (pick up, switch, open, put into) that no sight line from a reachable
+    pose meets (for one in a closed container, the container is what must be seen): tasks leave them
+    out, as ALFRED's generator drops what its expert cannot reach."""
     state = world.interactions.state
     targets: dict[str, str] = {}
     for oid, o in state.objects.items():
-        if not abilities(o.object_type).pickupable or oid == state.held:
+        ab = abilities(o.object_type)
+        if oid == state.held or not (ab.pickupable or ab.toggleable or ab.openable or ab.receptacle):
             continue
         gate = next((a for a in state.ancestors(oid) if state[a].object_type in GATING_OPENABLE
                      and not state[a].isOpen), None)

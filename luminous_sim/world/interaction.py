@@ -71,6 +71,10 @@ def _controls(world: World) -> dict[str, str]:
     return out
 
 
+VIEW_TRIES = 8
+"""Draws of a put pose looking for one in the agent's view."""
+
+
 class Interactions:
     """The interaction half of a World; keeps the pure state in step with the physics."""
 
@@ -284,6 +288,7 @@ class Interactions:
             boxes.append((lo, hi))
             pos, yaw = self.world.built.pose_of(other)
             prints.append(footprint(loaded.entry, pos[0], pos[1], yaw))  # oriented, not the world AABB
+        eye = None if assume_open else np.array(self.world.agent.eye())
         for i in self._spot_order(spots, rng):
             spot = spots[i]
             if entry.dims[2] > spot.clearance + 1e-6:
@@ -291,7 +296,7 @@ class Interactions:
             top = spot.floor_z + spot.clearance
             occupied = [fp for (lo, hi), fp in zip(boxes, prints)  # only what is on this shelf
                         if lo[2] < top and hi[2] > spot.floor_z - 0.01]
-            got = sample_in_region(entry, spot, rng, occupied, tries=60)
+            got = self._sample_in_view(entry, spot, rng, occupied, eye)
             if got is None and spot.gated:  # the back half too, rather than refusing
                 from dataclasses import replace as dc_replace
 
@@ -301,6 +306,22 @@ class Interactions:
             if got is not None:
                 return got[:4]
         return f"{receptacle} is full: no free, stable spot for {oid}"
+
+    def _sample_in_view(self, entry, spot, rng: np.random.Generator, occupied: list, eye: np.ndarray | None):
+        """A free pose in the region; seen from `eye`, one the camera has a clear line to if there is
+        one among a few draws (AI2-THOR puts things where the agent can see them, not behind a basin's
+        near rim where they could not be picked up again)."""
+        first = None
+        for _ in range(VIEW_TRIES if eye is not None else 1):
+            got = sample_in_region(entry, spot, rng, occupied, tries=60)
+            if got is None or eye is None:
+                return got or first
+            first = first or got
+            x, y, z = got[:3]
+            centre = np.array([x, y, z + (entry.bbox_min[2] + entry.bbox_max[2]) / 2])
+            if self.world.client.rayTest(eye.tolist(), centre.tolist())[0][0] == -1:
+                return got
+        return first
 
     def _spot_order(self, spots: list, rng: np.random.Generator) -> list[int]:
         """Regions to try: those the agent could see and reach from here first (in random order), as
