@@ -63,3 +63,26 @@ def test_sliced_heat_task_slices_first_and_heats_a_slice(world):
     assert actions.index("SliceObject") < actions.index("HeatObject")
     heated = world.interactions.state.heated
     assert any("AppleSliced" in h for h in heated)
+
+
+def test_a_put_lands_where_the_agent_can_see_it(world, kitchen_scene):
+    """Put into a sink basin from where the agent stands: the mug must stay in view (not behind the
+    basin's near rim), so that it can be picked up again from the same pose."""
+    from dataclasses import dataclass, field
+
+    from luminous_sim.planning.trajectory import Trajectory
+
+    @dataclass(frozen=True)
+    class HL:
+        action: str
+        args: dict = field(default_factory=dict)
+
+    mug = obj(kitchen_scene, "mug")
+    basin = world.interactions.state.of_type("SinkBasin")[0]
+    Oracle(world, record_frames=False)._execute(
+        [HL("GotoLocation", {"objectId": mug}), HL("PickupObject", {"objectId": mug}),
+         HL("GotoLocation", {"objectId": basin}), HL("PutObject", {"objectId": mug, "receptacleObjectId": basin})],
+        Trajectory(init_action={}))
+    assert world.interactions.state.objects[mug].parent == basin
+    assert mug in world.visible_objects()
+    assert world.step({"action": "PickupObject", "objectId": mug}).success
