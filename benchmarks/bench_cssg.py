@@ -21,10 +21,11 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from luminous_sim import cdf  # noqa: E402
-from luminous_sim.assets.catalog import default_catalog  # noqa: E402
-from luminous_sim.cssg.baseline import sample_uniform  # noqa: E402
-from luminous_sim.cssg.generate import Generated, choose_room, generate, sample_layout  # noqa: E402
+from luminous_sim import cdf
+from luminous_sim.assets.catalog import default_catalog
+from luminous_sim.cssg.baseline import sample_uniform
+from luminous_sim.cssg.generate import Generated, choose_room, generate
+from luminous_sim.errors import LuminousError
 
 EXAMPLES = {
     "Kitchen": "kitchen_coffee_mug",
@@ -54,14 +55,14 @@ def run(room_type: str, n: int, physics: bool, grid_dir: Path | None) -> None:
             if method == "cssg":
                 try:
                     g = generate(doc, seed=seed, catalog=catalog)
-                except Exception:
+                except LuminousError:  # no valid layout (or no room) for this seed
                     infeasible += 1
                     continue
                 scene_times.append(time.perf_counter() - t0)
                 sample_times.append(scene_times[-1] / (g.report.attempt + 1))
             else:
                 rng = np.random.default_rng(np.random.SeedSequence([seed, 0]))
-                draft, report = sample_uniform(doc, choose_room(doc, rng), rng, catalog)
+                draft, report = sample_uniform(doc, choose_room(doc, rng, catalog), rng, catalog)
                 g = Generated(draft.to_scene("uniform", seed), report)
                 sample_times.append(time.perf_counter() - t0)
             rels = g.report.relations
@@ -98,7 +99,7 @@ def run(room_type: str, n: int, physics: bool, grid_dir: Path | None) -> None:
         print(f"{'objects moved >1cm while settling':34}{c[7]:>22}{b[7]:>22}")
         print(f"{'objects fell while settling':34}{c[8]:>22}{b[8]:>22}")
     print(f"{'infeasible (no valid layout)':34}{c[9]:>22}{'-':>22}")
-    med = lambda xs: f"{1000 * statistics.median(xs):.0f} ms" if xs else "n/a"  # noqa: E731
+    med = lambda xs: f"{1000 * statistics.median(xs):.0f} ms" if xs else "n/a"
     print(f"{'median time per layout sample':34}{med(c[10]):>22}{med(b[10]):>22}")
     print(f"{'median time per valid scene':34}{med(c[11]):>22}{'-':>22}")
     if physics:

@@ -9,10 +9,10 @@ from shapely.geometry import Polygon
 from shapely.ops import unary_union
 
 from luminous_sim.assets.catalog import AssetEntry, Catalog
+from luminous_sim.cssg.pose import footprint
 from luminous_sim.rooms.shell import RoomShell
 from luminous_sim.scene.ids import thor_object_id
 from luminous_sim.scene.model import Layer, Scene, SceneObject
-from luminous_sim.cssg.pose import footprint
 
 
 @dataclass
@@ -31,6 +31,8 @@ class SceneDraft:
     rng: np.random.Generator
     placed: list[Placed] = field(default_factory=list)
     taken_ids: set[str] = field(default_factory=set)
+    memo: dict = field(default_factory=dict)
+    """Values derived from placed objects (receptacle regions), keyed by what they depend on."""
 
     def add(
         self, entry: AssetEntry, x: float, y: float, z: float, yaw: float, layer: Layer, fixed: bool,

@@ -10,13 +10,14 @@ import numpy as np
 from luminous_sim.cssg.draft import SceneDraft
 from luminous_sim.cssg.grid import HEADINGS, RES, FloorGrid
 from luminous_sim.cssg.pose import footprint, front_zone
+from luminous_sim.cssg.reach import AGENT_CLEARANCE, FloorPiece, clear_of, largest_part
 from luminous_sim.cssg.requests import Request
 from luminous_sim.cssg.scores import (
     TEMPERATURE,
     TOLERANCE,
     Placed2D,
+    cost_in_field,
     directional_wall_distance,
-    point_cost,
     relation_field,
 )
 
@@ -24,13 +25,9 @@ SEGMENTED_FIXTURES = {"CounterTop"}
 """Fixture types built from several segments that a CDF names as one object."""
 
 WRONG_HEADING_PENALTY = 0.5
+"""metres of cost for standing at a heading other than the preferred one."""
 WORK_ZONE = 0.7
 """metres kept free in front of every fixture (counters, sink, stove, fridge, toilet, bathtub)."""
-AGENT_CLEARANCE = 0.25
-"""Half-width of the passage the agent needs (a little more than its 0.2 m radius, for the 0.25 m grid)."""
-REACH = 1.45
-"""Every piece must stay within this distance of the walkable floor (ALFRED reaches 1.5 m)."""
-"""metres of cost for standing at a heading other than the preferred one."""
 
 
 @dataclass
@@ -43,11 +40,15 @@ class FloorContext:
     centroid: tuple[float, float]
     placed: dict[str, Placed2D]
     alternates: dict[str, list[Placed2D]] = None  # type: ignore[assignment]
+    """A name bound to one segment of a fixture (a kitchen's counter) relates to any of its segments."""
     solid: np.ndarray = None  # type: ignore[assignment]
     """Cells under things the agent cannot walk through (footprints, not clearance zones)."""
-    pieces: list = None  # type: ignore[assignment]
-    """(object id, footprint cells) of everything on the floor that the agent must be able to reach."""
-    """A name bound to one segment of a fixture (a kitchen's counter) relates to any of its segments."""
+    pieces: list[FloorPiece] = None  # type: ignore[assignment]
+    """The cells of everything on the floor that the agent must be able to reach."""
+    clear: np.ndarray = None  # type: ignore[assignment]
+    """Cells at least AGENT_CLEARANCE from every solid cell (kept up to date with `solid`)."""
+    fields: dict = None  # type: ignore[assignment]
+    """Relation fields computed so far (they depend on the room, the subject and the anchor only)."""
 
     @classmethod
     def create(cls, draft: SceneDraft) -> FloorContext:
@@ -62,41 +63,49 @@ class FloorContext:
                 grid.block(p.footprint)
                 cells = grid._cells(p.footprint)
                 solid |= cells
-                pieces.append((p.obj.id, cells))
+                pieces.append(FloorPiece.of(p.obj.id, cells))
                 if p.obj.layer == "fixture":  # keep the work zone in front of counters and appliances
                     grid.block(front_zone(p.entry, p.obj.position[0], p.obj.position[1], p.obj.yaw, WORK_ZONE))
         c = poly.centroid
-        return cls(draft, grid, directional_wall_distance(grid), (c.x, c.y), {}, {}, solid, pieces)
+        return cls(draft, grid, directional_wall_distance(grid), (c.x, c.y), {}, {}, solid, pieces, clear_of(solid), {})
 
-    def walkable(self, solid: np.ndarray) -> np.ndarray:
-        """The largest connected part of the floor where the agent's centre can be."""
-        from scipy import ndimage
-
-        clear = ndimage.distance_transform_edt(~solid) * RES >= AGENT_CLEARANCE
-        ok = clear & (self.grid.wall_dist >= AGENT_CLEARANCE - RES / 2)
-        labels, n = ndimage.label(ok)
-        if n == 0:
-            return ok
-        sizes = np.bincount(labels.ravel())[1:]
-        return labels == (int(np.argmax(sizes)) + 1)
+    def walkable(self, clear: np.ndarray) -> np.ndarray:
+        """The largest connected part of the floor where the agent's centre can be, given the cells
+        clear of solid things."""
+        return largest_part(clear & self.grid.memo("wall_clear",
+                                                   lambda: self.grid.wall_dist >= AGENT_CLEARANCE - RES / 2))
 
     def keeps_everything_reachable(self, fp) -> bool:
         """Whether adding footprint `fp` leaves every floor piece (and itself) within reach of walkable floor."""
-        from scipy import ndimage
-
-        cells = self.grid._cells(fp)
-        solid = self.solid | cells
-        walk = self.walkable(solid)
-        if not walk.any():
-            return False
-        dist = ndimage.distance_transform_edt(~walk) * RES
-        return all(dist[c].min() <= REACH for _, c in self.pieces + [("new", cells)] if c.any())
+        new = FloorPiece.of("new", self.grid._cells(fp))
+        walk = self.walkable(self.clear & new.clear_of(self.grid.shape))
+        return bool(walk.any()) and all(p.reachable(walk) for p in self.pieces + [new])
 
     def commit(self, object_id: str, fp) -> None:
         cells = self.grid._cells(fp)
+        piece = FloorPiece.of(object_id, cells)
         self.solid |= cells
-        self.pieces.append((object_id, cells))
+        self.clear &= piece.clear_of(self.grid.shape)
+        self.pieces.append(piece)
         self.grid.block(fp)
+
+    def remove(self, gone: set[str], fp) -> None:
+        """Take the floor pieces `gone` (standing on footprint `fp`) out again."""
+        self.grid.unblock(fp)
+        self.solid &= ~self.grid._cells(fp)
+        self.clear = clear_of(self.solid)
+        self.pieces = [p for p in self.pieces if p.id not in gone]
+
+    def snapshot(self) -> tuple:
+        """What placing a piece changes, to go back to with `restore`."""
+        return (self.grid.free.copy(), self.solid.copy(), self.clear.copy(), list(self.pieces), dict(self.placed),
+                dict(self.alternates))
+
+    def restore(self, snap: tuple) -> None:
+        free, solid, clear, pieces, placed, alternates = snap
+        self.grid.set_free(free.copy())
+        self.solid, self.clear, self.pieces = solid.copy(), clear.copy(), list(pieces)
+        self.placed, self.alternates = dict(placed), dict(alternates)
 
     def anchor(self, name: str | None) -> Placed2D | None:
         return self.placed.get(name) if name else None
@@ -107,11 +116,24 @@ class FloorContext:
             return list(self.alternates[name])
         return [self.anchor(name)]
 
+    def relation_field(self, relation: str, entry, anchor: Placed2D | None) -> tuple[np.ndarray, np.ndarray | None]:
+        """`scores.relation_field` in this room, computed once per relation, subject size and anchor pose."""
+        key = (relation, _entry_key(entry), None if relation in UNARY or anchor is None
+               else (anchor.x, anchor.y, anchor.yaw, _entry_key(anchor.entry)))
+        hit = self.fields.get(key)
+        if hit is None:
+            hit = relation_field(relation, self.grid, entry, anchor, self.wall_dirs, self.centroid)
+            for a in hit:
+                if a is not None:
+                    a.flags.writeable = False
+            self.fields[key] = hit
+        return hit
+
     def field(self, relation: str, entry, name: str | None) -> tuple[np.ndarray, np.ndarray | None]:
         """The relation's cost field, the cheapest over everything `name` may refer to."""
         best, heading = None, None
         for anchor in self.anchors(name):
-            cost, head = relation_field(relation, self.grid, entry, anchor, self.wall_dirs, self.centroid)
+            cost, head = self.relation_field(relation, entry, anchor)
             if best is None:
                 best, heading = cost, head
             else:
@@ -122,8 +144,17 @@ class FloorContext:
         return best, heading
 
     def cost_at(self, relation: str, entry, name: str | None, x: float, y: float, yaw: float | None = None) -> float:
-        return min(float(point_cost(relation, self.grid, entry, a, self.wall_dirs, self.centroid, x, y, yaw))
-                   for a in self.anchors(name))
+        return min(cost_in_field(relation, self.relation_field(relation, entry, a), self.grid, entry, self.wall_dirs,
+                                 x, y, yaw) for a in self.anchors(name))
+
+
+UNARY = frozenset({"against_wall", "in_corner", "in_centre"})
+"""Relations whose field does not depend on an anchor."""
+
+
+def _entry_key(entry) -> tuple:
+    """What of an asset entry the relation fields depend on."""
+    return (entry.type, *entry.dims, *entry.bbox_min, *entry.bbox_max)
 
 
 def score(ctx: FloorContext, req: Request, entry) -> tuple[np.ndarray, np.ndarray | None]:
@@ -166,27 +197,17 @@ def place_piece(ctx: FloorContext, req: Request, tries: int = 6) -> Placed2D | N
     variants = req.variants(draft.catalog)
     if not variants:
         return None
+    fields: dict[tuple, tuple] = {}
     for attempt in range(tries):
         entry = variants[int(rng.integers(len(variants)))]
-        cost, heading = score(ctx, req, entry)
-        feas = np.stack([ctx.grid.feasible(entry, h) for h in HEADINGS])
+        key = _entry_key(entry)
+        if key not in fields:
+            fields[key] = score(ctx, req, entry), np.stack([ctx.grid.feasible(entry, h) for h in HEADINGS])
+        (cost, heading), feas = fields[key]
         if not feas.any():
             continue
-        if heading is None:
-            heading = np.full(ctx.grid.shape, int(rng.integers(4)))
-        # each cell's cost at each heading: the preferred heading is free, the others cost extra
-        per_heading = np.stack([cost + WRONG_HEADING_PENALTY * (heading != k) for k in range(4)])
-        per_heading[~feas] = np.inf
-        flat = per_heading.ravel()
-        finite = np.isfinite(flat)
-        logits = -(flat[finite] - flat[finite].min()) / TEMPERATURE
-        prob = np.exp(logits)
-        prob /= prob.sum()
-        if attempt < tries - 1:
-            pick = np.flatnonzero(finite)[int(rng.choice(len(prob), p=prob))]
-        else:
-            pick = int(np.argmin(flat))
-        k, r, c = np.unravel_index(pick, per_heading.shape)
+        pick = _draw(cost, heading, feas, rng, cheapest=attempt == tries - 1)
+        k, r, c = np.unravel_index(pick, feas.shape)
         x, y, yaw = float(ctx.grid.xs[c]), float(ctx.grid.ys[r]), HEADINGS[int(k)]
         # early draws must also honour the implicit rules; later ones only the CDF's hard relations
         if attempt < tries - 1 and not hard_relations_met(ctx, req, entry, x, y, yaw, implicit=attempt < tries // 2):
@@ -203,6 +224,22 @@ def place_piece(ctx: FloorContext, req: Request, tries: int = 6) -> Placed2D | N
         ctx.placed[obj.id] = placed
         return placed
     return None
+
+
+def _draw(cost: np.ndarray, heading: np.ndarray | None, feas: np.ndarray, rng: np.random.Generator,
+          cheapest: bool) -> int:
+    """A flat index into (heading, row, column), drawn with P proportional to exp(-cost / TEMPERATURE) over
+    the feasible ones (or the cheapest feasible one); the preferred heading is free, the others cost
+    WRONG_HEADING_PENALTY more. Without a heading field, one heading is drawn for all cells."""
+    if heading is None:
+        heading = np.full(cost.shape, int(rng.integers(4)))
+    cand = np.flatnonzero(feas)
+    cells = cand % cost.size
+    vals = cost.ravel()[cells] + WRONG_HEADING_PENALTY * (heading.ravel()[cells] != cand // cost.size)
+    if cheapest:
+        return int(cand[np.argmin(vals)])
+    cdf = np.cumsum(np.exp(-(vals - vals.min()) / TEMPERATURE))
+    return int(cand[min(int(np.searchsorted(cdf, rng.random() * cdf[-1], side="right")), len(cand) - 1)])
 
 
 def register(ctx: FloorContext, name: str, placed_obj, entry) -> None:

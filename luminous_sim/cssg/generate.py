@@ -18,7 +18,8 @@ from luminous_sim.cssg.draft import SceneDraft
 from luminous_sim.cssg.furniture import FloorContext, hard_relations_met, place_piece, register
 from luminous_sim.cssg.objects import place_object
 from luminous_sim.cssg.requests import Request, requests_from_cdf
-from luminous_sim.cssg.structure import place_fixtures
+from luminous_sim.cssg.structure import fixture_types, place_fixtures
+from luminous_sim.cssg.tables import layer_of
 from luminous_sim.cssg.validate import LayoutReport, check_layout
 from luminous_sim.cssg.walls import place_wall_piece
 from luminous_sim.errors import InfeasibleSceneError
@@ -34,8 +35,17 @@ class Generated:
     report: LayoutReport
 
 
-def choose_room(cdf: ChallengeDefinition, rng: np.random.Generator) -> RoomShell:
-    """The CDF's room: a named library room, or a procedural shell of its room type meeting its constraints."""
+FIXTURE_DRAWS = 8
+"""Shells drawn at most to find one whose fixtures include every fixture type the CDF names."""
+
+
+def choose_room(cdf: ChallengeDefinition, rng: np.random.Generator, catalog: Catalog | None = None) -> RoomShell:
+    """The CDF's room: a named library room, or a procedural shell of its room type meeting its constraints.
+
+    A procedural shell should also hold the fixtures the CDF names (a bathroom with a counter when it
+    asks for a CounterTop): of the first FIXTURE_DRAWS shells that meet the constraints, the first
+    that does, else the first of them.
+    """
     from luminous_sim.rooms.generate import generate_shell
 
     room = cdf.scene.room
@@ -44,10 +54,19 @@ def choose_room(cdf: ChallengeDefinition, rng: np.random.Generator) -> RoomShell
         from luminous_sim.rooms.library import shell_for
 
         return shell_for(room, rng)
+    wanted = {o.type for o in cdf.scene.objects if layer_of(o.type) == "fixture"}
+    meeting: list[RoomShell] = []
     for _ in range(200):
         shell = generate_shell(room_type, rng, shape=getattr(room, "shape", None))
-        if room is None or _meets(shell, room):
+        if room is not None and not _meets(shell, room):
+            continue
+        if not wanted or wanted <= fixture_types(shell, catalog or default_catalog()):
             return shell
+        meeting.append(shell)
+        if len(meeting) == FIXTURE_DRAWS:
+            return meeting[0]
+    if meeting:
+        return meeting[0]
     raise InfeasibleSceneError(f"no {room_type} room shell meets the CDF's room constraints {room}")
 
 
@@ -58,32 +77,37 @@ def _meets(shell: RoomShell, c) -> bool:
             and (c.min_width is None or width >= c.min_width) and (c.max_width is None or width <= c.max_width))
 
 
-def _bind_fixtures(draft: SceneDraft, req: Request, by_name: dict[str, str], ctx: FloorContext) -> bool:
-    """A CDF object of a fixture type names a fixture the room already has (the kitchen's fridge).
+ATTACHED = frozenset({"SinkBasin", "Faucet", "BathtubBasin", "StoveBurner", "StoveKnob"})
+"""Fixture types that only exist as parts of another fixture: never placed on the floor by themselves."""
+
+
+def _bind_fixtures(draft: SceneDraft, req: Request, by_name: dict[str, str], ctx: FloorContext) -> bool | None:
+    """A CDF object of a fixture type names a fixture the room already has (the kitchen's fridge); whether
+    its hard relations hold there, or None when there is none to name.
 
     If that fixture breaks one of the object's hard relations, it (and what it brings along) is taken
-    out so that the furniture layer places the object by its relations instead.
+    out so that the furniture layer places the object by its relations instead (None), unless it is
+    part of another fixture (a sink's basin): that one stays, with its relations unmet.
     """
     taken = set(by_name.values())
     hit = next((p for p in draft.placed if p.obj.type == req.type and p.obj.id not in taken), None)
     if hit is None:
-        return False
+        return None
     register(ctx, req.name, hit.obj, hit.entry)
-    if not hard_relations_met(ctx, req, hit.entry, hit.obj.position[0], hit.obj.position[1]):
+    met = hard_relations_met(ctx, req, hit.entry, hit.obj.position[0], hit.obj.position[1])
+    if not met and req.type not in ATTACHED:
         del ctx.placed[req.name]
         ctx.alternates.pop(req.name, None)
         gone = {hit.obj.id} | {p.obj.id for p in draft.placed if p.obj.parent == hit.obj.id}
         draft.placed[:] = [p for p in draft.placed if p.obj.id not in gone]
-        ctx.grid.unblock(hit.footprint)
-        ctx.solid &= ~ctx.grid._cells(hit.footprint)
-        ctx.pieces = [(oid, c) for oid, c in ctx.pieces if oid not in gone]
-        return False
+        ctx.remove(gone, hit.footprint)
+        return None
     by_name[req.name] = hit.obj.id
     if req.states or req.name:
         i = draft.placed.index(hit)
         obj = hit.obj.model_copy(update={"name": req.name, "states": {**hit.obj.states, **req.states}})
         draft.placed[i] = type(hit)(obj, hit.entry, hit.footprint)
-    return True
+    return met
 
 
 @dataclass
@@ -91,32 +115,27 @@ class _Checkpoint:
     """Everything a sample changes, saved before one request is placed."""
 
     index: int
-    placed: int
-    free: np.ndarray
-    solid: np.ndarray
-    pieces: list
-    anchors: dict
-    alternates: dict
+    placed: list
+    floor: tuple
+    bound: set
     by_name: dict
     occupied: dict
     unplaced: list
 
 
-def _save(i: int, draft: SceneDraft, ctx: FloorContext, by_name: dict, occupied: dict, unplaced: list) -> _Checkpoint:
-    return _Checkpoint(i, len(draft.placed), ctx.grid.free.copy(), ctx.solid.copy(), list(ctx.pieces),
-                       dict(ctx.placed), dict(ctx.alternates),
-                       dict(by_name), {k: list(v) for k, v in occupied.items()}, list(unplaced))
+def _save(i: int, draft: SceneDraft, ctx: FloorContext, bound: set, by_name: dict, occupied: dict,
+          unplaced: list) -> _Checkpoint:
+    return _Checkpoint(i, list(draft.placed), ctx.snapshot(), set(bound), dict(by_name),
+                       {k: list(v) for k, v in occupied.items()}, list(unplaced))
 
 
-def _restore(cp: _Checkpoint, draft: SceneDraft, ctx: FloorContext, by_name: dict, occupied: dict,
+def _restore(cp: _Checkpoint, draft: SceneDraft, ctx: FloorContext, bound: set, by_name: dict, occupied: dict,
              unplaced: list) -> None:
-    del draft.placed[cp.placed:]
+    draft.placed[:] = cp.placed
     draft.taken_ids = {p.obj.id for p in draft.placed}
-    ctx.grid.free = cp.free.copy()
-    ctx.grid._sat = None
-    ctx.solid = cp.solid.copy()
-    ctx.pieces = list(cp.pieces)
-    ctx.placed, ctx.alternates = dict(cp.anchors), dict(cp.alternates)
+    ctx.restore(cp.floor)
+    bound.clear()
+    bound.update(cp.bound)
     by_name.clear()
     by_name.update(cp.by_name)
     occupied.clear()
@@ -124,9 +143,17 @@ def _restore(cp: _Checkpoint, draft: SceneDraft, ctx: FloorContext, by_name: dic
     unplaced[:] = cp.unplaced
 
 
-def _place(draft: SceneDraft, ctx: FloorContext, req: Request, by_name: dict, occupied: dict) -> bool:
-    if req.layer == "fixture" and _bind_fixtures(draft, req, by_name, ctx):
-        return True
+def _place(draft: SceneDraft, ctx: FloorContext, req: Request, by_name: dict, occupied: dict,
+           bound: set[str]) -> bool:
+    """Place one request; True when it is placed with its hard relations met. Names bound to the room's
+    own fixtures are added to `bound`."""
+    if req.layer == "fixture":
+        met = _bind_fixtures(draft, req, by_name, ctx)
+        if met is not None:
+            bound.add(req.name)
+            return met
+        if req.type in ATTACHED:
+            return False
     if req.layer in ("furniture", "fixture"):
         if place_piece(ctx, req) is None:
             return False
@@ -135,7 +162,8 @@ def _place(draft: SceneDraft, ctx: FloorContext, req: Request, by_name: dict, oc
         return hard_relations_met(ctx, req, draft.placed[-1].entry, last.position[0], last.position[1], last.yaw)
     if req.layer == "object":
         return place_object(draft, req, by_name, occupied)
-    ok = place_wall_piece(draft, req, by_name)
+    ok = place_wall_piece(draft, req, by_name,
+                          accept=lambda e, x, y, yaw: hard_relations_met(ctx, req, e, x, y, yaw))
     if ok:
         by_name[req.name] = draft.placed[-1].obj.id
     return ok
@@ -152,6 +180,7 @@ def sample_layout(cdf: ChallengeDefinition, shell: RoomShell, rng: np.random.Gen
     Requests are placed in order; when a piece of furniture cannot meet a hard relation to an anchor
     placed earlier in this sample, the sample goes back to just before that anchor and draws it again
     (at most BACKTRACKS times), so that an anchor drawn into a corner does not doom its dependents.
+    An anchor bound to one of the room's own fixtures is not drawn, so it is never gone back to.
     """
     draft = SceneDraft(shell, catalog, rng)
     place_fixtures(draft)
@@ -161,18 +190,21 @@ def sample_layout(cdf: ChallengeDefinition, shell: RoomShell, rng: np.random.Gen
     occupied: dict = {}
     unplaced: list[str] = []
     checkpoints: dict[str, _Checkpoint] = {}
+    bound: set[str] = set()
     backtracks = 0
     i = 0
     while i < len(requests):
         req = requests[i]
         if req.layer in ("furniture", "fixture"):
-            checkpoints[req.name] = _save(i, draft, ctx, by_name, occupied, unplaced)
-        ok = _place(draft, ctx, req, by_name, occupied)
+            checkpoints[req.name] = _save(i, draft, ctx, bound, by_name, occupied, unplaced)
+        ok = _place(draft, ctx, req, by_name, occupied, bound)
         if not ok and backtracks < BACKTRACKS and req.layer in ("furniture", "fixture"):
-            anchors = [r.anchor for r in req.rels if r.explicit and r.hard and r.anchor in checkpoints]
+            # an anchor bound to the room's own fixture would be bound again just the same
+            anchors = [r.anchor for r in req.rels
+                       if r.explicit and r.hard and r.anchor in checkpoints and r.anchor not in bound]
             if anchors:
                 cp = checkpoints[anchors[0]]
-                _restore(cp, draft, ctx, by_name, occupied, unplaced)
+                _restore(cp, draft, ctx, bound, by_name, occupied, unplaced)
                 backtracks += 1
                 i = cp.index
                 continue
@@ -191,7 +223,7 @@ def generate(cdf: ChallengeDefinition, seed: int = 0, room: RoomShell | None = N
     for attempt in range(attempts):
         rng = np.random.default_rng(np.random.SeedSequence([seed, attempt]))
         if room is None:
-            shell = choose_room(cdf, rng)
+            shell = choose_room(cdf, rng, catalog)
         draft, report = sample_layout(cdf, shell, rng, catalog, attempt)
         if report.ok:
             scene = draft.to_scene("cssg", seed, source=cdf.name or "", notes={"attempt": attempt,

@@ -6,10 +6,17 @@ from __future__ import annotations
 from shapely.geometry import Polygon
 
 from luminous_sim.cssg.draft import Placed, SceneDraft
-from luminous_sim.cssg.regions import HANGERS, RegionSpot, fits, hang_pose, region_spots, sample_in_region
+from luminous_sim.cssg.regions import (
+    HANGERS,
+    RegionSpot,
+    fits,
+    hang_pose,
+    region_spots,
+    sample_in_region,
+)
 from luminous_sim.cssg.requests import Request
-from luminous_sim.cssg.walls import clashes
 from luminous_sim.cssg.tables import supports_for
+from luminous_sim.cssg.walls import clashes
 
 
 def _hosts(draft: SceneDraft, req: Request, by_name: dict[str, str]) -> tuple[list[Placed], str | None]:
@@ -34,6 +41,15 @@ def _facing_point(draft: SceneDraft, req: Request, by_name: dict[str, str]) -> t
     return (c.x, c.y)
 
 
+def _spots(draft: SceneDraft, host: Placed) -> list[RegionSpot]:
+    """`region_spots` of a placed receptacle, computed once per draft and pose."""
+    o = host.obj
+    key = ("spots", o.id, o.position, o.yaw, host.entry.id, host.entry.scale)
+    if key not in draft.memo:
+        draft.memo[key] = region_spots(o, host.entry)
+    return draft.memo[key]
+
+
 def place_object(draft: SceneDraft, req: Request, by_name: dict[str, str],
                  occupied: dict[tuple[str, str], list[Polygon]]) -> bool:
     """Place one object request; False if no compatible region has room for it."""
@@ -44,7 +60,7 @@ def place_object(draft: SceneDraft, req: Request, by_name: dict[str, str],
         if not variants:
             return False
         entry = variants[int(draft.rng.integers(len(variants)))]
-        spots: list[RegionSpot] = [s for h in hosts for s in region_spots(h.obj, h.entry)
+        spots: list[RegionSpot] = [s for h in hosts for s in _spots(draft, h)
                                    if (kind is None or s.kind == kind)
                                    and (fits(entry, s) or h.obj.type in HANGERS)]
         if not spots:

@@ -4,14 +4,15 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from itertools import pairwise
 
 import numpy as np
+import shapely
 from shapely.geometry import Polygon
 
 from luminous_sim.assets.catalog import AssetEntry
 from luminous_sim.cssg.pose import rotate
 from luminous_sim.scene.model import SceneObject
-
 
 EDGE_INSET = 0.04
 
@@ -65,11 +66,14 @@ def sample_in_region(
     lo, hi = np.array(entry.bbox_min[:2]), np.array(entry.bbox_max[:2])
     center_local = (lo + hi) / 2
     half = (hi - lo) / 2
+    corners = np.array([[lo[0], lo[1]], [hi[0], lo[1]], [hi[0], hi[1]], [lo[0], hi[1]]])
+    taken = _Taken(occupied)
     fixed_k = None
     if facing is not None:
         d = np.array(facing) - np.array(spot.center)
         want = math.atan2(-d[0], d[1]) - spot.yaw
-        fixed_k = int(round(want / (math.pi / 2))) % 4
+        fixed_k = round(want / (math.pi / 2)) % 4
+    turned: dict[int, tuple[np.ndarray, np.ndarray]] = {}  # per quarter turn: centre and corners, rotated
     for _ in range(tries):
         k = fixed_k if fixed_k is not None else int(rng.integers(yaw_choices))
         rel_yaw = k * 2 * math.pi / yaw_choices
@@ -84,13 +88,46 @@ def sample_in_region(
         py = rng.uniform(0.0 if spot.gated else -room_y, room_y)  # gated volumes: the front half
         target = rotate(np.array([[px, py]]), spot.yaw)[0] + spot.center
         yaw = spot.yaw + rel_yaw
-        origin = target - rotate(center_local[None], yaw)[0]
-        corners = np.array([[lo[0], lo[1]], [hi[0], lo[1]], [hi[0], hi[1]], [lo[0], hi[1]]])
-        fp = Polygon(rotate(corners, yaw) + origin)
-        if any(fp.intersects(o) for o in occupied):
+        if k not in turned:
+            turned[k] = rotate(center_local[None], yaw)[0], rotate(corners, yaw)
+        origin = target - turned[k][0]
+        ring = turned[k][1] + origin
+        if taken.hits(ring):
             continue
-        return float(origin[0]), float(origin[1]), spot.floor_z - entry.bbox_min[2] + 0.002, yaw, fp
+        return float(origin[0]), float(origin[1]), spot.floor_z - entry.bbox_min[2] + 0.002, yaw, Polygon(ring)
     return None
+
+
+SQUARE_TOL = 1e-6
+"""Metres an edge may be off axis-parallel and still count as square to the axes (walls snapped to 0.1 mm
+turn things a hair off quarter turns)."""
+
+
+class _Taken:
+    """Footprints already in a region, for fast intersection tests: bounding boxes first, and the exact
+    test only where boxes overlap and one of the two is not square to the axes."""
+
+    def __init__(self, occupied: list[Polygon]):
+        self.items = [(*o.bounds, _square(list(o.exterior.coords)), o) for o in occupied]
+
+    def hits(self, ring: np.ndarray) -> bool:
+        """Whether the polygon with corners `ring` intersects any of the footprints."""
+        pts = ring.tolist()
+        xs, ys = [p[0] for p in pts], [p[1] for p in pts]
+        x0, y0, x1, y1 = min(xs), min(ys), max(xs), max(ys)
+        square = _square(pts + pts[:1])
+        for bx0, by0, bx1, by1, box, geom in self.items:
+            if bx0 > x1 or bx1 < x0 or by0 > y1 or by1 < y0:
+                continue
+            if (square and box) or shapely.intersects(shapely.polygons(ring), geom):
+                return True
+        return False
+
+
+def _square(ring: list) -> bool:
+    """Whether the closed ring (first point repeated last) is a rectangle square to the axes."""
+    return len(ring) == 5 and all(abs(a[0] - b[0]) < SQUARE_TOL or abs(a[1] - b[1]) < SQUARE_TOL
+                                  for a, b in pairwise(ring))
 
 
 HANGERS = frozenset({"TowelHolder", "HandTowelHolder", "ToiletPaperHanger"})

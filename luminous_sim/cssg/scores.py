@@ -55,9 +55,13 @@ class Placed2D:
 
 
 def heading_index(dx: np.ndarray, dy: np.ndarray) -> np.ndarray:
-    """Index into HEADINGS of the cardinal heading that turns an asset's front towards (dx, dy)."""
-    yaw = np.arctan2(-dx, dy)
-    return np.mod(np.round(yaw / (math.pi / 2)), 4).astype(int)
+    """Index into HEADINGS of the cardinal heading that turns an asset's front towards (dx, dy).
+
+    The nearest of yaw = atan2(-dx, dy) in quarter turns; at exact diagonals the y axis wins.
+    """
+    dx, dy = np.asarray(dx), np.asarray(dy)
+    along_y = np.abs(dy) >= np.abs(dx)
+    return np.where(along_y, np.where(dy >= 0, 0, 2), np.where(dx < 0, 1, 3))
 
 
 def directional_wall_distance(grid: FloorGrid) -> np.ndarray:
@@ -66,15 +70,18 @@ def directional_wall_distance(grid: FloorGrid) -> np.ndarray:
     out = np.zeros((4,) + room.shape)
     for i, (axis, rev) in enumerate(((1, False), (1, True), (0, False), (0, True))):
         m = np.flip(room, axis) if rev else room
-        run = np.zeros(room.shape)
-        acc = np.zeros(room.shape[1 - axis])
-        for k in range(room.shape[axis]):
-            sl = (slice(None), k) if axis == 1 else (k, slice(None))
-            acc = np.where(m[sl], acc + 1, 0)
-            run[sl] = acc
-        run = np.flip(run, axis) if rev else run
-        out[i] = (run - 0.5) * RES
+        run = _run_lengths(m, axis)
+        out[i] = ((np.flip(run, axis) if rev else run) - 0.5) * RES
     return out
+
+
+def _run_lengths(mask: np.ndarray, axis: int) -> np.ndarray:
+    """Per cell, how many consecutive True cells along `axis` end at it (0 where False)."""
+    shape = [1, 1]
+    shape[axis] = mask.shape[axis]
+    idx = np.arange(1, mask.shape[axis] + 1).reshape(shape)
+    last_false = np.maximum.accumulate(np.where(mask, 0, idx), axis=axis)
+    return np.where(mask, idx - last_false, 0)
 
 
 def _half_extents(entry: AssetEntry) -> tuple[float, float]:
@@ -89,18 +96,16 @@ def relation_field(
     gx, gy = grid.coords()
     hw, hd = _half_extents(subject)
     back = -subject.bbox_min[1]
-    wall_heading = heading_index(grid.wall_normal[..., 0], grid.wall_normal[..., 1])
     if relation == "against_wall":
-        behind = np.take_along_axis(wall_dirs, BACK_DIRECTION[wall_heading][None], 0)[0]
-        return np.abs(behind - back - GAP), wall_heading
+        return np.abs(_behind(grid, wall_dirs) - back - GAP), _wall_heading(grid)
     if relation == "in_corner":
         # back to the nearest wall and a side to the perpendicular one: half extents along world x and y
         # depend on which way the piece faces
-        along_x = np.where(wall_heading % 2 == 0, hw, hd)
-        along_y = np.where(wall_heading % 2 == 0, hd, hw)
-        dx = np.minimum(wall_dirs[0], wall_dirs[1])
-        dy = np.minimum(wall_dirs[2], wall_dirs[3])
-        return np.abs(dx - along_x - GAP) + np.abs(dy - along_y - GAP), wall_heading
+        sideways = _wall_heading(grid) % 2 == 0
+        along_x = np.where(sideways, hw, hd)
+        along_y = np.where(sideways, hd, hw)
+        dx, dy = _corner_distances(grid, wall_dirs)
+        return np.abs(dx - along_x - GAP) + np.abs(dy - along_y - GAP), _wall_heading(grid)
     if relation == "in_centre":
         return np.hypot(gx - centroid[0], gy - centroid[1]), None
     if anchor is None:  # relations to the room structure ("away_from wall")
@@ -109,27 +114,27 @@ def relation_field(
         return np.zeros(grid.shape), None
     ac = anchor.center()
     ahw, ahd = anchor.half()
-    dist = np.hypot(gx - ac[0], gy - ac[1])
-    same = np.full(grid.shape, heading_index(np.array(anchor.front[0]), np.array(anchor.front[1])))
-    if relation == "near":
-        return np.maximum(0.0, dist - (NEAR + max(ahw, ahd) + max(hw, hd))), None
-    if relation == "far":
-        return np.maximum(0.0, FAR - dist), None
-    if relation == "away_from":
+    if relation in ("near", "far", "away_from"):
+        dist = np.hypot(gx - ac[0], gy - ac[1])
+        if relation == "near":
+            return np.maximum(0.0, dist - (NEAR + max(ahw, ahd) + max(hw, hd))), None
+        if relation == "far":
+            return np.maximum(0.0, FAR - dist), None
         return np.maximum(0.0, AWAY + max(ahw, ahd) - dist), None
+    if relation not in ("beside", "left_of", "right_of", "in_front_of", "behind", "face", "aligned_with"):
+        return np.zeros(grid.shape), None  # support and wall-layer relations are not floor fields
     lat, fr = anchor.lateral, anchor.front
-    side = ahw + hw + 0.05
+    same = np.full(grid.shape, heading_index(np.array(fr[0]), np.array(fr[1])))
+    u = (gx - ac[0]) * lat[0] + (gy - ac[1]) * lat[1]
+    v = (gx - ac[0]) * fr[0] + (gy - ac[1]) * fr[1]
     if relation in ("beside", "left_of", "right_of"):
         # next to the anchor's side, anywhere along its depth as long as the subject stays within it
-        u = (gx - ac[0]) * lat[0] + (gy - ac[1]) * lat[1]
-        v = (gx - ac[0]) * fr[0] + (gy - ac[1]) * fr[1]
+        side = ahw + hw + 0.05
         along = {"beside": np.abs(u), "left_of": -u, "right_of": u}[relation]
         slack = max(ahd - hd, 0.0) + 0.1
         return np.abs(along - side) + np.maximum(0.0, np.abs(v) - slack), same
     if relation in ("in_front_of", "behind"):
         # within the anchor's width, and from touching its front (back) to half a metre away
-        u = (gx - ac[0]) * lat[0] + (gy - ac[1]) * lat[1]
-        v = (gx - ac[0]) * fr[0] + (gy - ac[1]) * fr[1]
         out = (v if relation == "in_front_of" else -v) - ahd - hd
         cost = np.maximum(0.0, np.abs(u) - max(ahw - hw / 2, 0.05)) + np.maximum(0.0, -0.15 - out) + \
             np.maximum(0.0, out - 0.5)
@@ -137,18 +142,33 @@ def relation_field(
             return cost, heading_index(ac[0] - gx, ac[1] - gy)
         return cost, same
     if relation == "face":
-        u = (gx - ac[0]) * lat[0] + (gy - ac[1]) * lat[1]
-        v = (gx - ac[0]) * fr[0] + (gy - ac[1]) * fr[1]
         edge = np.hypot(np.maximum(np.abs(u) - ahw, 0.0), np.maximum(np.abs(v) - ahd, 0.0)) - hd
         lo, hi = FACE_BANDS["close" if subject.type in CLOSE_FACERS else "view"]
         return np.maximum(0.0, lo - edge) + np.maximum(0.0, edge - hi), heading_index(ac[0] - gx, ac[1] - gy)
-    if relation == "aligned_with":
-        # centres on a line (either axis), or backs or fronts flush
-        u = (gx - ac[0]) * lat[0] + (gy - ac[1]) * lat[1]
-        v = (gx - ac[0]) * fr[0] + (gy - ac[1]) * fr[1]
-        options = [np.abs(u), np.abs(v), np.abs(v - hd + ahd), np.abs(v + hd - ahd)]
-        return np.min(options, axis=0), same
-    return np.zeros(grid.shape), None  # support and wall-layer relations are not floor fields
+    # aligned_with: centres on a line (either axis), or backs or fronts flush
+    options = [np.abs(u), np.abs(v), np.abs(v - hd + ahd), np.abs(v + hd - ahd)]
+    return np.min(options, axis=0), same
+
+
+def _wall_heading(grid: FloorGrid) -> np.ndarray:
+    """Per cell, the heading that turns a piece's back to the nearest wall."""
+    return grid.memo("wall_heading", lambda: heading_index(grid.wall_normal[..., 0], grid.wall_normal[..., 1]))
+
+
+def _behind(grid: FloorGrid, wall_dirs: np.ndarray) -> np.ndarray:
+    """Per cell, the distance to the wall behind a piece that turns its back to the nearest wall."""
+    def make() -> tuple[np.ndarray, np.ndarray]:
+        return wall_dirs, np.take_along_axis(wall_dirs, BACK_DIRECTION[_wall_heading(grid)][None], 0)[0]
+
+    return grid.memo(("behind", id(wall_dirs)), make)[1]
+
+
+def _corner_distances(grid: FloorGrid, wall_dirs: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """Per cell, the distance to the nearest wall along x and along y."""
+    def make() -> tuple[np.ndarray, tuple[np.ndarray, np.ndarray]]:
+        return wall_dirs, (np.minimum(wall_dirs[0], wall_dirs[1]), np.minimum(wall_dirs[2], wall_dirs[3]))
+
+    return grid.memo(("corner", id(wall_dirs)), make)[1]
 
 
 BACK_DIRECTION = np.array([2, 1, 3, 0])
@@ -162,13 +182,20 @@ def point_cost(relation: str, grid: FloorGrid, subject: AssetEntry, anchor: Plac
                centroid: tuple[float, float], x: float, y: float, yaw: float | None = None) -> float:
     """The relation's cost at one placed origin (for the validation report); with `yaw`, a relation
     that asks for a heading costs WRONG_HEADING_COST more when the subject does not have it."""
-    cost, head = relation_field(relation, grid, subject, anchor, wall_dirs, centroid)
+    field = relation_field(relation, grid, subject, anchor, wall_dirs, centroid)
+    return cost_in_field(relation, field, grid, subject, wall_dirs, x, y, yaw)
+
+
+def cost_in_field(relation: str, field: tuple[np.ndarray, np.ndarray | None], grid: FloorGrid, subject: AssetEntry,
+                  wall_dirs: np.ndarray, x: float, y: float, yaw: float | None = None) -> float:
+    """`point_cost` read off an already computed relation field."""
+    cost, head = field
     r, c = grid.cell(x, y)
     r, c = min(max(r, 0), grid.shape[0] - 1), min(max(c, 0), grid.shape[1] - 1)
     if relation == "against_wall" and yaw is not None:  # the wall behind the piece as it actually stands
-        k = int(round(yaw / (math.pi / 2))) % 4
+        k = round(yaw / (math.pi / 2)) % 4
         return float(abs(wall_dirs[BACK_DIRECTION[k], r, c] + 0.0 - (-subject.bbox_min[1]) - GAP))
     extra = 0.0
     if yaw is not None and head is not None and relation in HEADING_RELATIONS:
-        extra = WRONG_HEADING_COST * (int(head[r, c]) != int(round(yaw / (math.pi / 2))) % 4)
+        extra = WRONG_HEADING_COST * (int(head[r, c]) != round(yaw / (math.pi / 2)) % 4)
     return float(cost[r, c]) + extra

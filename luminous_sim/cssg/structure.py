@@ -2,17 +2,21 @@
 
 Counter runs are tiled with CounterTop segments; the sink slot gets a Sink with its SinkBasin and
 Faucet (the Sink's anchors), the stove slot four StoveBurners on the counter and StoveKnobs on its
-front, the fridge slot a Fridge; bathrooms get their Toilet, Sink and Bathtub (with its basin).
+front, the fridge slot a Fridge; bathrooms get their Toilet, Sink and Bathtub (with its basin), and a
+counter beside the sink where the vanity is long enough. A sink or cooktop counter wider than its
+slot keeps within what is left of its run, so that it does not run into the next fixture.
 """
 
 from __future__ import annotations
 
 import math
 
-from luminous_sim.assets.catalog import AssetEntry
+import numpy as np
+
+from luminous_sim.assets.catalog import AssetEntry, Catalog
 from luminous_sim.cssg.draft import SceneDraft
 from luminous_sim.cssg.pose import against_wall, local_to_world
-from luminous_sim.rooms.shell import CounterRun, FixtureSlot, Wall
+from luminous_sim.rooms.shell import CounterRun, FixtureSlot, RoomShell, Wall
 from luminous_sim.scene.model import SceneObject
 
 GAP = 0.01
@@ -22,10 +26,15 @@ def _width(e: AssetEntry) -> float:
     return e.dims[0]
 
 
+def _clamped(wall: Wall, entry: AssetEntry, u_start: float) -> float:
+    """The start along the wall that keeps the asset within it, clear of the walls at both ends (a slot at a
+    corner, a wider asset)."""
+    return min(max(u_start, GAP), wall.length - _width(entry) - GAP)
+
+
 def _add_against(draft: SceneDraft, wall: Wall, entry: AssetEntry, u_start: float, z: float = 0.0,
                  v_extra: float = 0.0, fixed: bool = True) -> SceneObject:
-    # stay within the wall, clear of the walls at both ends (a slot at a corner, a wider asset)
-    u_start = min(max(u_start, GAP), wall.length - _width(entry) - GAP)
+    u_start = _clamped(wall, entry, u_start)
     pose = against_wall(wall, entry, u_start, GAP, v_extra)
     return draft.add(entry, pose.x, pose.y, z - entry.bbox_min[2], pose.yaw, "fixture", fixed)
 
@@ -48,7 +57,7 @@ def _add_anchors(draft: SceneDraft, host: SceneObject, entry: AssetEntry) -> lis
 def _tile_counter(draft: SceneDraft, wall: Wall, a: float, b: float) -> list[SceneObject]:
     """Fill [a, b] along a wall with straight CounterTop segments, widest first."""
     straight = [e for e in draft.catalog.of_type("CounterTop") if e.dims[1] < 0.9]
-    out, u = [], a
+    out, u, b = [], max(a, GAP), min(b, wall.length - GAP)  # clear of the walls at both ends
     while straight:
         fits = [e for e in straight if _width(e) <= b - u + 1e-6]
         if not fits:
@@ -75,7 +84,7 @@ def _pick_sink(draft: SceneDraft, width: float) -> AssetEntry | None:
     return min(ours, key=_width, default=None)
 
 
-def _stove_counter(draft: SceneDraft, wall: Wall, slot: FixtureSlot) -> SceneObject | None:
+def _stove_counter(draft: SceneDraft, slot: FixtureSlot) -> AssetEntry | None:
     """The counter segment the burners stand on: the narrowest one at least as wide as the cooktop."""
     straight = [e for e in draft.catalog.of_type("CounterTop") if e.dims[1] < 0.9]
     wide = [e for e in straight if _width(e) >= slot.width - 1e-6]
@@ -83,7 +92,7 @@ def _stove_counter(draft: SceneDraft, wall: Wall, slot: FixtureSlot) -> SceneObj
         return None
     narrowest = min(_width(e) for e in wide)
     choice = [e for e in wide if abs(_width(e) - narrowest) < 1e-6]
-    return _add_against(draft, wall, choice[int(draft.rng.integers(len(choice)))], slot.offset)
+    return choice[int(draft.rng.integers(len(choice)))]
 
 
 def _stove(draft: SceneDraft, wall: Wall, slot: FixtureSlot, counter_top: float, depth: float,
@@ -116,6 +125,51 @@ def _counter_top_height(draft: SceneDraft) -> float:
     return max(tops) if tops else 0.9
 
 
+def _within(slot: FixtureSlot, width: float, lo: float, hi: float) -> float:
+    """Where a piece `width` wide starts in its slot: centred (at the slot's start when wider), then moved
+    as little as needed to stay within [lo, hi] (what is left of its counter run) where it fits there."""
+    start = slot.offset + max(0.0, (slot.width - width) / 2)
+    return min(max(start, lo), hi - width) if hi - lo >= width - 1e-9 else start
+
+
+def _meets_run(shell: RoomShell, run: CounterRun, at_start: bool) -> bool:
+    """Whether the run's start (end) meets another counter run that turns the corner there."""
+    walls = list(shell.walls)
+    i = next(k for k, w in enumerate(walls) if w.id == run.wall)
+    wall = walls[i]
+    if (run.start <= 1e-6) if at_start else (run.end >= wall.length - 1e-6):
+        return False
+    other = walls[(i - 1) % len(walls)] if at_start else walls[(i + 1) % len(walls)]
+    return any(r.wall == other.id and ((r.end >= other.length - 1e-6) if at_start else (r.start <= 1e-6))
+               for r in shell.fixtures.counters if r is not run)
+
+
+def _fill_run(draft: SceneDraft, wall: Wall, run: CounterRun, slots: list[FixtureSlot], depth: float) -> None:
+    """Tile one counter run with CounterTop segments around its sink and cooktop slots."""
+    # where a run meets another run's corner square, our counters may be a little deeper than the
+    # plan's depth: keep that much clear
+    extra = max(0.0, depth - run.depth) + GAP + 0.01
+    u = run.start + (extra if _meets_run(draft.shell, run, at_start=True) else 0.0)
+    end = run.end - (extra if _meets_run(draft.shell, run, at_start=False) else 0.0)
+    for slot, nxt in zip(slots, [*slots[1:], None]):
+        if slot.type not in ("Sink", "StoveBurner"):
+            continue
+        hi = end if nxt is None else nxt.offset  # the next slot's piece starts there
+        entry = _pick_sink(draft, slot.width) if slot.type == "Sink" else _stove_counter(draft, slot)
+        start = slot.offset if entry is None else _clamped(wall, entry, _within(slot, _width(entry), u, hi))
+        _tile_counter(draft, wall, u, start)
+        u = slot.offset + slot.width
+        if entry is None:
+            continue
+        host = _add_against(draft, wall, entry, start)
+        if slot.type == "Sink":
+            _add_anchors(draft, host, entry)
+        else:
+            _stove(draft, wall, slot, host.position[2] + entry.bbox_max[2], run.depth, host.id)
+        u = max(u, start + _width(entry))  # a piece wider than its slot pushes the next counter along
+    _tile_counter(draft, wall, u, end)
+
+
 def place_fixtures(draft: SceneDraft) -> None:
     """Add every fixture of the shell's fixture plan to the draft."""
     shell = draft.shell
@@ -124,35 +178,9 @@ def place_fixtures(draft: SceneDraft) -> None:
     for slot in shell.fixtures.slots:
         if slot.counter:
             slots_in.setdefault(slot.counter, []).append(slot)
-    run: CounterRun
     depth = max((e.dims[1] for e in draft.catalog.of_type("CounterTop") if e.dims[1] < 0.9), default=0.6)
     for run in shell.fixtures.counters:
-        wall = walls[run.wall]
-        # a run that starts or ends at a corner leaves the perpendicular run's depth free; our
-        # counters may be a little deeper than the plan's depth
-        extra = max(0.0, depth - run.depth) + GAP + 0.01
-        u = run.start + (extra if run.start > 1e-6 else 0.0)
-        end = run.end - (extra if run.end < wall.length - 1e-6 else 0.0)
-        for slot in sorted(slots_in.get(run.id, []), key=lambda s: s.offset):
-            if slot.type == "Sink":
-                _tile_counter(draft, wall, u, slot.offset)
-                sink = _pick_sink(draft, slot.width)
-                u = slot.offset + slot.width
-                if sink is not None:
-                    start = slot.offset + max(0.0, (slot.width - _width(sink)) / 2)
-                    host = _add_against(draft, wall, sink, start)
-                    _add_anchors(draft, host, sink)
-                    u = max(u, start + _width(sink))  # a sink wider than its slot pushes the next counter along
-            elif slot.type == "StoveBurner":
-                _tile_counter(draft, wall, u, slot.offset)
-                top = _stove_counter(draft, wall, slot)
-                if top is not None:
-                    _stove(draft, wall, slot, top.position[2] + draft.catalog.get(top.asset).bbox_max[2], run.depth,
-                           top.id)
-                    u = slot.offset + _width(draft.catalog.get(top.asset))
-                else:
-                    u = slot.offset + slot.width
-        _tile_counter(draft, wall, u, end)
+        _fill_run(draft, walls[run.wall], run, sorted(slots_in.get(run.id, []), key=lambda s: s.offset), depth)
     for slot in shell.fixtures.slots:
         if slot.counter:
             continue
@@ -162,3 +190,10 @@ def place_fixtures(draft: SceneDraft) -> None:
             continue
         host = _add_against(draft, wall, entry, slot.offset + max(0.0, (slot.width - _width(entry)) / 2))
         _add_anchors(draft, host, entry)
+
+
+def fixture_types(shell: RoomShell, catalog: Catalog) -> set[str]:
+    """The types of the fixtures `place_fixtures` puts in this shell (independent of the draws)."""
+    draft = SceneDraft(shell, catalog, np.random.default_rng(0))
+    place_fixtures(draft)
+    return {p.obj.type for p in draft.placed}

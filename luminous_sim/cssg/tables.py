@@ -40,6 +40,7 @@ def wall_height(object_type: str) -> float:
     return float(placement()["wall"][object_type])
 
 
+@cache
 def supports_for(object_type: str) -> frozenset[str]:
     """Receptacle types an object may rest on/in: ALFRED's table for pickupables, else our supports table."""
     extra = placement()["supports"].get(object_type)

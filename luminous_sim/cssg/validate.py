@@ -5,11 +5,8 @@ from __future__ import annotations
 
 from dataclasses import asdict, dataclass, field
 
-import networkx as nx
 import numpy as np
 import shapely
-from shapely import distance as shp_distance
-from shapely.geometry import Point
 from shapely.strtree import STRtree
 
 from luminous_sim.cssg.draft import SceneDraft
@@ -98,23 +95,29 @@ def reachable_grid(draft: SceneDraft) -> np.ndarray:
     if len(pts) == 0:
         return pts
     if obstacles:
-        tree = STRtree(obstacles)
+        pidx, _ = STRtree(obstacles).query(shapely.points(pts), predicate="dwithin", distance=AGENT_RADIUS)
         blocked = np.zeros(len(pts), dtype=bool)
-        pidx, _ = tree.query([Point(p) for p in pts], predicate="dwithin", distance=AGENT_RADIUS)
-        blocked[np.unique(pidx)] = True
+        blocked[pidx] = True
         pts = pts[~blocked]
-    g = nx.Graph()
-    keys = {(round(x / STEP), round(y / STEP)): i for i, (x, y) in enumerate(pts)}
-    g.add_nodes_from(range(len(pts)))
-    for (i, j), n in keys.items():
-        for di, dj in ((1, 0), (0, 1)):
-            m = keys.get((i + di, j + dj))
-            if m is not None:
-                g.add_edge(n, m)
     if len(pts) == 0:
         return pts
-    biggest = max(nx.connected_components(g), key=len)
-    return pts[sorted(biggest)]
+    return pts[_largest_component(pts)]
+
+
+def _largest_component(pts: np.ndarray) -> np.ndarray:
+    """Mask of the points in the largest 4-connected component of grid points `pts` (ties: the component
+    holding the earliest point)."""
+    from scipy import ndimage
+
+    keys = np.round(pts / STEP).astype(int)
+    keys -= keys.min(axis=0)
+    image = np.zeros(tuple(keys.max(axis=0) + 1), dtype=bool)
+    image[keys[:, 0], keys[:, 1]] = True
+    labels, _ = ndimage.label(image)
+    of_point = labels[keys[:, 0], keys[:, 1]]
+    sizes = np.bincount(of_point)
+    best = sizes[of_point] == sizes.max()
+    return of_point == of_point[int(np.argmax(best))]
 
 
 def check_layout(draft: SceneDraft, requests, ctx, unplaced: list[str], attempt: int) -> LayoutReport:
@@ -146,13 +149,19 @@ def check_layout(draft: SceneDraft, requests, ctx, unplaced: list[str], attempt:
                                                   rel.explicit, bool(met), round(float(cost), 4)))
     report.overlaps = solid_overlaps(draft)
     grid = reachable_grid(draft)
-    report.reachable_points = int(len(grid))
+    report.reachable_points = len(grid)
     if len(grid):
-        pts = shapely.points(grid)
-        for p in draft.placed:
-            if p.obj.layer != "decoration" and shp_distance(p.footprint, pts).min() > REACH - 1e-6:
-                report.unreachable.append(p.obj.id)
+        report.unreachable = _out_of_reach([p for p in draft.placed if p.obj.layer != "decoration"], grid)
     return report
+
+
+def _out_of_reach(placed: list, grid: np.ndarray) -> list[str]:
+    """Ids of the placed things whose footprint is farther than REACH from every reachable grid point."""
+    tree = STRtree(shapely.points(grid))
+    hit, _ = tree.query([p.footprint for p in placed], predicate="dwithin", distance=REACH - 1e-6)
+    near = np.zeros(len(placed), dtype=bool)
+    near[hit] = True
+    return [p.obj.id for p, ok in zip(placed, near) if not ok]
 
 
 def _lateral(placed, anchor) -> float:

@@ -4,10 +4,13 @@ named object when a CDF says so)."""
 
 from __future__ import annotations
 
+import math
+from collections.abc import Callable
+
 import numpy as np
 
 from luminous_sim.assets.catalog import AssetEntry
-from luminous_sim.cssg.draft import SceneDraft
+from luminous_sim.cssg.draft import Placed, SceneDraft
 from luminous_sim.cssg.pose import footprint, yaw_facing
 from luminous_sim.cssg.requests import Request
 from luminous_sim.cssg.tables import wall_height
@@ -17,9 +20,9 @@ MARGIN = 0.1
 ABOVE_GAP = 0.25
 IMPLICIT_ABOVE = {"Mirror": "Sink", "Painting": "Sofa", "ToiletPaperHanger": "Toilet", "TowelHolder": "Bathtub",
                   "Cabinet": "CounterTop"}
+"""Where a wall piece goes by default when that fixture or furniture is in the room."""
 WALL_MOUNTED_MAX_DEPTH = 0.45
 """Only shallow variants hang on a wall (wall cabinets, not base cabinets)."""
-"""Where a wall piece goes by default when that fixture or furniture is in the room."""
 
 
 def _origin_for(wall: Wall, entry: AssetEntry, u_center: float, v_back: float) -> tuple[float, float, float]:
@@ -52,8 +55,15 @@ def clashes(draft: SceneDraft, entry: AssetEntry, x: float, y: float, yaw: float
     return False
 
 
-def _add(draft: SceneDraft, req: Request, entry: AssetEntry, wall: Wall, u_center: float, z0: float) -> bool:
+Accept = Callable[[AssetEntry, float, float, float], bool]
+"""Whether a wall piece with its origin at (x, y) and heading yaw meets its floor relations (near, beside)."""
+
+
+def _add(draft: SceneDraft, req: Request, entry: AssetEntry, wall: Wall, u_center: float, z0: float,
+         accept: Accept | None = None) -> bool:
     x, y, yaw = _origin_for(wall, entry, u_center, 0.005)
+    if accept is not None and not accept(entry, x, y, yaw):
+        return False
     if clashes(draft, entry, x, y, yaw, z0):
         return False
     draft.add(entry, x, y, z0 - entry.bbox_min[2], yaw, "decoration", fixed=True, name=req.name, states=req.states,
@@ -77,6 +87,34 @@ def _above_target(draft: SceneDraft, req: Request, by_name: dict[str, str]) -> s
     return hosts[int(draft.rng.integers(len(hosts)))] if hosts else None
 
 
+BEHIND_SLACK = 0.3
+"""How far (m) beyond its depth a host's back may stand from the wall it hangs a piece above."""
+ABOVE_SHIFT = 0.2
+"""How far (m) a piece above something may move sideways to stay within its wall (a basin near a corner)."""
+
+
+def _onto_wall(wall: Wall, entry: AssetEntry, u_center: float, most: float) -> float:
+    """`u_center` moved by at most `most` so that the piece's width stays within the wall."""
+    half = entry.dims[0] / 2
+    inside = min(max(u_center, half), wall.length - half)
+    return u_center + max(-most, min(most, inside - u_center))
+
+
+def _wall_behind(draft: SceneDraft, host: Placed) -> tuple[Wall, float]:
+    """The wall at the back of `host` (facing the way it faces, within its depth and a little), with the
+    host's position along it; else the wall nearest to it."""
+    x, y = host.obj.position[0], host.obj.position[1]
+    front = (-math.sin(host.obj.yaw), math.cos(host.obj.yaw))
+    best = None
+    for w in draft.shell.walls:
+        if w.normal[0] * front[0] + w.normal[1] * front[1] < 0.99:
+            continue
+        u, v = w.local(np.array([[x, y]]))[0]
+        if 0.0 <= u <= w.length and -0.05 <= v <= host.entry.dims[1] + BEHIND_SLACK and (best is None or v < best[2]):
+            best = (w, float(u), float(v))
+    return (best[0], best[1]) if best is not None else _nearest_wall(draft, x, y)
+
+
 def _nearest_wall(draft: SceneDraft, x: float, y: float) -> tuple[Wall, float]:
     best = None
     for w in draft.shell.walls:
@@ -88,10 +126,11 @@ def _nearest_wall(draft: SceneDraft, x: float, y: float) -> tuple[Wall, float]:
 
 
 def place_wall_piece(draft: SceneDraft, req: Request, by_name: dict[str, str], tries: int = 40,
-                     relations: bool = True) -> bool:
+                     relations: bool = True, accept: Accept | None = None) -> bool:
     """Place one wall-layer request; False if no wall stretch has room.
 
-    With `relations` off (the baseline) nothing is put above anything on purpose.
+    With `relations` off (the baseline) nothing is put above anything on purpose; `accept` turns down
+    spots that break the piece's floor relations.
     """
     rng = draft.rng
     variants = [e for e in req.variants(draft.catalog) if e.dims[1] <= WALL_MOUNTED_MAX_DEPTH]
@@ -125,7 +164,7 @@ def place_wall_piece(draft: SceneDraft, req: Request, by_name: dict[str, str], t
         entry = variants[int(rng.integers(len(variants)))]
         if target is not None and attempt < tries // 2:
             host = next(p for p in draft.placed if p.obj.id == target)
-            wall, u = _nearest_wall(draft, host.obj.position[0], host.obj.position[1])
+            wall, u = _wall_behind(draft, host)
             top = host.obj.position[2] + host.entry.bbox_max[2]
             beside = any(r.relation in ("near", "beside") for r in req.rels) or req.type == "ToiletPaperHanger"
             if beside:  # at its usual height, to one side of the anchor
@@ -134,7 +173,7 @@ def place_wall_piece(draft: SceneDraft, req: Request, by_name: dict[str, str], t
                 u_center = u + side * (host.entry.dims[0] / 2 + float(rng.uniform(*NEAR_OFFSET)) * 0.5)
             else:
                 z0 = max(wall_height(req.type), top + ABOVE_GAP)
-                u_center = u + float(rng.uniform(-0.05, 0.05))
+                u_center = _onto_wall(wall, entry, u + float(rng.uniform(-0.05, 0.05)), ABOVE_SHIFT)
         else:
             lengths = np.array([w.length for w in draft.shell.walls])
             wall = draft.shell.walls[int(rng.choice(len(lengths), p=lengths / lengths.sum()))]
@@ -154,6 +193,6 @@ def place_wall_piece(draft: SceneDraft, req: Request, by_name: dict[str, str], t
             continue
         if z0 + entry.dims[2] > draft.shell.wall_height - 0.05:
             continue
-        if _add(draft, req, entry, wall, u_center, z0):
+        if _add(draft, req, entry, wall, u_center, z0, accept):
             return True
     return False

@@ -47,13 +47,22 @@ class BathroomDims:
     tub_depth: float = 0.75
     tub_height: float = 0.55
     tub_front: float = 0.6
+    tub_slack: float = 0.05
+    """How far (m) a bathtub may stick out of its slot: our tubs are a few cm longer and deeper."""
     toilet_width: float = 0.75
     toilet_depth: float = 0.7
     toilet_height: float = 0.8
     toilet_front: float = 0.55
+    toilet_beside_tub: float = 0.75
+    """Probability that the toilet stands right beside the bathtub, on its wall, given room."""
+    beside_gap: float = 0.1
+    """Most floor (m) left between a toilet and the bathtub it stands beside."""
     sink_width: float = 0.6
     sink_depth: float = 0.5
-    vanity_widths: tuple[float, ...] = (0.8, 1.0, 1.2)
+    vanity_widths: tuple[float, ...] = (0.8, 1.0, 1.2, 1.35)
+    vanity_counter: float = 0.7
+    """Least vanity length (m) beside the sink for a counter segment: a vanity this much wider
+    than the sink has its sink at one end and a counter top along the rest."""
     vanity_depth: float = 0.55
     vanity_height: float = 0.85
     vanity_probability: float = 0.7
@@ -312,6 +321,25 @@ def plan_kitchen(
     return FixturePlan(layout=kind, counters=counters, slots=slots)
 
 
+def _beside(
+    option: tuple[Wall, float], tub_wall: Wall, tub_u: float, tub_len: float, d: BathroomDims
+) -> bool:
+    """Whether a toilet slot at `option` stands right beside the bathtub slot, on the same wall."""
+    w, u = option
+    if w.id != tub_wall.id:
+        return False
+    gap = max(u - (tub_u + tub_len), tub_u - (u + d.toilet_width))
+    return -1e-6 <= gap <= d.beside_gap + 1e-6
+
+
+def _sink_offset(rng: np.random.Generator, u: float, width: float, d: BathroomDims) -> float:
+    """Where the sink slot goes in a vanity run [u, u + width]: at one end, drawn, when the rest
+    takes a counter segment; else in the middle."""
+    if width - d.sink_width >= d.vanity_counter - 1e-6:
+        return r4(u if rng.random() < 0.5 else u + width - d.sink_width)
+    return r4(u + (width - d.sink_width) / 2)
+
+
 def plan_bathroom(
     walls: Sequence[Wall],
     floor: Polygon,
@@ -369,7 +397,8 @@ def plan_bathroom(
         depth=d.tub_depth,
         height=d.tub_height,
     )
-    tub_foot = footprint(tw, tu, tl, d.tub_depth)
+    # other fixtures keep clear of the tub as built (a little longer and deeper than its slot)
+    tub_foot = footprint(tw, tu - d.tub_slack, tl + 2 * d.tub_slack, d.tub_depth + d.tub_slack)
     obstacles = list(keepouts) + [tub_foot]
 
     toilet_opts = [
@@ -388,6 +417,9 @@ def plan_bathroom(
     ]
     if not toilet_opts:
         return None
+    beside = [o for o in toilet_opts if _beside(o, tw, tu, tl, d)]
+    if beside and rng.random() < d.toilet_beside_tub:
+        toilet_opts = beside
     ow, ou = _pick(rng, toilet_opts)
     toilet = FixtureSlot(
         id="Toilet_0",
@@ -435,7 +467,7 @@ def plan_bathroom(
                     id="Sink_0",
                     type="Sink",
                     wall=w.id,
-                    offset=r4(u + (vw - d.sink_width) / 2),
+                    offset=_sink_offset(rng, u, vw, d),
                     width=d.sink_width,
                     depth=d.sink_depth,
                     height=d.vanity_height,

@@ -113,6 +113,9 @@ DOOR_CLEARANCE_EXTRA = 0.1
 CORNER_MARGIN = 0.2
 WINDOW_GAP = 0.3
 HEAD_ROOM = 0.2
+MIRROR_SPAN = 0.6
+"""Width (m) of wall above a bathroom sink kept free of windows (and WINDOW_GAP either side), for
+its mirror."""
 
 
 def snake(room_type: str) -> str:
@@ -235,6 +238,10 @@ def _windows(shell: RoomShell, rng: np.random.Generator, spec: RoomSpec) -> list
         spans.setdefault(d.wall, []).append(d.span)
     windows: list[Window] = []
     sink = shell.fixtures.slot("Sink")
+    if sink is not None and shell.room_type == "Bathroom":  # the wall above it takes a mirror
+        mid = sink.offset + sink.width / 2
+        spans.setdefault(sink.wall, []).append((mid - MIRROR_SPAN / 2, mid + MIRROR_SPAN / 2))
+        sink = None
     for k in range(count):
         width, sill = _u(rng, spec.window_width), _u(rng, spec.window_sill)
         height = min(_u(rng, spec.window_height), snap(shell.wall_height - HEAD_ROOM - sill, SNAP))

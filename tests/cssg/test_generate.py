@@ -101,3 +101,24 @@ def test_generate_cli_writes_scene_report_and_pictures(tmp_path):
         assert (out / f).stat().st_size > 0, f
     assert json.loads((out / "report.json").read_text())["layout"]["ok"]
     assert main(["generate", "--cdf", str(tmp_path / "missing.yaml"), "--out", str(out)]) == 2
+
+
+@pytest.mark.parametrize("seed", range(8))
+def test_bathroom_example_is_feasible_and_keeps_fixtures_in_place(seed):
+    g = generate(_load("bathroom_soap"), seed=seed)
+    assert all(r.met for r in g.report.relations if r.explicit and r.hard)
+    by_name = {o.name: o for o in g.scene.objects if o.name}
+    by_id = {o.id: o for o in g.scene.objects}
+    assert by_id[by_name["basin"].parent].type == "Sink", "the basin stays in its sink"
+    assert by_name["counter"].layer == "fixture" and by_name["soap"].parent == by_name["counter"].id
+    assert not g.report.overlaps and not g.report.unreachable
+
+
+def test_bathroom_fixtures_the_cdf_names_come_with_the_room():
+    from luminous_sim.assets.catalog import default_catalog
+    from luminous_sim.cssg.structure import fixture_types
+
+    doc = _load("bathroom_soap")
+    for seed in range(5):
+        shell = choose_room(doc, np.random.default_rng(seed))
+        assert {"CounterTop", "SinkBasin", "Toilet", "Bathtub"} <= fixture_types(shell, default_catalog())

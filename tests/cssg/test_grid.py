@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import numpy as np
 import pytest
+import shapely
 from shapely.geometry import Polygon, box
 
 from luminous_sim.assets.catalog import default_catalog
@@ -51,3 +52,45 @@ def test_heading_index_faces_the_direction():
     assert heading_index(np.array(-1.0), np.array(0.0)) == 1  # -x: yaw 90 degrees
     assert heading_index(np.array(0.0), np.array(-1.0)) == 2
     assert heading_index(np.array(1.0), np.array(0.0)) == 3
+
+
+def test_heading_index_breaks_diagonal_ties_towards_y():
+    assert heading_index(np.array(1.0), np.array(1.0)) == 0
+    assert heading_index(np.array(-1.0), np.array(-1.0)) == 2
+    assert heading_index(np.array(0.0), np.array(0.0)) == 0
+
+
+def test_directional_wall_distance_matches_a_scan():
+    g = FloorGrid.from_polygon(Polygon([(0, 0), (5, 0), (5, 2), (3, 2), (3, 4), (0, 4)]))
+    d = directional_wall_distance(g)
+    h, w = g.room.shape
+    for r, c in [(5, 5), (10, 70), (60, 20), (39, 59), (0, 0)]:
+        if not g.room[r, c]:
+            continue
+        runs = []
+        for dr, dc in ((0, -1), (0, 1), (-1, 0), (1, 0)):
+            k = 0
+            while 0 <= r + k * dr < h and 0 <= c + k * dc < w and g.room[r + k * dr, c + k * dc]:
+                k += 1
+            runs.append((k - 0.5) * RES)
+        assert d[:, r, c] == pytest.approx(runs)
+
+
+def test_cells_are_the_cell_centres_inside_a_polygon():
+    g = FloorGrid.from_polygon(Polygon([(0, 0), (4, 0), (4, 3), (0, 3)]))
+    gx, gy = g.coords()
+    for poly in (box(1.02, 0.51, 1.93, 1.26), Polygon([(2, 0.2), (3.1, 0.9), (2.6, 1.7), (1.5, 1.0)]),
+                 box(-0.5, 2.6, 0.4, 3.5)):
+        assert np.array_equal(g._cells(poly), shapely.contains_xy(poly, gx, gy))
+
+
+def test_feasibility_is_cached_until_the_free_mask_changes(chair):
+    g = FloorGrid.from_polygon(Polygon([(0, 0), (4, 0), (4, 3), (0, 3)]))
+    before = g.feasible(chair, HEADINGS[0])
+    assert g.feasible(chair, HEADINGS[0]) is before and not before.flags.writeable
+    r, c = g.cell(2.0, 1.5)
+    assert before[r, c]
+    g.block(box(1.8, 1.3, 2.2, 1.7))
+    assert not g.feasible(chair, HEADINGS[0])[r, c]
+    g.set_free(g.room.copy())
+    assert np.array_equal(g.feasible(chair, HEADINGS[0]), before)

@@ -109,6 +109,40 @@ def test_bathrooms_have_toilet_sink_bathtub():
     assert 0 in window_counts and 1 in window_counts
 
 
+def test_bathroom_toilets_often_stand_beside_the_bathtub():
+    beside = 0
+    for shell in shells("Bathroom"):
+        tub, toilet = shell.fixtures.slot("Bathtub"), shell.fixtures.slot("Toilet")
+        if toilet.wall == tub.wall:
+            after = toilet.offset - (tub.offset + tub.width)
+            before = tub.offset - (toilet.offset + toilet.width)
+            gap = max(after, before)
+            beside += -1e-6 <= gap <= 0.1 + 1e-6
+    assert beside >= 0.2 * len(SEEDS)
+
+
+def test_wide_bathroom_vanities_keep_the_sink_at_one_end():
+    wide = 0
+    for shell in shells("Bathroom"):
+        sink = shell.fixtures.slot("Sink")
+        for run in shell.fixtures.counters:
+            assert sink.counter == run.id and sink.wall == run.wall
+            if run.end - run.start - sink.width >= 0.7 - 1e-6:
+                wide += 1
+                at_start = sink.offset == pytest.approx(run.start)
+                assert at_start or sink.offset + sink.width == pytest.approx(run.end)
+    assert wide >= 0.25 * len(SEEDS)
+
+
+def test_no_window_above_a_bathroom_sink():
+    for shell in shells("Bathroom"):
+        sink = shell.fixtures.slot("Sink")
+        mid = sink.offset + sink.width / 2
+        for w in shell.windows:
+            if w.wall == sink.wall:
+                assert w.offset > mid + 0.4 or w.offset + w.width < mid - 0.4, shell.name
+
+
 @pytest.mark.parametrize("room_type", ["LivingRoom", "Bedroom"])
 def test_living_rooms_and_bedrooms_keep_no_fixtures(room_type):
     for shell in shells(room_type)[:50]:

@@ -1,0 +1,116 @@
+"""The agent's reach on the furniture grid: windowed, closed-form distances agree with scipy's full
+Euclidean distance transform, and the incremental reachability check agrees with a from-scratch one."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import numpy as np
+import pytest
+from scipy import ndimage
+
+from luminous_sim import cdf
+from luminous_sim.assets.catalog import default_catalog
+from luminous_sim.cssg.draft import SceneDraft
+from luminous_sim.cssg.furniture import FloorContext
+from luminous_sim.cssg.generate import generate
+from luminous_sim.cssg.grid import RES
+from luminous_sim.cssg.pose import footprint
+from luminous_sim.cssg.reach import AGENT_CLEARANCE, REACH, FloorPiece, clear_of, largest_part
+from luminous_sim.cssg.structure import place_fixtures
+from luminous_sim.rooms.generate import generate_shell
+
+
+def _edt_to(mask: np.ndarray) -> np.ndarray:
+    if not mask.any():
+        return np.full(mask.shape, np.inf)
+    return ndimage.distance_transform_edt(~mask) * RES
+
+
+@pytest.mark.parametrize("full", [True, False])
+def test_piece_distances_match_the_distance_transform(full):
+    mask = np.zeros((60, 80), dtype=bool)
+    mask[20:31, 5:19] = True
+    if not full:
+        mask[20:25, 5:9] = False  # an L-shaped footprint
+    piece = FloorPiece.of("p", mask)
+    assert piece.full == full
+    ref = _edt_to(mask)
+    for radius in (AGENT_CLEARANCE, REACH):
+        rows, cols, dist = piece.distances(mask.shape, radius)
+        assert np.allclose(dist, ref[rows, cols])
+        outside = np.ones(mask.shape, dtype=bool)
+        outside[rows, cols] = False
+        assert (ref[outside] > radius).all(), "the window holds every cell within the radius"
+
+
+def test_nothing_solid_leaves_every_cell_clear():
+    assert clear_of(np.zeros((20, 30), dtype=bool)).all()
+
+
+def test_clear_of_one_piece_matches_the_whole_grid():
+    mask = np.zeros((50, 50), dtype=bool)
+    mask[3:9, 40:48] = True
+    assert np.array_equal(FloorPiece.of("p", mask).clear_of(mask.shape), clear_of(mask))
+
+
+def test_reachable_finds_and_remembers_a_witness():
+    walk = np.zeros((80, 80), dtype=bool)
+    walk[60:70, 60:70] = True
+    near = np.zeros_like(walk)
+    near[40:45, 40:45] = True
+    piece = FloorPiece.of("p", near)
+    assert piece.reachable(walk) == bool((_edt_to(walk)[near] <= REACH).any())
+    far = np.zeros_like(walk)
+    far[0:3, 0:3] = True
+    assert not FloorPiece.of("q", far).reachable(walk)
+    if piece.witness >= 0:
+        assert walk.ravel()[piece.witness]
+
+
+def _reference_reachable(ctx: FloorContext, fp) -> bool:
+    """The check as it was first written: two full distance transforms per candidate."""
+    cells = ctx.grid._cells(fp)
+    solid = ctx.solid | cells
+    clear = _edt_to(solid) >= AGENT_CLEARANCE
+    walk = largest_part(clear & (ctx.grid.wall_dist >= AGENT_CLEARANCE - RES / 2))
+    if not walk.any():
+        return False
+    dist = _edt_to(walk)
+    return all(dist[c].min() <= REACH for c in _masks(ctx) + [cells] if c.any())
+
+
+def _masks(ctx: FloorContext) -> list[np.ndarray]:
+    out = []
+    for p in ctx.pieces:
+        m = np.zeros(ctx.grid.shape, dtype=bool)
+        m.ravel()[p.cells] = True
+        out.append(m)
+    return out
+
+
+@pytest.mark.parametrize("room_type", ["Kitchen", "Bathroom", "Bedroom"])
+def test_incremental_reachability_matches_a_fresh_check(room_type):
+    catalog = default_catalog()
+    rng = np.random.default_rng(3)
+    entries = catalog.of_type("Cabinet") + catalog.of_type("Sofa") + catalog.of_type("GarbageCan")
+    for seed in range(3):
+        shell = generate_shell(room_type, np.random.default_rng(seed))
+        draft = SceneDraft(shell, catalog, np.random.default_rng(seed))
+        place_fixtures(draft)
+        ctx = FloorContext.create(draft)
+        x0, y0, x1, y1 = shell.bounds
+        for i in range(40):
+            entry = entries[int(rng.integers(len(entries)))]
+            fp = footprint(entry, rng.uniform(x0, x1), rng.uniform(y0, y1), float(rng.integers(4)) * np.pi / 2)
+            ok = ctx.keeps_everything_reachable(fp)
+            assert ok == _reference_reachable(ctx, fp), (room_type, seed, i)
+            if ok and i % 3 == 0:
+                ctx.commit(f"piece{i}", fp)
+        assert np.array_equal(ctx.clear, clear_of(ctx.solid))
+
+
+def test_generated_layouts_keep_every_piece_reachable():
+    doc = cdf.load(Path(__file__).resolve().parents[2] / "cdf" / "examples" / "bedroom_reading_desk.yaml")
+    g = generate(doc, seed=3)
+    assert not g.report.unreachable and g.report.reachable_points > 0
