@@ -13,11 +13,10 @@ import numpy as np
 
 from luminous_sim.cssg.regions import HANGERS
 from luminous_sim.scene.model import Scene
-from luminous_sim.states.tables import GATING_OPENABLE
 from luminous_sim.tasks.model import PddlParams, TaskInstance
 from luminous_sim.tasks.sample import sample_task
-from luminous_sim.vocab import abilities, parent_type
-from luminous_sim.world.sightlines import seeable
+from luminous_sim.vocab import parent_type
+from luminous_sim.world.sightlines import unseen
 from luminous_sim.world.world import World
 
 SPOT_SEED = 2024
@@ -48,20 +47,12 @@ def physically_feasible(world: World, params: PddlParams, excluded: Iterable[str
 
 
 def unseeable(world: World) -> set[str]:
-    """Objects to interact with (pick up, switch, open, put into) that no sight line from a reachable
-    pose meets (for one in a closed container, the container is what must be seen): tasks leave them
-    out, as ALFRED's generator drops what its expert cannot reach."""
-    state = world.interactions.state
-    targets: dict[str, str] = {}
-    for oid, o in state.objects.items():
-        ab = abilities(o.object_type)
-        if oid == state.held or not (ab.pickupable or ab.toggleable or ab.openable or ab.receptacle):
-            continue
-        gate = next((a for a in state.ancestors(oid) if state[a].object_type in GATING_OPENABLE
-                     and not state[a].isOpen), None)
-        targets[oid] = gate or oid
-    seen = seeable(world, sorted(set(targets.values())))
-    return {oid for oid, t in targets.items() if not seen[t]}
+    """Objects to interact with that no sight line from a reachable pose meets (for one in a closed
+    container, the container is what must be seen): tasks leave them out, as ALFRED's generator drops
+    what its expert cannot reach."""
+    bodies = {oid: lo.body for oid, lo in world.built.objects.items()}
+    return unseen(world.client, world.interactions.state, bodies, world.nav.points(),
+                  world.config.visibility_distance)
 
 
 def draw_task(scene: Scene, world: World, task_type: str, rng: np.random.Generator,

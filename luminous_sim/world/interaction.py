@@ -268,6 +268,7 @@ class Interactions:
         """A free, stable pose (x, y, z, yaw) for `oid` in the receptacle's open regions, or why there
         is none. Nothing moves; with `rng` given the world's own random stream is left untouched;
         `assume_open` counts the regions behind a closed door too."""
+        eye = np.array(self.world.agent.eye()) if rng is None else None  # a real put: in view if it can be
         rng = self.rng if rng is None else rng
         loaded_r = self.world.built.objects[receptacle]
         entry = self.world.built.objects[oid].entry
@@ -288,7 +289,6 @@ class Interactions:
             boxes.append((lo, hi))
             pos, yaw = self.world.built.pose_of(other)
             prints.append(footprint(loaded.entry, pos[0], pos[1], yaw))  # oriented, not the world AABB
-        eye = None if assume_open else np.array(self.world.agent.eye())
         for i in self._spot_order(spots, rng):
             spot = spots[i]
             if entry.dims[2] > spot.clearance + 1e-6:

@@ -24,8 +24,8 @@ class PhysicsReport:
     moved: dict[str, float] = field(default_factory=dict)
     fell: list[str] = field(default_factory=list)
     unseeable: list[str] = field(default_factory=list)
-    """Pickupable objects (or the closed containers holding them) that no reachable pose has a sight
-    line to: not a physics defect, but an agent could never interact with them."""
+    """Objects to interact with (or the closed containers holding them) that no reachable pose has a
+    sight line to: not a physics defect, but an agent could never interact with them."""
 
     @property
     def ok(self) -> bool:
@@ -66,27 +66,16 @@ def interpenetrations(built: BuiltScene, tol: float = PENETRATION_TOL) -> list[d
 
 
 def unseeable_objects(built: BuiltScene) -> list[str]:
-    """Pickupable objects no sight line from the reachable grid meets (through a closed container's
-    door: the container must be seen)."""
+    """Objects to interact with that no sight line from the reachable grid meets (through a closed
+    container's door: the container must be seen)."""
     from luminous_sim.cssg.validate import scene_reachable_grid
-    from luminous_sim.states.tables import GATING_OPENABLE
-    from luminous_sim.vocab import abilities
-    from luminous_sim.world.sightlines import seeable_bodies
+    from luminous_sim.states.model import ObjectState, WorldState
+    from luminous_sim.world.sightlines import unseen
 
-    by_id = {o.id: o for o in built.scene.objects}
-    targets = {}
-    for o in built.scene.objects:
-        if not abilities(o.type).pickupable:
-            continue
-        t, p = o.id, o.parent
-        while p is not None and p in by_id:
-            if by_id[p].type in GATING_OPENABLE and not by_id[p].states.get("isOpen"):
-                t = p
-            p = by_id[p].parent
-        targets[o.id] = t
-    bodies = {t: built.objects[t].body for t in set(targets.values()) if t in built.objects}
-    seen = seeable_bodies(built.client, bodies, scene_reachable_grid(built.scene), VISIBILITY_DISTANCE)
-    return sorted(oid for oid, t in targets.items() if not seen.get(t, False))
+    state = WorldState.of([ObjectState(o.id, o.type, isOpen=bool(o.states.get("isOpen", False)), parent=o.parent)
+                           for o in built.scene.objects])
+    bodies = {oid: lo.body for oid, lo in built.objects.items()}
+    return sorted(unseen(built.client, state, bodies, scene_reachable_grid(built.scene), VISIBILITY_DISTANCE))
 
 
 def check_physics(scene: Scene, settle_steps: int = 240) -> PhysicsReport:

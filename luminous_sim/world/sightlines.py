@@ -11,19 +11,38 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
+from luminous_sim.states.model import WorldState
+from luminous_sim.states.rules import enclosing_closed
+from luminous_sim.vocab import abilities
 from luminous_sim.world.agent import CAMERA_HEIGHT, HORIZON_MAX
 
 if TYPE_CHECKING:
     from luminous_sim.world.world import World
 
-POINTS_PER_OBJECT = 5
-"""The AABB's centre, the centre of its top, and three points on its top around it."""
 OVERSHOOT = 0.3
 """Metres a sight line runs past its target point."""
 RAY_BATCH = 16384
 """PyBullet's limit on rays per rayTestBatch call."""
 MAX_PITCH_DOWN = HORIZON_MAX + 30.0
 """Steepest downward sight line the camera can frame (the lowest horizon plus half the 60-degree fov)."""
+
+
+def sight_targets(state: WorldState) -> dict[str, str]:
+    """Objects to interact with (pick up, switch, open, put into), each with what must be seen to reach
+    it: itself, or the innermost closed container shutting it in."""
+    out = {}
+    for oid, o in state.objects.items():
+        ab = abilities(o.object_type)
+        if oid != state.held and (ab.pickupable or ab.toggleable or ab.openable or ab.receptacle):
+            out[oid] = enclosing_closed(state, oid) or oid
+    return out
+
+
+def unseen(client, state: WorldState, bodies: dict[str, int], points: np.ndarray, reach: float) -> set[str]:
+    """The `sight_targets` whose target no sight line from `points` meets."""
+    targets = sight_targets(state)
+    seen = seeable_bodies(client, {t: bodies[t] for t in set(targets.values()) if t in bodies}, points, reach)
+    return {oid for oid, t in targets.items() if not seen.get(t, False)}
 
 
 def _targets(lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
