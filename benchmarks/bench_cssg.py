@@ -5,7 +5,8 @@
 
 Per room type it uses the example CDF of that room type (explicit relations) and reports, for CSSG
 and the baseline: explicit relations met, implicit rules met, scenes with interpenetrations > 1 cm,
-objects that moved (> 1 cm) or fell while settling, required objects reachable by the agent; then the
+objects that moved (> 1 cm) or fell while settling, required objects reachable by the agent, objects to
+interact with that a sight line from where the agent stands meets (world/sightlines.py); then the
 median time of one layout sample, of one valid scene, and of layout + PyBullet build + settle.
 """
 
@@ -35,6 +36,14 @@ EXAMPLES = {
 }
 
 
+def _to_interact(object_type: str) -> bool:
+    """Whether the agent would pick up, switch, open or put into things of this type."""
+    from luminous_sim.vocab import abilities
+
+    ab = abilities(object_type)
+    return ab.pickupable or ab.toggleable or ab.openable or ab.receptacle
+
+
 def _rate(hits: int, total: int) -> str:
     return f"{100 * hits / total:5.1f}% ({hits}/{total})" if total else "  n/a"
 
@@ -48,6 +57,7 @@ def run(room_type: str, n: int, physics: bool, grid_dir: Path | None) -> None:
     tops = []
     for method in ("cssg", "baseline"):
         exp = imp = req_ok = req_total = pen_scenes = moved = fell = infeasible = soft = soft_total = 0
+        targets = unseen = 0
         exp_total = imp_total = 0
         sample_times, scene_times, full_times = [], [], []
         for seed in range(n):
@@ -83,10 +93,12 @@ def run(room_type: str, n: int, physics: bool, grid_dir: Path | None) -> None:
                 pen_scenes += bool(ph.interpenetrations)
                 moved += len(ph.moved)
                 fell += len(ph.fell)
+                targets += sum(1 for o in g.scene.objects if _to_interact(o.type))
+                unseen += len(ph.unseeable)
             if method == "cssg" and grid_dir is not None and len(tops) < 6:
                 tops.append(g)
         rows[method] = (exp, exp_total, imp, imp_total, req_ok, req_total, pen_scenes, moved, fell, infeasible,
-                        sample_times, scene_times, full_times, soft, soft_total)
+                        sample_times, scene_times, full_times, soft, soft_total, targets - unseen, targets)
     print(f"\n== {room_type} ({EXAMPLES[room_type]}.yaml, {n} seeds) ==")
     print(f"{'':34}{'CSSG':>22}{'baseline':>22}")
     c, b = rows["cssg"], rows["baseline"]
@@ -98,6 +110,7 @@ def run(room_type: str, n: int, physics: bool, grid_dir: Path | None) -> None:
         print(f"{'scenes with interpenetration>1cm':34}{c[6]:>22}{b[6]:>22}")
         print(f"{'objects moved >1cm while settling':34}{c[7]:>22}{b[7]:>22}")
         print(f"{'objects fell while settling':34}{c[8]:>22}{b[8]:>22}")
+        print(f"{'objects to interact with, seen':34}{_rate(c[15], c[16]):>22}{_rate(b[15], b[16]):>22}")
     print(f"{'infeasible (no valid layout)':34}{c[9]:>22}{'-':>22}")
     med = lambda xs: f"{1000 * statistics.median(xs):.0f} ms" if xs else "n/a"
     print(f"{'median time per layout sample':34}{med(c[10]):>22}{med(b[10]):>22}")

@@ -14,6 +14,7 @@ from luminous_sim.cssg.draft import SceneDraft
 from luminous_sim.cssg.furniture import FloorContext, register
 from luminous_sim.cssg.objects import place_object
 from luminous_sim.cssg.pose import footprint
+from luminous_sim.cssg.reach import reach_of
 from luminous_sim.cssg.requests import Request, requests_from_cdf
 from luminous_sim.cssg.structure import place_fixtures
 from luminous_sim.cssg.validate import LayoutReport, check_layout
@@ -52,7 +53,7 @@ def place_uniform(ctx: FloorContext, req: Request) -> bool:
         obj = draft.add(entry, x, y, -entry.bbox_min[2], yaw, "furniture", fixed=True, name=req.name,
                         color=req.colour())
         register(ctx, req.name, obj, entry)
-        ctx.commit(obj.id, fp)
+        ctx.commit(obj.id, fp, reach_of(entry, obj.position[2]))
         return True
     return False
 

@@ -10,7 +10,14 @@ import numpy as np
 from luminous_sim.cssg.draft import SceneDraft
 from luminous_sim.cssg.grid import HEADINGS, RES, FloorGrid
 from luminous_sim.cssg.pose import footprint, front_zone
-from luminous_sim.cssg.reach import AGENT_CLEARANCE, FloorPiece, clear_of, largest_part
+from luminous_sim.cssg.reach import (
+    AGENT_CLEARANCE,
+    REACH,
+    FloorPiece,
+    clear_of,
+    largest_part,
+    reach_of,
+)
 from luminous_sim.cssg.requests import Request
 from luminous_sim.cssg.scores import (
     TEMPERATURE,
@@ -63,7 +70,7 @@ class FloorContext:
                 grid.block(p.footprint)
                 cells = grid._cells(p.footprint)
                 solid |= cells
-                pieces.append(FloorPiece.of(p.obj.id, cells))
+                pieces.append(FloorPiece.of(p.obj.id, cells, reach_of(p.entry, p.obj.position[2])))
                 if p.obj.layer == "fixture":  # keep the work zone in front of counters and appliances
                     grid.block(front_zone(p.entry, p.obj.position[0], p.obj.position[1], p.obj.yaw, WORK_ZONE))
         c = poly.centroid
@@ -75,15 +82,16 @@ class FloorContext:
         return largest_part(clear & self.grid.memo("wall_clear",
                                                    lambda: self.grid.wall_dist >= AGENT_CLEARANCE - RES / 2))
 
-    def keeps_everything_reachable(self, fp) -> bool:
-        """Whether adding footprint `fp` leaves every floor piece (and itself) within reach of walkable floor."""
-        new = FloorPiece.of("new", self.grid._cells(fp))
+    def keeps_everything_reachable(self, fp, reach: float = REACH) -> bool:
+        """Whether adding footprint `fp` leaves every floor piece (and itself, within `reach`) within reach of
+        walkable floor."""
+        new = FloorPiece.of("new", self.grid._cells(fp), reach)
         walk = self.walkable(self.clear & new.clear_of(self.grid.shape))
         return bool(walk.any()) and all(p.reachable(walk) for p in self.pieces + [new])
 
-    def commit(self, object_id: str, fp) -> None:
+    def commit(self, object_id: str, fp, reach: float = REACH) -> None:
         cells = self.grid._cells(fp)
-        piece = FloorPiece.of(object_id, cells)
+        piece = FloorPiece.of(object_id, cells, reach)
         self.solid |= cells
         self.clear &= piece.clear_of(self.grid.shape)
         self.pieces.append(piece)
@@ -212,13 +220,13 @@ def place_piece(ctx: FloorContext, req: Request, tries: int = 6) -> Placed2D | N
         # early draws must also honour the implicit rules; later ones only the CDF's hard relations
         if attempt < tries - 1 and not hard_relations_met(ctx, req, entry, x, y, yaw, implicit=attempt < tries // 2):
             continue
-        if not ctx.keeps_everything_reachable(footprint(entry, x, y, yaw)):
+        if not ctx.keeps_everything_reachable(footprint(entry, x, y, yaw), reach_of(entry, -entry.bbox_min[2])):
             continue
         if not req.explicit and not hard_relations_met(ctx, req, entry, x, y, yaw, implicit=True):
             return None  # a default piece that cannot follow its rules here is better left out
         obj = draft.add(entry, x, y, -entry.bbox_min[2], yaw, "furniture", fixed=True, name=req.name,
                         states=req.states, color=req.colour())
-        ctx.commit(obj.id, draft.placed[-1].footprint)
+        ctx.commit(obj.id, draft.placed[-1].footprint, reach_of(entry, obj.position[2]))
         placed = Placed2D(req.type, x, y, yaw, entry)
         ctx.placed[req.name] = placed
         ctx.placed[obj.id] = placed

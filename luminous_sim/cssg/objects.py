@@ -1,8 +1,11 @@
 """The object layer: small things on support surfaces or inside receptacles, following the CDF's
-on/in relations, ALFRED's compatibility table, and stable, collision-free spots within each region."""
+on/in relations, ALFRED's compatibility table, and stable, collision-free spots within each region
+that the agent can see from where it stands (not in drawers it cannot open, not at the back of a low
+shelf)."""
 
 from __future__ import annotations
 
+import numpy as np
 from shapely.geometry import Polygon
 
 from luminous_sim.cssg.draft import Placed, SceneDraft
@@ -15,8 +18,11 @@ from luminous_sim.cssg.regions import (
     sample_in_region,
 )
 from luminous_sim.cssg.requests import Request
+from luminous_sim.cssg.sight import Shade, in_sight, shades
 from luminous_sim.cssg.tables import supports_for
+from luminous_sim.cssg.validate import floor_obstacles, reachable_grid
 from luminous_sim.cssg.walls import clashes
+from luminous_sim.vocab import abilities
 
 
 def _hosts(draft: SceneDraft, req: Request, by_name: dict[str, str]) -> tuple[list[Placed], str | None]:
@@ -42,12 +48,38 @@ def _facing_point(draft: SceneDraft, req: Request, by_name: dict[str, str]) -> t
 
 
 def _spots(draft: SceneDraft, host: Placed) -> list[RegionSpot]:
-    """`region_spots` of a placed receptacle, computed once per draft and pose."""
+    """`region_spots` of a placed receptacle, computed once per draft and pose, less the regions behind
+    doors the agent cannot open (a dresser's drawers: ALFRED opens Drawers, not Dressers)."""
     o = host.obj
     key = ("spots", o.id, o.position, o.yaw, host.entry.id, host.entry.scale)
     if key not in draft.memo:
-        draft.memo[key] = region_spots(o, host.entry)
+        openable = abilities(o.type).openable
+        draft.memo[key] = [s for s in region_spots(o, host.entry) if openable or not s.gated]
     return draft.memo[key]
+
+
+def _shade(draft: SceneDraft, host: Placed, region: str) -> Shade:
+    key = ("shades", host.entry.id, host.entry.scale)
+    if key not in draft.memo:
+        draft.memo[key] = shades(host.entry)
+    return draft.memo[key].get(region, Shade())
+
+
+def _eyes(draft: SceneDraft) -> np.ndarray:
+    """Where the agent can stand, as the finished scene will be checked (objects do not change it)."""
+    key = ("eyes", len(floor_obstacles(draft)))
+    if key not in draft.memo:
+        draft.memo[key] = reachable_grid(draft)
+    return draft.memo[key]
+
+
+def _seen(draft: SceneDraft, host: Placed, spot: RegionSpot, height: float):
+    """A test of a footprint in `spot`: whether the agent could see an object of `height` standing there."""
+    shade = _shade(draft, host, spot.name)
+    eyes = _eyes(draft)
+    heights = (spot.floor_z + 0.5 * height, spot.floor_z + 0.8 * height)
+    return lambda fp: in_sight(shade, host.obj.position[:2], host.obj.yaw, (fp.centroid.x, fp.centroid.y),
+                               heights, eyes)
 
 
 def place_object(draft: SceneDraft, req: Request, by_name: dict[str, str],
@@ -79,7 +111,9 @@ def place_object(draft: SceneDraft, req: Request, by_name: dict[str, str],
                                            ignore=spot.host.id):
                 got = None  # a towel hanging down into what stands below its holder
         else:
-            got = sample_in_region(entry, spot, draft.rng, occupied[key], facing=facing)
+            host = next(p for p in draft.placed if p.obj.id == spot.host.id)
+            got = sample_in_region(entry, spot, draft.rng, occupied[key], facing=facing,
+                                   accept=_seen(draft, host, spot, entry.dims[2]))
         if got is None:
             continue
         x, y, z, yaw, fp = got

@@ -15,11 +15,25 @@ import numpy as np
 from scipy import ndimage
 
 from luminous_sim.cssg.grid import RES
+from luminous_sim.vocab.agent_body import CAMERA_HEIGHT, VISIBILITY_DISTANCE
 
 AGENT_CLEARANCE = 0.25
 """Half-width of the passage the agent needs (a little more than its 0.2 m radius, for the 0.25 m grid)."""
-REACH = 1.45
-"""Every piece must stay within this distance of the walkable floor (ALFRED reaches 1.5 m)."""
+REACH = VISIBILITY_DISTANCE - 0.05
+"""Every piece must stay within this distance of the eye over walkable floor (ALFRED reaches 1.5 m)."""
+
+
+def horizontal_reach(bottom: float, top: float, reach: float = REACH) -> float:
+    """How far (m, on the floor) the agent may stand from a thing spanning heights `bottom`..`top` and still
+    have its eye within `reach` of it, as ALFRED measures reach: a garbage can must be much nearer than a
+    fridge."""
+    gap = max(0.0, CAMERA_HEIGHT - top, bottom - CAMERA_HEIGHT)
+    return math.sqrt(max(reach * reach - gap * gap, 0.0))
+
+
+def reach_of(entry, z: float, reach: float = REACH) -> float:
+    """`horizontal_reach` of an asset standing with its origin at height `z`."""
+    return horizontal_reach(z + entry.bbox_min[2], z + entry.bbox_max[2], reach)
 
 
 @dataclass
@@ -35,15 +49,17 @@ class FloorPiece:
     """Whether its cells fill the box."""
     witness: int = -1
     """A walkable cell within reach found by the last check (a hint: it is checked again before use)."""
+    reach: float = REACH
+    """Metres on the floor within which a walkable cell must lie (`horizontal_reach` of its heights)."""
 
     @classmethod
-    def of(cls, piece_id: str, mask: np.ndarray) -> FloorPiece:
+    def of(cls, piece_id: str, mask: np.ndarray, reach: float = REACH) -> FloorPiece:
         rows, cols = np.nonzero(mask)
         if len(rows) == 0:
-            return cls(piece_id, np.zeros(0, dtype=np.intp), (0, -1, 0, -1), True)
+            return cls(piece_id, np.zeros(0, dtype=np.intp), (0, -1, 0, -1), True, reach=reach)
         box = (int(rows.min()), int(rows.max()), int(cols.min()), int(cols.max()))
         full = len(rows) == (box[1] - box[0] + 1) * (box[3] - box[2] + 1)
-        return cls(piece_id, np.flatnonzero(mask), box, full)
+        return cls(piece_id, np.flatnonzero(mask), box, full, reach=reach)
 
     def distances(self, shape: tuple[int, int], radius: float) -> tuple[slice, slice, np.ndarray]:
         """The window of cells up to `radius` metres from the piece's box and, in it, each cell's distance
@@ -63,13 +79,13 @@ class FloorPiece:
         return rows, cols, ndimage.distance_transform_edt(~mask[rows, cols]) * RES
 
     def reachable(self, walk: np.ndarray) -> bool:
-        """Whether a cell of `walk` lies within REACH of the piece (a piece without cells is)."""
+        """Whether a cell of `walk` lies within the piece's reach (a piece without cells is)."""
         if len(self.cells) == 0:
             return True
         if self.witness >= 0 and walk.ravel()[self.witness]:
             return True
-        rows, cols, dist = self.distances(walk.shape, REACH)
-        hits = (dist <= REACH) & walk[rows, cols]
+        rows, cols, dist = self.distances(walk.shape, self.reach)
+        hits = (dist <= self.reach) & walk[rows, cols]
         if not hits.any():
             return False
         r, c = np.unravel_index(int(np.argmax(hits)), hits.shape)

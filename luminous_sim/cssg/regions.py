@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
 from itertools import pairwise
 
@@ -58,10 +59,12 @@ def fits(entry: AssetEntry, spot: RegionSpot) -> bool:
 def sample_in_region(
     entry: AssetEntry, spot: RegionSpot, rng: np.random.Generator, occupied: list[Polygon], tries: int = 20,
     yaw_choices: int = 4, facing: tuple[float, float] | None = None,
+    accept: Callable[[Polygon], bool] | None = None,
 ) -> tuple[float, float, float, float, Polygon] | None:
     """A free pose (x, y, z, yaw) for `entry` inside `spot`, avoiding `occupied` footprints (world xy).
 
-    With `facing` (a world point), the object is turned (in quarter turns) to face it.
+    With `facing` (a world point), the object is turned (in quarter turns) to face it; with `accept`, a
+    pose is kept only if its footprint passes (the agent can see it there).
     """
     lo, hi = np.array(entry.bbox_min[:2]), np.array(entry.bbox_max[:2])
     center_local = (lo + hi) / 2
@@ -94,7 +97,10 @@ def sample_in_region(
         ring = turned[k][1] + origin
         if taken.hits(ring):
             continue
-        return float(origin[0]), float(origin[1]), spot.floor_z - entry.bbox_min[2] + 0.002, yaw, Polygon(ring)
+        fp = Polygon(ring)
+        if accept is not None and not accept(fp):
+            continue
+        return float(origin[0]), float(origin[1]), spot.floor_z - entry.bbox_min[2] + 0.002, yaw, fp
     return None
 
 

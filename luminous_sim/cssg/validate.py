@@ -10,12 +10,12 @@ import shapely
 from shapely.strtree import STRtree
 
 from luminous_sim.cssg.draft import SceneDraft
+from luminous_sim.cssg.reach import horizontal_reach
 from luminous_sim.cssg.scores import TOLERANCE
+from luminous_sim.vocab.agent_body import AGENT_RADIUS
+from luminous_sim.vocab.agent_body import VISIBILITY_DISTANCE as REACH
 
-AGENT_RADIUS = 0.2
 STEP = 0.25
-REACH = 1.5
-"""ALFRED's visibility distance: the agent interacts with things within 1.5 m."""
 AGENT_HEIGHT = 1.8
 
 
@@ -156,12 +156,15 @@ def check_layout(draft: SceneDraft, requests, ctx, unplaced: list[str], attempt:
 
 
 def _out_of_reach(placed: list, grid: np.ndarray) -> list[str]:
-    """Ids of the placed things whose footprint is farther than REACH from every reachable grid point."""
+    """Ids of the placed things out of the agent's reach: farther than REACH from the eye over every
+    reachable grid point (on the floor, `horizontal_reach` of the thing's heights)."""
     tree = STRtree(shapely.points(grid))
-    hit, _ = tree.query([p.footprint for p in placed], predicate="dwithin", distance=REACH - 1e-6)
-    near = np.zeros(len(placed), dtype=bool)
-    near[hit] = True
-    return [p.obj.id for p, ok in zip(placed, near) if not ok]
+    out = []
+    for p in placed:
+        lo, hi = _z_range(p)
+        if not len(tree.query(p.footprint, predicate="dwithin", distance=horizontal_reach(lo, hi, REACH) - 1e-6)):
+            out.append(p.obj.id)
+    return out
 
 
 def _lateral(placed, anchor) -> float:

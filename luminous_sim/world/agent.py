@@ -6,12 +6,13 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass, replace
 
+from luminous_sim.vocab.agent_body import CAMERA_HEIGHT, HORIZON_MAX, HORIZON_MIN
+
+__all__ = ["CAMERA_HEIGHT", "HORIZON_MAX", "HORIZON_MIN", "AgentPose"]
+
 GRID = 0.25
 ROTATE_STEP = 90
 HORIZON_STEP = 15
-HORIZON_MIN, HORIZON_MAX = -30, 60
-CAMERA_HEIGHT = 1.576
-"""Eye height above the floor used for ALFRED by HLSM (spec 2.1); AI2-THOR's agent y + 0.675."""
 AGENT_Y = 0.9009995
 """AI2-THOR's agent origin height (init_action.y), reported in metadata for ALFRED compatibility."""
 

@@ -7,11 +7,21 @@ import glob
 import os
 import pkgutil
 
+import numpy as np
 import pybullet as p
 from pybullet_utils.bullet_client import BulletClient
 
 TIME_STEP = 1.0 / 240.0
 GRAVITY = -9.81
+
+
+def body_aabb(client, body: int) -> tuple[np.ndarray, np.ndarray]:
+    """World-axis bounds of a body with all its links (a floor lamp's base is only its foot)."""
+    lo, hi = map(np.array, client.getAABB(body, -1))
+    for j in range(client.getNumJoints(body)):
+        a, b = map(np.array, client.getAABB(body, j))
+        lo, hi = np.minimum(lo, a), np.maximum(hi, b)
+    return lo, hi
 
 
 def gpu_present() -> bool:

@@ -7,13 +7,11 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from luminous_sim.world.agent import CAMERA_HEIGHT
+from luminous_sim.vocab.agent_body import AGENT_RADIUS, CAMERA_HEIGHT
 
 if TYPE_CHECKING:
     from luminous_sim.world.world import World
 
-AGENT_RADIUS = 0.2
-"""The agent's body, a cylinder from the floor to its camera (the same radius as its navigation)."""
 SWING_SAMPLES = 4
 """Positions along a door's travel whose link boxes make up its sweep (closed excluded)."""
 MOVING = ("door", "drawer", "lid")

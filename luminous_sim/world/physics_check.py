@@ -10,10 +10,10 @@ from itertools import combinations
 import numpy as np
 
 from luminous_sim.scene.model import Scene
+from luminous_sim.vocab.agent_body import VISIBILITY_DISTANCE
+from luminous_sim.world.client import body_aabb
 from luminous_sim.world.scene_builder import BuiltScene, build_scene, settle_report
 
-VISIBILITY_DISTANCE = 1.5
-"""ALFRED's reach, for the sight-line check."""
 PENETRATION_TOL = 0.01
 """Interpenetration deeper than 1 cm is a defect."""
 
@@ -35,21 +35,13 @@ class PhysicsReport:
         return {**asdict(self), "ok": self.ok}
 
 
-def _aabb(client, body: int) -> tuple[np.ndarray, np.ndarray]:
-    lo, hi = map(np.array, client.getAABB(body, -1))
-    for j in range(client.getNumJoints(body)):
-        a, b = map(np.array, client.getAABB(body, j))
-        lo, hi = np.minimum(lo, a), np.maximum(hi, b)
-    return lo, hi
-
-
 def interpenetrations(built: BuiltScene, tol: float = PENETRATION_TOL) -> list[dict]:
     """Pairs of bodies (objects and walls) that overlap by more than `tol`."""
     client = built.client
     named = {loaded.body: oid for oid, loaded in built.objects.items()}
     named.update({b: f"wall#{i}" for i, b in enumerate(built.walls)})
     parent = {o.id: o.parent for o in built.scene.objects}
-    boxes = {b: _aabb(client, b) for b in named}
+    boxes = {b: body_aabb(client, b) for b in named}
     out = []
     for a, b in combinations(sorted(named), 2):
         (alo, ahi), (blo, bhi) = boxes[a], boxes[b]

@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from luminous_sim.world.agent import CAMERA_HEIGHT, HORIZON_MAX, HORIZON_MIN, AgentPose
+from luminous_sim.world.client import body_aabb
 from luminous_sim.world.doors import hits_agent, swept_boxes
 
 if TYPE_CHECKING:
@@ -19,7 +20,7 @@ def candidate_poses(world: World, object_id: str, reach: float | None = None) ->
     """Grid poses near the object, facing it (cardinal heading), pitched at it; nearest first."""
     reach = reach or world.config.visibility_distance
     body = world.built.objects[object_id].body
-    lo, hi = map(np.array, world.client.getAABB(body, -1))
+    lo, hi = body_aabb(world.client, body)
     center = (lo + hi) / 2
     out = []
     for x, y in world.nav.points():

@@ -15,6 +15,7 @@ from luminous_sim.states.model import WorldState
 from luminous_sim.states.rules import enclosing_closed
 from luminous_sim.vocab import abilities
 from luminous_sim.world.agent import CAMERA_HEIGHT, HORIZON_MAX
+from luminous_sim.world.client import body_aabb
 
 if TYPE_CHECKING:
     from luminous_sim.world.world import World
@@ -46,11 +47,16 @@ def unseen(client, state: WorldState, bodies: dict[str, int], points: np.ndarray
 
 
 def _targets(lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+    """Points an eye may see the object by: its centre, four near its top, and two near the ends of its
+    long horizontal axis (a towel bar hidden in the middle by the towel on it)."""
     c = (lo + hi) / 2
     top = hi[2] - 0.2 * (hi[2] - lo[2])
     q = (hi - lo) / 4
+    end = np.zeros(3)
+    axis = int(np.argmax((hi - lo)[:2]))
+    end[axis] = 0.375 * (hi - lo)[axis]
     return np.array([c, [c[0], c[1], top], [c[0] - q[0], c[1] - q[1], top], [c[0] + q[0], c[1] - q[1], top],
-                     [c[0], c[1] + q[1], top]])
+                     [c[0], c[1] + q[1], top], c - end, c + end])
 
 
 def seeable(world: World, object_ids: list[str], reach: float | None = None) -> dict[str, bool]:
@@ -65,7 +71,7 @@ def seeable_bodies(client, bodies: dict[str, int], points: np.ndarray, reach: fl
     out = {oid: False for oid in bodies}
     froms, tos, owners = [], [], []
     for oid, body in bodies.items():
-        lo, hi = map(np.array, client.getAABB(body, -1))
+        lo, hi = body_aabb(client, body)
         eyes = np.column_stack([points, np.full(len(points), CAMERA_HEIGHT)])
         near = np.linalg.norm(np.clip(eyes, lo, hi) - eyes, axis=1) <= reach  # as World.object_distance
         for t in _targets(lo, hi):

@@ -15,6 +15,7 @@ from luminous_sim.assets.catalog import Catalog, default_catalog
 from luminous_sim.scene.model import Scene
 from luminous_sim.world.agent import AgentPose
 from luminous_sim.world.camera import Frame, render
+from luminous_sim.world.client import body_aabb
 from luminous_sim.world.navigation import NavGrid
 from luminous_sim.world.scene_builder import BuiltScene, build_scene
 
@@ -196,10 +197,7 @@ class World:
     def object_distance(self, object_id: str) -> float:
         """Distance from the camera to the object's nearest point (AABB), as AI2-THOR measures it."""
         body = self.built.objects[object_id].body
-        lo, hi = map(np.array, self.client.getAABB(body, -1))
-        for j in range(self.client.getNumJoints(body)):
-            a, b = map(np.array, self.client.getAABB(body, j))
-            lo, hi = np.minimum(lo, a), np.maximum(hi, b)
+        lo, hi = body_aabb(self.client, body)
         eye = np.array(self.agent.eye())
         nearest = np.clip(eye, lo, hi)
         return float(np.linalg.norm(nearest - eye))

@@ -16,9 +16,18 @@ from luminous_sim.cssg.furniture import FloorContext
 from luminous_sim.cssg.generate import generate
 from luminous_sim.cssg.grid import RES
 from luminous_sim.cssg.pose import footprint
-from luminous_sim.cssg.reach import AGENT_CLEARANCE, REACH, FloorPiece, clear_of, largest_part
+from luminous_sim.cssg.reach import (
+    AGENT_CLEARANCE,
+    REACH,
+    FloorPiece,
+    clear_of,
+    horizontal_reach,
+    largest_part,
+    reach_of,
+)
 from luminous_sim.cssg.structure import place_fixtures
 from luminous_sim.rooms.generate import generate_shell
+from luminous_sim.vocab.agent_body import CAMERA_HEIGHT
 
 
 def _edt_to(mask: np.ndarray) -> np.ndarray:
@@ -68,8 +77,9 @@ def test_reachable_finds_and_remembers_a_witness():
         assert walk.ravel()[piece.witness]
 
 
-def _reference_reachable(ctx: FloorContext, fp) -> bool:
-    """The check as it was first written: two full distance transforms per candidate."""
+def _reference_reachable(ctx: FloorContext, fp, reach: float) -> bool:
+    """The check as it was first written: two full distance transforms per candidate; each piece within
+    its own reach."""
     cells = ctx.grid._cells(fp)
     solid = ctx.solid | cells
     clear = _edt_to(solid) >= AGENT_CLEARANCE
@@ -77,7 +87,8 @@ def _reference_reachable(ctx: FloorContext, fp) -> bool:
     if not walk.any():
         return False
     dist = _edt_to(walk)
-    return all(dist[c].min() <= REACH for c in _masks(ctx) + [cells] if c.any())
+    reaches = [p.reach for p in ctx.pieces] + [reach]
+    return all(dist[c].min() <= r for c, r in zip(_masks(ctx) + [cells], reaches, strict=True) if c.any())
 
 
 def _masks(ctx: FloorContext) -> list[np.ndarray]:
@@ -103,10 +114,11 @@ def test_incremental_reachability_matches_a_fresh_check(room_type):
         for i in range(40):
             entry = entries[int(rng.integers(len(entries)))]
             fp = footprint(entry, rng.uniform(x0, x1), rng.uniform(y0, y1), float(rng.integers(4)) * np.pi / 2)
-            ok = ctx.keeps_everything_reachable(fp)
-            assert ok == _reference_reachable(ctx, fp), (room_type, seed, i)
+            reach = reach_of(entry, -entry.bbox_min[2])
+            ok = ctx.keeps_everything_reachable(fp, reach)
+            assert ok == _reference_reachable(ctx, fp, reach), (room_type, seed, i)
             if ok and i % 3 == 0:
-                ctx.commit(f"piece{i}", fp)
+                ctx.commit(f"piece{i}", fp, reach)
         assert np.array_equal(ctx.clear, clear_of(ctx.solid))
 
 
@@ -114,3 +126,12 @@ def test_generated_layouts_keep_every_piece_reachable():
     doc = cdf.load(Path(__file__).resolve().parents[2] / "cdf" / "examples" / "bedroom_reading_desk.yaml")
     g = generate(doc, seed=3)
     assert not g.report.unreachable and g.report.reachable_points > 0
+
+
+def test_low_things_must_be_nearer_than_tall_ones():
+    """ALFRED measures reach from the eye: a garbage can's top is far below it, a fridge's is not."""
+    assert horizontal_reach(0.0, 2.0) == pytest.approx(REACH)
+    assert horizontal_reach(1.8, 2.0) == pytest.approx((REACH**2 - (1.8 - CAMERA_HEIGHT) ** 2) ** 0.5)
+    can = horizontal_reach(0.0, 0.3)
+    assert can == pytest.approx((REACH**2 - (CAMERA_HEIGHT - 0.3) ** 2) ** 0.5) and can < 0.8
+    assert horizontal_reach(0.0, 0.0, reach=1.0) == 0.0
