@@ -5,10 +5,13 @@ shelf)."""
 
 from __future__ import annotations
 
+from functools import partial
+
 import numpy as np
 from shapely.geometry import Polygon
 
 from luminous_sim.cssg.draft import Placed, SceneDraft
+from luminous_sim.cssg.pose import rotate
 from luminous_sim.cssg.regions import (
     HANGERS,
     RegionSpot,
@@ -18,9 +21,9 @@ from luminous_sim.cssg.regions import (
     sample_in_region,
 )
 from luminous_sim.cssg.requests import Request
-from luminous_sim.cssg.sight import Shade, in_sight, shades
+from luminous_sim.cssg.sight import Shade, View, shades
 from luminous_sim.cssg.tables import supports_for
-from luminous_sim.cssg.validate import floor_obstacles, reachable_grid
+from luminous_sim.cssg.validate import is_obstacle, reachable_grid
 from luminous_sim.cssg.walls import clashes
 from luminous_sim.vocab import abilities
 
@@ -65,21 +68,44 @@ def _shade(draft: SceneDraft, host: Placed, region: str) -> Shade:
     return draft.memo[key].get(region, Shade())
 
 
-def _eyes(draft: SceneDraft) -> np.ndarray:
-    """Where the agent can stand, as the finished scene will be checked (objects do not change it)."""
-    key = ("eyes", len(floor_obstacles(draft)))
+def _eyes(draft: SceneDraft) -> tuple[int, np.ndarray]:
+    """Where the agent can stand, as the finished scene will be checked, and a version number that changes
+    when it does (objects on furniture do not change it; a plant on the floor, or going back, may)."""
+    counted, version, eyes = draft.memo.get("eyes", (0, -1, None))
+    if (eyes is None or counted > len(draft.placed)
+            or any(is_obstacle(p) for p in draft.placed[counted:])):
+        version, eyes = version + 1, reachable_grid(draft)
+    draft.memo["eyes"] = (len(draft.placed), version, eyes)
+    return version, eyes
+
+
+def _view(draft: SceneDraft, spot: RegionSpot) -> View:
+    version, eyes = _eyes(draft)
+    key = ("view", spot.host.id, spot.name, version)
     if key not in draft.memo:
-        draft.memo[key] = reachable_grid(draft)
+        host = next(p for p in draft.placed if p.obj.id == spot.host.id)
+        draft.memo[key] = View(_shade(draft, host, spot.name), host.obj.position[:2], host.obj.yaw, eyes,
+                               around=(spot.center, 0.5 * float(np.hypot(*spot.size))))
     return draft.memo[key]
 
 
-def _seen(draft: SceneDraft, host: Placed, spot: RegionSpot, height: float):
-    """A test of a footprint in `spot`: whether the agent could see an object of `height` standing there."""
-    shade = _shade(draft, host, spot.name)
-    eyes = _eyes(draft)
-    heights = (spot.floor_z + 0.5 * height, spot.floor_z + 0.8 * height)
-    return lambda fp: in_sight(shade, host.obj.position[:2], host.obj.yaw, (fp.centroid.x, fp.centroid.y),
-                               heights, eyes)
+def _heights(spot: RegionSpot, height: float) -> tuple[float, float]:
+    """Where sight lines aim at an object of `height` in `spot` (as world/sightlines.py aims)."""
+    return spot.floor_z + 0.5 * height, spot.floor_z + 0.8 * height
+
+
+def _sees(view: View, heights: tuple[float, float], xy: np.ndarray) -> bool:
+    return view.sees((float(xy[0]), float(xy[1])), heights)
+
+
+def _seen_somewhere(draft: SceneDraft, spot: RegionSpot, height: float) -> bool:
+    """Whether some point of a 3 x 3 lattice over the spot is seen (spots no one sees are not drawn)."""
+    key = ("seen", spot.host.id, spot.name, round(height, 1), _eyes(draft)[0])
+    if key not in draft.memo:
+        local = [(fx * spot.size[0] / 3, fy * spot.size[1] / 3) for fx in (-1, 0, 1) for fy in (-1, 0, 1)]
+        points = rotate(np.array(local), spot.yaw) + spot.center
+        draft.memo[key] = bool(_view(draft, spot).sees_each(points, _heights(spot, round(height, 1))).any())
+    return draft.memo[key]
 
 
 def place_object(draft: SceneDraft, req: Request, by_name: dict[str, str],
@@ -94,7 +120,8 @@ def place_object(draft: SceneDraft, req: Request, by_name: dict[str, str],
         entry = variants[int(draft.rng.integers(len(variants)))]
         spots: list[RegionSpot] = [s for h in hosts for s in _spots(draft, h)
                                    if (kind is None or s.kind == kind)
-                                   and (fits(entry, s) or h.obj.type in HANGERS)]
+                                   and (h.obj.type in HANGERS or (fits(entry, s)
+                                                                  and _seen_somewhere(draft, s, entry.dims[2])))]
         if not spots:
             continue
         spot = spots[int(draft.rng.integers(len(spots)))]
@@ -111,9 +138,8 @@ def place_object(draft: SceneDraft, req: Request, by_name: dict[str, str],
                                            ignore=spot.host.id):
                 got = None  # a towel hanging down into what stands below its holder
         else:
-            host = next(p for p in draft.placed if p.obj.id == spot.host.id)
             got = sample_in_region(entry, spot, draft.rng, occupied[key], facing=facing,
-                                   accept=_seen(draft, host, spot, entry.dims[2]))
+                                   accept=partial(_sees, _view(draft, spot), _heights(spot, entry.dims[2])))
         if got is None:
             continue
         x, y, z, yaw, fp = got

@@ -59,12 +59,12 @@ def fits(entry: AssetEntry, spot: RegionSpot) -> bool:
 def sample_in_region(
     entry: AssetEntry, spot: RegionSpot, rng: np.random.Generator, occupied: list[Polygon], tries: int = 20,
     yaw_choices: int = 4, facing: tuple[float, float] | None = None,
-    accept: Callable[[Polygon], bool] | None = None,
+    accept: Callable[[np.ndarray], bool] | None = None,
 ) -> tuple[float, float, float, float, Polygon] | None:
     """A free pose (x, y, z, yaw) for `entry` inside `spot`, avoiding `occupied` footprints (world xy).
 
     With `facing` (a world point), the object is turned (in quarter turns) to face it; with `accept`, a
-    pose is kept only if its footprint passes (the agent can see it there).
+    pose is kept only if the centre of its footprint (world xy) passes (the agent can see it there).
     """
     lo, hi = np.array(entry.bbox_min[:2]), np.array(entry.bbox_max[:2])
     center_local = (lo + hi) / 2
@@ -95,12 +95,9 @@ def sample_in_region(
             turned[k] = rotate(center_local[None], yaw)[0], rotate(corners, yaw)
         origin = target - turned[k][0]
         ring = turned[k][1] + origin
-        if taken.hits(ring):
+        if taken.hits(ring) or (accept is not None and not accept(target)):
             continue
-        fp = Polygon(ring)
-        if accept is not None and not accept(fp):
-            continue
-        return float(origin[0]), float(origin[1]), spot.floor_z - entry.bbox_min[2] + 0.002, yaw, fp
+        return float(origin[0]), float(origin[1]), spot.floor_z - entry.bbox_min[2] + 0.002, yaw, Polygon(ring)
     return None
 
 

@@ -42,7 +42,7 @@ class Box2:
     def contains(self, x: np.ndarray, y: np.ndarray) -> np.ndarray:
         return (np.abs(x - self.cx) <= self.hx) & (np.abs(y - self.cy) <= self.hy)
 
-    def exit(self, tx: float, ty: float, ux: np.ndarray, uy: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    def exit(self, tx, ty, ux: np.ndarray, uy: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
         """From (tx, ty) along unit directions (ux, uy): distance to the boundary and whether the line
         leaves through the front edge (+y)."""
         with np.errstate(divide="ignore", invalid="ignore"):
@@ -94,28 +94,51 @@ def shades(entry: AssetEntry) -> dict[str, Shade]:
     return out
 
 
+class View:
+    """The eyes that might see into one region of a placed host, kept in the host's frame, to test many
+    spots in that region."""
+
+    def __init__(self, shade: Shade, host_xy: tuple[float, float], host_yaw: float, eyes: np.ndarray,
+                 around: tuple[tuple[float, float], float] | None = None):
+        """`around` (a world centre and a radius) bounds the spots to be tested: eyes out of reach of every
+        point within it are dropped."""
+        self.shade, self.origin, self.yaw = shade, np.asarray(host_xy, dtype=float), host_yaw
+        eyes = np.asarray(eyes, dtype=float).reshape(-1, 2)
+        if around is not None and len(eyes):
+            (cx, cy), radius = around
+            eyes = eyes[np.hypot(eyes[:, 0] - cx, eyes[:, 1] - cy) <= VISIBILITY_DISTANCE + radius]
+        self.eyes = rotate(eyes - self.origin, -host_yaw) if len(eyes) else np.zeros((0, 2))
+
+    def sees(self, spot: tuple[float, float], heights: tuple[float, ...]) -> bool:
+        """Whether a point above world `spot` at one of `heights` is seen from one of the eyes, within reach."""
+        return bool(self.sees_each(np.asarray(spot, dtype=float)[None], heights)[0])
+
+    def sees_each(self, spots: np.ndarray, heights: tuple[float, ...]) -> np.ndarray:
+        """`sees` for each of (K, 2) world points at once."""
+        t = rotate(spots - self.origin, -self.yaw)  # (K, 2)
+        delta = self.eyes[None] - t[:, None]  # (K, E, 2)
+        d = np.maximum(np.hypot(delta[..., 0], delta[..., 1]), 1e-9)  # (K, E)
+        z = np.asarray(heights, dtype=float)[:, None, None]  # (H, 1, 1)
+        ok = np.hypot(d[None], CAMERA_HEIGHT - z) <= VISIBILITY_DISTANCE - REACH_MARGIN  # (H, K, E)
+        if not ok.any():
+            return np.zeros(len(spots), dtype=bool)
+        ux, uy = delta[..., 0] / d, delta[..., 1] / d
+        rise = (CAMERA_HEIGHT - z) / d[None]  # height gained per metre towards each eye
+        tx, ty = t[:, 0:1], t[:, 1:2]
+        if self.shade.roof is not None:
+            box, under = self.shade.roof
+            s, front = box.exit(tx, ty, ux, uy)
+            covered = box.contains(tx, ty)  # (K, 1): a spot out from under the roof is not shaded by it
+            ok &= ~covered[None] | (front[None] & (z + rise * s[None] <= under))
+        if self.shade.rim is not None:
+            box, top = self.shade.rim
+            s, _ = box.exit(tx, ty, ux, uy)
+            ok &= z + rise * s[None] >= top
+        return ok.any(axis=(0, 2))
+
+
 def in_sight(shade: Shade, host_xy: tuple[float, float], host_yaw: float, spot: tuple[float, float],
              heights: tuple[float, ...], eyes: np.ndarray) -> bool:
     """Whether a point above world `spot` at one of `heights` is seen from an eye over one of `eyes`
     ((N, 2) world points on the reachable grid) within reach."""
-    if len(eyes) == 0:
-        return False
-    origin = np.array(host_xy)
-    t = rotate((np.array(spot) - origin)[None], -host_yaw)[0]
-    g = rotate(eyes - origin, -host_yaw)
-    d = np.hypot(g[:, 0] - t[0], g[:, 1] - t[1])
-    ux, uy = (g[:, 0] - t[0]) / np.maximum(d, 1e-9), (g[:, 1] - t[1]) / np.maximum(d, 1e-9)
-    for z in heights:
-        ok = np.hypot(d, CAMERA_HEIGHT - z) <= VISIBILITY_DISTANCE - REACH_MARGIN
-        if shade.roof is not None:
-            box, under = shade.roof
-            if box.contains(np.array(t[0]), np.array(t[1])):
-                s, front = box.exit(float(t[0]), float(t[1]), ux, uy)
-                ok &= front & (z + (CAMERA_HEIGHT - z) * s / np.maximum(d, 1e-9) <= under)
-        if shade.rim is not None:
-            box, top = shade.rim
-            s, _ = box.exit(float(t[0]), float(t[1]), ux, uy)
-            ok &= z + (CAMERA_HEIGHT - z) * s / np.maximum(d, 1e-9) >= top
-        if ok.any():
-            return True
-    return False
+    return View(shade, host_xy, host_yaw, eyes).sees(spot, heights)

@@ -62,10 +62,11 @@ class LayoutReport:
 
 def floor_obstacles(draft: SceneDraft) -> list[tuple[str, object]]:
     """Footprints of everything an agent bumps into: floor-standing things lower than its height."""
-    return [(p.obj.id, p.footprint) for p in draft.placed if _obstacle(p)]
+    return [(p.obj.id, p.footprint) for p in draft.placed if is_obstacle(p)]
 
 
-def _obstacle(p) -> bool:
+def is_obstacle(p) -> bool:
+    """Whether a placed thing stands in the agent's way: on the floor and lower than its height."""
     if p.obj.parent is not None or p.obj.layer == "object":
         return False
     return p.obj.position[2] + p.entry.bbox_min[2] < AGENT_HEIGHT
