@@ -27,6 +27,9 @@ from luminous_sim.cssg.validate import is_obstacle, reachable_grid
 from luminous_sim.cssg.walls import clashes
 from luminous_sim.vocab import abilities
 
+MAX_FILL = 0.85
+"""Share of a region that footprints may cover before the region counts as full."""
+
 
 def _hosts(draft: SceneDraft, req: Request, by_name: dict[str, str]) -> tuple[list[Placed], str | None]:
     """Candidate receptacles and the region kind wanted ("surface" for on, "volume" for in)."""
@@ -139,7 +142,8 @@ def place_object(draft: SceneDraft, req: Request, by_name: dict[str, str],
                 got = None  # a towel hanging down into what stands below its holder
         else:
             got = sample_in_region(entry, spot, draft.rng, occupied[key], facing=facing,
-                                   accept=partial(_sees, _view(draft, spot), _heights(spot, entry.dims[2])))
+                                   accept=partial(_sees, _view(draft, spot), _heights(spot, entry.dims[2])),
+                                   max_fill=MAX_FILL)
         if got is None:
             continue
         x, y, z, yaw, fp = got

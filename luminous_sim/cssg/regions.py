@@ -59,14 +59,19 @@ def fits(entry: AssetEntry, spot: RegionSpot) -> bool:
 def sample_in_region(
     entry: AssetEntry, spot: RegionSpot, rng: np.random.Generator, occupied: list[Polygon], tries: int = 20,
     yaw_choices: int = 4, facing: tuple[float, float] | None = None,
-    accept: Callable[[np.ndarray], bool] | None = None,
+    accept: Callable[[np.ndarray], bool] | None = None, max_fill: float = 1.0,
 ) -> tuple[float, float, float, float, Polygon] | None:
     """A free pose (x, y, z, yaw) for `entry` inside `spot`, avoiding `occupied` footprints (world xy).
 
     With `facing` (a world point), the object is turned (in quarter turns) to face it; with `accept`, a
-    pose is kept only if the centre of its footprint (world xy) passes (the agent can see it there).
+    pose is kept only if the centre of its footprint (world xy) passes (the agent can see it there). A
+    region whose footprints would cover more than `max_fill` of it is given up at once: random draws
+    seldom pack tighter, and twenty failed draws cost more than the answer is worth.
     """
     lo, hi = np.array(entry.bbox_min[:2]), np.array(entry.bbox_max[:2])
+    if max_fill < 1.0 and (sum(o.area for o in occupied) + float(np.prod(hi - lo))
+                           > max_fill * spot.size[0] * spot.size[1]):
+        return None
     center_local = (lo + hi) / 2
     half = (hi - lo) / 2
     corners = np.array([[lo[0], lo[1]], [hi[0], lo[1]], [hi[0], hi[1]], [lo[0], hi[1]]])

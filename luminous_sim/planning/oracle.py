@@ -7,6 +7,8 @@ from __future__ import annotations
 import time
 from typing import Any
 
+import numpy as np
+
 from luminous_sim.cdf.predicates import And, Atom, Exists, Expr, Not
 from luminous_sim.errors import PlanningError
 from luminous_sim.planning.alfred_actions import DISCRETE_NAV, interaction_api, nav_api, type_name
@@ -18,6 +20,8 @@ from luminous_sim.world.poses import find_interaction_pose
 from luminous_sim.world.world import World
 
 MAX_REPLANS = 3
+PUT_CHECK_SEED = 7
+"""Seed of the dry-run puts that judge standing poses (the world's own random stream is left alone)."""
 PLAN_TIMEOUT = 8.0
 """Seconds one (re)planning call may take; plans take milliseconds when the goal is reachable."""
 
@@ -114,7 +118,7 @@ class Oracle:
         high_idx = len(traj.high_pddl)
         if hl.action == "GotoLocation":
             target = hl.args.get("objectId") or hl.args.get("target")
-            pose = self._goto(target, high_idx, traj)
+            pose = self._goto(target, high_idx, traj, put=self._put_after(actions, k))
             discrete = [type_name(self._next_object(actions, k) or target)]
             planner = {"action": "GotoLocation", "location": pose.location_string()}
         else:
@@ -144,8 +148,25 @@ class Oracle:
             return gate
         return object_id
 
-    def _goto(self, object_id: str, high_idx: int, traj: Trajectory):
-        pose = find_interaction_pose(self.world, self._pose_target(object_id))
+    @staticmethod
+    def _put_after(actions: list, k: int) -> tuple[str, str] | None:
+        """(object, receptacle) of the PutObject right after GotoLocation `k`, if that is what follows."""
+        if k + 1 < len(actions) and actions[k + 1].action == "PutObject":
+            args = actions[k + 1].args
+            return args["objectId"], args["receptacleObjectId"]
+        return None
+
+    def _goto(self, object_id: str, high_idx: int, traj: Trajectory, put: tuple[str, str] | None = None):
+        """Walk to a pose that sees the object; before a put, preferably one from which the held thing
+        has a free spot in reach (a crowded table may have room only on its far side)."""
+        prefer = None
+        if put is not None:
+            inter = self.world.interactions
+
+            def prefer(pose) -> bool:
+                rng = np.random.default_rng(PUT_CHECK_SEED)
+                return not isinstance(inter.find_spot(*put, rng, assume_open=True, eye=pose.eye()), str)
+        pose = find_interaction_pose(self.world, self._pose_target(object_id), prefer=prefer)
         if pose is None:
             raise ExecutionError(f"no pose from which {object_id} is visible within reach", unreachable=object_id)
         try:

@@ -10,9 +10,12 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from luminous_sim.cssg.regions import region_spots, sample_in_region
+from luminous_sim.cssg.sight import View, shades
 from luminous_sim.states import effects as fx
 from luminous_sim.states import rules
 from luminous_sim.states.model import ObjectState, WorldState
+from luminous_sim.vocab import abilities
+from luminous_sim.vocab.agent_body import CAMERA_HEIGHT
 from luminous_sim.world.asset_loader import base_link_pose, load_asset, set_joint, show_state
 from luminous_sim.world.doors import hits_agent, swept_boxes
 from luminous_sim.world.masks import resolve_point, resolve_target, rle_to_mask
@@ -93,8 +96,6 @@ class Interactions:
         return self.state.objects[oid].object_type if oid in self.state.objects else ""
 
     def _interactable(self, oid: str) -> bool:
-        from luminous_sim.vocab import abilities
-
         ab = abilities(self.type_of(oid))
         return ab.pickupable or ab.receptacle or ab.openable or ab.toggleable or ab.sliceable
 
@@ -264,20 +265,31 @@ class Interactions:
         return base.model_copy(update={"position": tuple(round(v, 4) for v in pos), "yaw": round(yaw, 5)})
 
     def find_spot(self, oid: str, receptacle: str, rng: np.random.Generator | None = None,
-                  assume_open: bool = False) -> tuple[float, float, float, float] | str:
+                  assume_open: bool = False, eye: tuple[float, float, float] | None = None,
+                  ) -> tuple[float, float, float, float] | str:
         """A free, stable pose (x, y, z, yaw) for `oid` in the receptacle's open regions, or why there
         is none. Nothing moves; with `rng` given the world's own random stream is left untouched;
-        `assume_open` counts the regions behind a closed door too."""
-        eye = np.array(self.world.agent.eye()) if rng is None else None  # a real put: in view if it can be
+        `assume_open` counts the regions behind a closed door too.
+
+        A real put lands within reach of the agent's eye (in view where it can): AI2-THOR puts things
+        where the agent looks, so that they can be taken out again. A dry run (`rng` given) asks for a
+        pose within reach and in clear view of some place the agent can stand, or, with `eye`, what a
+        real put from there would find; doors it counts as open are those the agent can open (not a
+        dresser's drawers)."""
+        real = rng is None or eye is not None
         rng = self.rng if rng is None else rng
         loaded_r = self.world.built.objects[receptacle]
         entry = self.world.built.objects[oid].entry
-        joints_open = assume_open or self.state.objects[receptacle].isOpen
+        openable = abilities(self.type_of(receptacle)).openable
+        joints_open = (assume_open and openable) or self.state.objects[receptacle].isOpen
         host = self._host_now(receptacle)
+        reach = self.world.config.visibility_distance
+        eyes = np.array(eye or self.world.agent.eye())[None] if real else self._standing_eyes()
         spots = [s for s in region_spots(host, loaded_r.entry)
-                 if not (s.name and _needs_open(loaded_r.entry, s.name) and not joints_open)]
+                 if not (s.name and _needs_open(loaded_r.entry, s.name) and not joints_open)
+                 and _region_distance(s, eyes) <= reach]
         if not spots:
-            return f"{receptacle} has no place to put things"
+            return f"{receptacle} has no place to put things within reach"
         from luminous_sim.cssg.pose import footprint
 
         boxes, prints = [], []
@@ -296,7 +308,7 @@ class Interactions:
             top = spot.floor_z + spot.clearance
             occupied = [fp for (lo, hi), fp in zip(boxes, prints)  # only what is on this shelf
                         if lo[2] < top and hi[2] > spot.floor_z - 0.01]
-            got = self._sample_in_view(entry, spot, rng, occupied, eye)
+            got = self._sample_in_view(entry, spot, rng, occupied, eyes, real, host)
             if got is None and spot.gated:  # the back half too, rather than refusing
                 from dataclasses import replace as dc_replace
 
@@ -307,21 +319,42 @@ class Interactions:
                 return got[:4]
         return f"{receptacle} is full: no free, stable spot for {oid}"
 
-    def _sample_in_view(self, entry, spot, rng: np.random.Generator, occupied: list, eye: np.ndarray | None):
-        """A free pose in the region; seen from `eye`, one the camera has a clear line to if there is
-        one among a few draws (AI2-THOR puts things where the agent can see them, not behind a basin's
-        near rim where they could not be picked up again)."""
+    def _sample_in_view(self, entry, spot, rng: np.random.Generator, occupied: list, eyes: np.ndarray,
+                        real: bool, host):
+        """A free pose in the region within reach of one of `eyes` ((N, 3)) and, among a few draws, one
+        such an eye has a clear line to: AI2-THOR puts things where the agent can see them, not behind a
+        basin's near rim where they could not be picked up again. A real put (one eye, the agent's) falls
+        back on a pose out of clear view; a dry run does not. Under a shelf or table top, only where
+        scene generation's sight model sees it (its front), since the top hides the rest."""
         first = None
-        for _ in range(VIEW_TRIES if eye is not None else 1):
-            got = sample_in_region(entry, spot, rng, occupied, tries=60)
-            if got is None or eye is None:
-                return got or first
-            first = first or got
+        reach = self.world.config.visibility_distance
+        height = entry.bbox_max[2] - entry.bbox_min[2]
+        mid = spot.floor_z + 0.002 + height / 2
+        shade = shades(self.world.built.objects[spot.host.id].entry).get(spot.name)
+        view = View(shade, host.position[:2], host.yaw, eyes[:, :2]) if shade and shade.roof else None
+
+        def in_reach(xy: np.ndarray) -> bool:
+            if view is not None:
+                return view.sees((float(xy[0]), float(xy[1])), (mid, spot.floor_z + 0.8 * height))
+            return bool(np.any(np.linalg.norm(eyes - np.array([xy[0], xy[1], mid]), axis=1) <= reach))
+
+        for _ in range(VIEW_TRIES):
+            got = sample_in_region(entry, spot, rng, occupied, tries=60, accept=in_reach)
+            if got is None:
+                return first
             x, y, z = got[:3]
             centre = np.array([x, y, z + (entry.bbox_min[2] + entry.bbox_max[2]) / 2])
-            if self.world.client.rayTest(eye.tolist(), centre.tolist())[0][0] == -1:
+            near = eyes[np.linalg.norm(eyes - centre, axis=1) <= reach + 0.01]
+            first = first or (got if real else None)
+            hits = self.world.client.rayTestBatch(near.tolist(), [centre.tolist()] * len(near))
+            if any(h[0] == -1 for h in hits):
                 return got
         return first
+
+    def _standing_eyes(self) -> np.ndarray:
+        """The camera over every place the agent can stand, (N, 3)."""
+        pts = self.world.nav.points()
+        return np.column_stack([pts, np.full(len(pts), CAMERA_HEIGHT)])
 
     def _spot_order(self, spots: list, rng: np.random.Generator) -> list[int]:
         """Regions to try: those the agent could see and reach from here first (in random order), as
@@ -421,6 +454,18 @@ class Interactions:
             yaw = c.getEulerFromQuaternion(orn)[2] + syaw
             new = load_asset(c, slice_entry, wpos, yaw, rng=np.random.default_rng(i))
             self.world.built.objects[f"{oid}|{sliced_type}_{i + 1}"] = new
+
+
+def _region_distance(spot, eyes: np.ndarray) -> float:
+    """Metres from the nearest of `eyes` ((N, 3)) to the nearest point of a region's floor."""
+    if len(eyes) == 0:
+        return math.inf
+    c, s = math.cos(spot.yaw), math.sin(spot.yaw)
+    rel = eyes[:, :2] - np.array(spot.center)
+    local = np.column_stack([rel[:, 0] * c + rel[:, 1] * s, -rel[:, 0] * s + rel[:, 1] * c])  # into the region frame
+    half = np.array(spot.size) / 2
+    flat = np.linalg.norm(local - np.clip(local, -half, half), axis=1)
+    return float(np.min(np.hypot(flat, eyes[:, 2] - spot.floor_z)))
 
 
 def _needs_open(entry, region_name: str) -> bool:

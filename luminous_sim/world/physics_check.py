@@ -4,6 +4,7 @@ collides, are checked too."""
 
 from __future__ import annotations
 
+import time
 from dataclasses import asdict, dataclass, field
 from itertools import combinations
 
@@ -26,13 +27,18 @@ class PhysicsReport:
     unseeable: list[str] = field(default_factory=list)
     """Objects to interact with (or the closed containers holding them) that no reachable pose has a
     sight line to: not a physics defect, but an agent could never interact with them."""
+    seconds: dict[str, float] = field(default_factory=dict)
+    """Wall-clock time of each stage: build (load into PyBullet), settle (collisions and stepping), sight."""
 
     @property
     def ok(self) -> bool:
         return not self.interpenetrations and not self.fell and not self.moved
 
     def to_dict(self) -> dict:
-        return {**asdict(self), "ok": self.ok}
+        """The report as written next to a scene: without timings, so the same scene gives the same file."""
+        out = {**asdict(self), "ok": self.ok}
+        del out["seconds"]
+        return out
 
 
 def interpenetrations(built: BuiltScene, tol: float = PENETRATION_TOL) -> list[dict]:
@@ -72,8 +78,10 @@ def unseeable_objects(built: BuiltScene) -> list[str]:
 
 def check_physics(scene: Scene, settle_steps: int = 240) -> PhysicsReport:
     """Build the scene, look for interpenetrations, settle, and report what moved or fell."""
+    t0 = time.perf_counter()
     built = build_scene(scene, settle_steps=0)
     try:
+        t1 = time.perf_counter()
         client = built.client
         client.performCollisionDetection()
         report = PhysicsReport(interpenetrations=interpenetrations(built))
@@ -81,7 +89,9 @@ def check_physics(scene: Scene, settle_steps: int = 240) -> PhysicsReport:
             client.stepSimulation()
         settled = settle_report(built)
         report.moved, report.fell = settled.moved, settled.fell
+        t2 = time.perf_counter()
         report.unseeable = unseeable_objects(built)
+        report.seconds = {"build": t1 - t0, "settle": t2 - t1, "sight": time.perf_counter() - t2}
         return report
     finally:
         built.client.disconnect()

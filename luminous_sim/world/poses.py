@@ -4,6 +4,7 @@ computes the same kind of target `loc|x|z|rot|horizon` for GotoLocation)."""
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -56,9 +57,11 @@ def _seen_in_preview(world: World, pose: AgentPose, body: int) -> bool:
     return bool(((seg >= 0) & ((seg & ((1 << 24) - 1)) == body)).any())
 
 
-def find_interaction_pose(world: World, object_id: str, limit: int = 80) -> AgentPose | None:
+def find_interaction_pose(world: World, object_id: str, limit: int = 80,
+                          prefer: Callable[[AgentPose], bool] | None = None) -> AgentPose | None:
     """The first candidate pose from which the object is visible (>= 10 px at full size) and within reach,
-    and, for a closed door, drawer or lid, clear of its swing.
+    and, for a closed door, drawer or lid, clear of its swing; with `prefer`, the first such pose that
+    passes it (else the first such pose).
 
     Candidates are screened with a 100x100 segmentation preview; only those that show the object at
     all get the full-size visibility check.
@@ -68,6 +71,7 @@ def find_interaction_pose(world: World, object_id: str, limit: int = 80) -> Agen
     held = world.interactions.held
     state = world.interactions.state.objects.get(object_id)
     sweep = swept_boxes(world, object_id) if state is not None and not state.isOpen else []
+    fallback = None
     try:
         for pose in candidate_poses(world, object_id)[:limit]:
             if sweep and hits_agent(sweep, pose.x, pose.y):
@@ -79,8 +83,10 @@ def find_interaction_pose(world: World, object_id: str, limit: int = 80) -> Agen
                 continue
             world._frame = None
             if object_id in world.visible_objects():
-                return pose
-        return None
+                if prefer is None or prefer(pose):
+                    return pose
+                fallback = fallback or pose
+        return fallback
     finally:
         world.agent = saved
         if held is not None:

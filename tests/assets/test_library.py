@@ -189,3 +189,16 @@ def test_state_visuals_look_different(type_name, state):
         assert changed > 0.002, f"{entry.id} looks the same {state} ({changed:.4f} of pixels changed)"
     finally:
         client.disconnect()
+
+
+def test_fridge_shelves_end_behind_the_closed_doors_shelves():
+    """Things put in a fridge must not stand where its door's shelves swing shut (they were pushed 1-4 cm
+    while settling)."""
+    from luminous_sim.assets.builders.kitchen import DOOR_SHELF_DEPTH
+    from luminous_sim.assets.registry import build_spec
+
+    for v in range(4):
+        spec = build_spec("Fridge", v)
+        door = next(j for j in spec.joints if j.role == "door")
+        for r in spec.regions:
+            assert r.center[1] + r.size[1] / 2 <= door.origin[1] - DOOR_SHELF_DEPTH, (v, r.name)

@@ -53,3 +53,15 @@ def test_fast_intersection_test_draws_what_shapely_draws(yaw, object_type):
                 break
             assert (a[0], a[1], a[3]) == b[:3] and a[4].equals_exact(b[3], 0.0)
             occupied.append(a[4])
+
+
+def test_a_region_covered_beyond_max_fill_is_given_up_at_once():
+    entry = default_catalog().of_type("Mug")[0]
+    spot = RegionSpot(None, "top", "surface", (0.0, 0.0), (0.6, 0.4), 0.9, 0.5, 0.0)  # type: ignore[arg-type]
+    half_full = [box(-0.3, -0.2, 0.0, 0.2)]  # half the region's 0.24 m2
+    rng = np.random.default_rng(0)
+    state = rng.bit_generator.state
+    assert sample_in_region(entry, spot, rng, half_full, max_fill=0.5) is None
+    assert rng.bit_generator.state == state  # nothing drawn
+    assert sample_in_region(entry, spot, rng, half_full, max_fill=0.9) is not None
+    assert sample_in_region(entry, spot, np.random.default_rng(0), half_full) is not None  # no limit by default

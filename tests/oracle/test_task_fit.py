@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pytest
 
@@ -83,3 +85,48 @@ def test_a_put_lands_where_the_agent_can_see_it(world, kitchen_scene):
     assert world.interactions.state.objects[mug].parent == basin
     assert mug in world.visible_objects()
     assert world.step({"action": "PickupObject", "objectId": mug}).success
+
+
+def test_a_put_lands_within_reach_of_the_eye(world, kitchen_scene):
+    """A real put from where the agent stands, and a dry run from a given eye, land within reach of that
+    eye; from an eye far from everything there is no spot at all."""
+    apple, counter = obj(kitchen_scene, "apple"), obj(kitchen_scene, "counter")
+    reach = world.config.visibility_distance
+    pts = world.nav.points()
+    lo, hi = world.client.getAABB(world.built.objects[counter].body, -1)
+    centre = (np.array(lo[:2]) + np.array(hi[:2])) / 2
+    near = pts[np.argmin(np.linalg.norm(pts - centre, axis=1))]
+    eye = (float(near[0]), float(near[1]), 1.576)
+    for seed in range(5):
+        got = world.interactions.find_spot(apple, counter, np.random.default_rng(seed), eye=eye)
+        assert not isinstance(got, str), got
+        assert np.linalg.norm(np.array(got[:3]) - np.array(eye)) <= reach + 0.1
+    far = (float(centre[0]) + 20.0, float(centre[1]), 1.576)
+    assert isinstance(world.interactions.find_spot(apple, counter, np.random.default_rng(0), eye=far), str)
+
+
+def test_doors_the_agent_cannot_open_are_never_counted_open():
+    """A side table's drawer is a gated region of a type ALFRED cannot open: a dry run that counts doors
+    as open still leaves it out."""
+    from luminous_sim import cdf
+    from luminous_sim.cssg.generate import generate
+    from luminous_sim.cssg.regions import region_spots
+    from luminous_sim.world.world import World
+
+    doc = cdf.load(Path(__file__).resolve().parents[2] / "cdf" / "examples" / "bedroom_reading_desk.yaml")
+    scene = generate(doc, seed=0).scene
+    with World(scene) as w:
+        it = w.interactions
+        tables = [o for o in it.state.of_type("SideTable")
+                  if any(r.get("requires_open") for r in w.built.objects[o].entry.regions)]
+        assert tables, "the example bedroom should hold a side table with a drawer"
+        cd = next(iter(it.state.of_type("CD") or it.state.of_type("CellPhone") or it.state.of_type("Book")))
+        for table in tables:
+            host = it._host_now(table)
+            drawers = [s for s in region_spots(host, w.built.objects[table].entry) if s.gated]
+            for seed in range(10):
+                got = it.find_spot(cd, table, np.random.default_rng(seed), assume_open=True)
+                if isinstance(got, str):
+                    continue
+                assert not any(abs(got[2] - (s.floor_z + 0.002 - w.built.objects[cd].entry.bbox_min[2])) < 1e-6
+                               for s in drawers)

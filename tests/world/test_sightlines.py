@@ -45,6 +45,8 @@ def test_physics_check_reports_unseeable_objects(kitchen_scene):
     assert all(abilities(types[o]).pickupable or abilities(types[o]).receptacle or abilities(types[o]).toggleable
                or abilities(types[o]).openable for o in report.unseeable)
     assert not {obj(kitchen_scene, n) for n in ("apple", "knife", "mug", "plate")} & set(report.unseeable)
+    assert set(report.seconds) == {"build", "settle", "sight"} and all(v >= 0 for v in report.seconds.values())
+    assert "seconds" not in report.to_dict()  # the file next to a scene stays the same from run to run
     apple = obj(kitchen_scene, "apple")
     lo = np.array(kitchen_scene.room.bounds[:2])
     away = [o.model_copy(update={"position": (float(lo[0]) - 3.0, float(lo[1]) - 3.0, 0.5), "parent": None})

@@ -212,6 +212,10 @@ def _cabinet_run(length: float, d: float, layouts: list[str], style: str, body_s
 # Fridge
 
 
+DOOR_SHELF_DEPTH = 0.09
+"""Metres a fridge's door shelves reach behind its closed door."""
+
+
 @register("Fridge", variants=4, category="appliance")
 def fridge(v: int, rng: np.random.Generator) -> AssetSpec:
     """A fridge: an insulated body with glass shelves and a hinged door carrying door shelves.
@@ -237,17 +241,20 @@ def fridge(v: int, rng: np.random.Generator) -> AssetSpec:
     door_shelves = []
     for z in (0.45, 0.85, 1.25):
         x0, x1 = sorted((sign * 0.06, sign * (w - 0.06)))
-        door_shelves.append(Part(g.box_at((x0, -0.09, z), (x1, 0.0, z + 0.012)), "glass"))
-        door_shelves.append(Part(g.box_at((x0, -0.09, z), (x1, -0.08, z + 0.06)), "glass"))
+        door_shelves.append(Part(g.box_at((x0, -DOOR_SHELF_DEPTH, z), (x1, 0.0, z + 0.012)), "glass"))
+        door_shelves.append(Part(g.box_at((x0, -DOOR_SHELF_DEPTH, z), (x1, -DOOR_SHELF_DEPTH + 0.01, z + 0.06)),
+                                 "glass"))
     door, joint = hinged_door("door", "base", -w / 2, w / 2, y_front, 0.02, h - 0.04, hinge, slot,
                               thickness=0.05, extra=door_shelves, mass=8.0)
     regions = []
     levels = [t] + shelf_zs
     tops = shelf_zs + [h - t]
+    back = -0.02 + t / 2 - (inner_d - 0.04) / 2
+    front = y_front - DOOR_SHELF_DEPTH - 0.01  # the closed door's shelves reach this far in
     for i, (z0, z1) in enumerate(zip(levels, tops)):
         z0 = z0 + (0.005 if i else 0.0)  # on top of the 1 cm glass shelf
-        regions.append(Region(f"shelf_{i}", "volume", (0.0, -0.02 + t / 2, (z0 + z1) / 2),
-                              (inner_w - 0.02, inner_d - 0.04, z1 - z0 - 0.01), requires_open=joint.name))
+        regions.append(Region(f"shelf_{i}", "volume", (0.0, (back + front) / 2, (z0 + z1) / 2),
+                              (inner_w - 0.02, front - back, z1 - z0 - 0.01), requires_open=joint.name))
     return AssetSpec(
         "Fridge", v, "appliance", [Link("base", parts, 60.0), door], joints=[joint], regions=regions,
         description="fridge with shelves and a hinged door with door shelves",
