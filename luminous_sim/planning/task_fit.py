@@ -36,12 +36,35 @@ def has_room(world: World, object_type: str, receptacle_type: str, excluded: Ite
                for o in objs for h in hosts if o != h)
 
 
-def physically_feasible(world: World, params: PddlParams, excluded: Iterable[str] = ()) -> bool:
-    """The task's object (or its movable receptacle) has room in the target receptacle, and the
-    object has room in its movable receptacle."""
+def has_room_for_two(world: World, object_type: str, receptacle_type: str, excluded: Iterable[str] = ()) -> bool:
+    """Whether two different objects of `object_type` both have a free, stable spot in one
+    `receptacle_type` (the second beside the first), doors counted as open."""
+    state = world.interactions.state.without(set(excluded))
+    objs = state.of_type(object_type)
+    hosts = state.of_type(receptacle_type)
+    if receptacle_type in HANGERS or not hosts:
+        return True
+    rng = np.random.default_rng(SPOT_SEED)
+    find = world.interactions.find_spot
+    for h in hosts:
+        for i, a in enumerate(objs):
+            first = find(a, h, rng, assume_open=True)
+            if isinstance(first, str):
+                continue
+            if any(not isinstance(find(b, h, rng, assume_open=True, also=((a, first),)), str)
+                   for b in objs[i + 1:] if b != h):
+                return True
+    return False
+
+
+def physically_feasible(world: World, params: PddlParams, excluded: Iterable[str] = (), two: bool = False) -> bool:
+    """The task's object (or its movable receptacle) has room in the target receptacle (`two` of them,
+    for pick_two_obj_and_place), and the object has room in its movable receptacle."""
     obj = params.object_target + ("Sliced" if params.object_sliced else "")
     inner = params.mrecep_target or obj
     if params.parent_target and not has_room(world, inner, params.parent_target, excluded):
+        return False
+    if two and params.parent_target and not has_room_for_two(world, inner, params.parent_target, excluded):
         return False
     return not (params.mrecep_target and not has_room(world, obj, params.mrecep_target, excluded))
 
@@ -66,7 +89,7 @@ def draw_task(scene: Scene, world: World, task_type: str, rng: np.random.Generat
     def fits(p: PddlParams) -> bool:
         key = (p.object_target, p.object_sliced, p.mrecep_target, p.parent_target)
         if key not in verdict:
-            verdict[key] = physically_feasible(world, p, excluded)
+            verdict[key] = physically_feasible(world, p, excluded, two=task_type == "pick_two_obj_and_place")
         return verdict[key]
 
     return sample_task(scene, world.interactions.state.without(excluded), task_type, rng, keep=fits)

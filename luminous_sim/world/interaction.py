@@ -266,6 +266,7 @@ class Interactions:
 
     def find_spot(self, oid: str, receptacle: str, rng: np.random.Generator | None = None,
                   assume_open: bool = False, eye: tuple[float, float, float] | None = None,
+                  also: tuple[tuple[str, tuple[float, float, float, float]], ...] = (),
                   ) -> tuple[float, float, float, float] | str:
         """A free, stable pose (x, y, z, yaw) for `oid` in the receptacle's open regions, or why there
         is none. Nothing moves; with `rng` given the world's own random stream is left untouched;
@@ -275,7 +276,8 @@ class Interactions:
         where the agent looks, so that they can be taken out again. A dry run (`rng` given) asks for a
         pose within reach and in clear view of some place the agent can stand, or, with `eye`, what a
         real put from there would find; doors it counts as open are those the agent can open (not a
-        dresser's drawers)."""
+        dresser's drawers). `also` lists objects a dry run pretends are already put there, at their poses
+        (the first of two things put in one place)."""
         real = rng is None or eye is not None
         rng = self.rng if rng is None else rng
         loaded_r = self.world.built.objects[receptacle]
@@ -301,6 +303,12 @@ class Interactions:
             boxes.append((lo, hi))
             pos, yaw = self.world.built.pose_of(other)
             prints.append(footprint(loaded.entry, pos[0], pos[1], yaw))  # oriented, not the world AABB
+        for other, (x, y, z, yaw) in also:
+            e = self.world.built.objects[other].entry
+            fp = footprint(e, x, y, yaw)
+            x0, y0, x1, y1 = fp.bounds
+            boxes.append(((x0, y0, z + e.bbox_min[2]), (x1, y1, z + e.bbox_max[2])))
+            prints.append(fp)
         for i in self._spot_order(spots, rng):
             spot = spots[i]
             if entry.dims[2] > spot.clearance + 1e-6:
@@ -340,8 +348,8 @@ class Interactions:
 
         for _ in range(VIEW_TRIES):
             got = sample_in_region(entry, spot, rng, occupied, tries=60, accept=in_reach)
-            if got is None:
-                return first
+            if got is None:  # a tight fit (a box beside a remote) may take more draws
+                continue
             x, y, z = got[:3]
             centre = np.array([x, y, z + (entry.bbox_min[2] + entry.bbox_max[2]) / 2])
             near = eyes[np.linalg.norm(eyes - centre, axis=1) <= reach + 0.01]

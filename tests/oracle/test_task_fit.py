@@ -130,3 +130,20 @@ def test_doors_the_agent_cannot_open_are_never_counted_open():
                     continue
                 assert not any(abs(got[2] - (s.floor_z + 0.002 - w.built.objects[cd].entry.bbox_min[2])) < 1e-6
                                for s in drawers)
+
+
+def test_a_dry_run_can_pretend_a_first_object_is_already_put(world, kitchen_scene):
+    from luminous_sim.cssg.pose import footprint
+    from luminous_sim.planning.task_fit import has_room_for_two
+
+    apple, mug, counter = obj(kitchen_scene, "apple"), obj(kitchen_scene, "mug"), obj(kitchen_scene, "counter")
+    it = world.interactions
+    for seed in range(5):
+        first = it.find_spot(apple, counter, np.random.default_rng(seed))
+        second = it.find_spot(mug, counter, np.random.default_rng(seed), also=((apple, first),))
+        assert not isinstance(first, str) and not isinstance(second, str)
+        a = footprint(world.built.objects[apple].entry, first[0], first[1], first[3])
+        m = footprint(world.built.objects[mug].entry, second[0], second[1], second[3])
+        assert not a.intersects(m)
+    # one microwave, one fridge: "two of a kind" needs two objects of that kind to begin with
+    assert len(it.state.of_type("Fridge")) == 1 and not has_room_for_two(world, "Fridge", "CounterTop")
