@@ -13,7 +13,7 @@ import numpy as np
 from luminous_sim.scene.model import Scene
 from luminous_sim.vocab.agent_body import VISIBILITY_DISTANCE
 from luminous_sim.world.client import body_aabb
-from luminous_sim.world.scene_builder import BuiltScene, build_scene, settle_report
+from luminous_sim.world.scene_builder import BuiltScene, build_scene, settle, settle_report
 
 PENETRATION_TOL = 0.01
 """Interpenetration deeper than 1 cm is a defect."""
@@ -85,8 +85,7 @@ def check_physics(scene: Scene, settle_steps: int = 240) -> PhysicsReport:
         client = built.client
         client.performCollisionDetection()
         report = PhysicsReport(interpenetrations=interpenetrations(built))
-        for _ in range(settle_steps):
-            client.stepSimulation()
+        settle(built, settle_steps)
         settled = settle_report(built)
         report.moved, report.fell = settled.moved, settled.fell
         t2 = time.perf_counter()

@@ -97,9 +97,37 @@ def build_scene(scene: Scene, catalog: Catalog | None = None, client: BulletClie
                             rng=np.random.default_rng(obj.color_seed), color=obj.color)
         _apply_states(client, obj, loaded)
         objects[obj.id] = loaded
-    for _ in range(settle_steps):
-        client.stepSimulation()
-    return BuiltScene(client, scene, objects, floor, walls)
+    built = BuiltScene(client, scene, objects, floor, walls)
+    settle(built, settle_steps)
+    return built
+
+
+REST_SPEED, REST_SPIN = 0.005, 0.05
+"""Metres and radians per second under which a body counts as at rest."""
+MIN_SETTLE_STEPS, REST_CHECK = 60, 12
+"""Steps always taken (a quarter second: long enough for a tipping object to gather speed), and how
+often rest is checked after that."""
+
+
+def settle(built: BuiltScene, max_steps: int = 240) -> int:
+    """Step the simulation until every movable object is at rest, or for `max_steps`; the steps taken.
+
+    Things are placed 2 mm above their support and come to rest within a few dozen steps; stopping then,
+    rather than always simulating a full second, makes building a kitchen several times faster. The
+    same scene always takes the same number of steps.
+    """
+    c = built.client
+    moving = [built.objects[o.id].body for o in built.scene.objects if not o.fixed and o.id in built.objects]
+    for step in range(1, max_steps + 1):
+        c.stepSimulation()
+        if step >= MIN_SETTLE_STEPS and step % REST_CHECK == 0 and all(_at_rest(c, b) for b in moving):
+            return step
+    return max_steps
+
+
+def _at_rest(client, body: int) -> bool:
+    lin, ang = client.getBaseVelocity(body)
+    return float(np.linalg.norm(lin)) < REST_SPEED and float(np.linalg.norm(ang)) < REST_SPIN
 
 
 @dataclass(frozen=True)
