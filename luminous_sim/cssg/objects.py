@@ -111,6 +111,16 @@ def _seen_somewhere(draft: SceneDraft, spot: RegionSpot, height: float) -> bool:
     return draft.memo[key]
 
 
+def _eligible(draft: SceneDraft, entry, hosts: list[Placed], kind: str | None) -> list[RegionSpot]:
+    """The regions of `hosts` (of `kind`, if given) that could hold `entry` where the agent sees it."""
+    key = ("eligible", entry.id, entry.scale, kind, tuple(h.obj.id for h in hosts), _eyes(draft)[0])
+    if key not in draft.memo:
+        draft.memo[key] = [s for h in hosts for s in _spots(draft, h)
+                           if (kind is None or s.kind == kind)
+                           and (h.obj.type in HANGERS or (fits(entry, s) and _seen_somewhere(draft, s, entry.dims[2])))]
+    return draft.memo[key]
+
+
 def place_object(draft: SceneDraft, req: Request, by_name: dict[str, str],
                  occupied: dict[tuple[str, str], list[Polygon]]) -> bool:
     """Place one object request; False if no compatible region has room for it."""
@@ -121,10 +131,7 @@ def place_object(draft: SceneDraft, req: Request, by_name: dict[str, str],
         if not variants:
             return False
         entry = variants[int(draft.rng.integers(len(variants)))]
-        spots: list[RegionSpot] = [s for h in hosts for s in _spots(draft, h)
-                                   if (kind is None or s.kind == kind)
-                                   and (h.obj.type in HANGERS or (fits(entry, s)
-                                                                  and _seen_somewhere(draft, s, entry.dims[2])))]
+        spots = _eligible(draft, entry, hosts, kind)
         if not spots:
             continue
         spot = spots[int(draft.rng.integers(len(spots)))]
