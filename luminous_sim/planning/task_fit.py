@@ -38,12 +38,15 @@ def has_room(world: World, object_type: str, receptacle_type: str, excluded: Ite
 
 def has_room_for_two(world: World, object_type: str, receptacle_type: str, excluded: Iterable[str] = ()) -> bool:
     """Whether two different objects of `object_type` both have a free, stable spot in one
-    `receptacle_type` (the second beside the first), doors counted as open."""
+    `receptacle_type` (the second beside the first), doors counted as open. Two slices that do not
+    exist yet fit where their whole does: they are pieces of it."""
     state = world.interactions.state.without(set(excluded))
     objs = state.of_type(object_type)
     hosts = state.of_type(receptacle_type)
     if receptacle_type in HANGERS or not hosts:
         return True
+    if not objs and state.of_type(parent_type(object_type) or ""):
+        return has_room(world, object_type, receptacle_type, excluded)
     rng = np.random.default_rng(SPOT_SEED)
     find = world.interactions.find_spot
     for h in hosts:

@@ -147,3 +147,13 @@ def test_a_dry_run_can_pretend_a_first_object_is_already_put(world, kitchen_scen
         assert not a.intersects(m)
     # one microwave, one fridge: "two of a kind" needs two objects of that kind to begin with
     assert len(it.state.of_type("Fridge")) == 1 and not has_room_for_two(world, "Fridge", "CounterTop")
+
+
+def test_two_slices_to_be_cut_fit_where_their_whole_does(world, kitchen_scene):
+    from luminous_sim.planning.task_fit import has_room, has_room_for_two
+
+    state = world.interactions.state
+    assert len(state.of_type("Apple")) == 1 and not state.of_type("AppleSliced")
+    # one apple, no slices yet: a pick_two of slices is as placeable as the apple itself
+    assert has_room_for_two(world, "AppleSliced", "CounterTop") == has_room(world, "Apple", "CounterTop") is True
+    assert not has_room_for_two(world, "Apple", "CounterTop")  # but two whole apples there are not
