@@ -14,6 +14,9 @@ from luminous_sim.rooms.shell import RoomShell
 from luminous_sim.scene.ids import thor_object_id
 from luminous_sim.scene.model import Layer, Scene, SceneObject
 
+SEGMENTED_FIXTURES = {"CounterTop"}
+"""Fixture types built from several segments that a CDF names as one object."""
+
 
 @dataclass
 class Placed:
@@ -46,6 +49,14 @@ class SceneDraft:
         )
         self.placed.append(Placed(obj, entry, footprint(entry, obj.position[0], obj.position[1], obj.yaw)))
         return obj
+
+    def referents(self, obj_id: str | None) -> list[Placed]:
+        """What a CDF name bound to `obj_id` refers to: that object, or every segment of its fixture
+        run (the kitchen's counter), so "a coffee machine on the counter" may go on any segment."""
+        hit = next((p for p in self.placed if p.obj.id == obj_id), None)
+        if hit is None or hit.obj.type not in SEGMENTED_FIXTURES or hit.obj.layer != "fixture":
+            return [hit] if hit is not None else []
+        return [p for p in self.placed if p.obj.type == hit.obj.type and p.obj.layer == "fixture"]
 
     def floor_obstacles(self) -> Polygon:
         """Union of the footprints of everything standing on the floor."""

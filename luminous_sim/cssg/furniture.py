@@ -3,19 +3,18 @@ heaviest relation, on the free-floor grid, footprint collision-free and clear of
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass
 
 import numpy as np
 
-from luminous_sim.cssg.draft import SceneDraft
-from luminous_sim.cssg.grid import HEADINGS, RES, FloorGrid
+from luminous_sim.cssg.draft import SEGMENTED_FIXTURES, SceneDraft
+from luminous_sim.cssg.grid import HEADINGS, FloorGrid
+from luminous_sim.cssg.lattice import Lattice
 from luminous_sim.cssg.pose import footprint, front_zone
 from luminous_sim.cssg.reach import (
-    AGENT_CLEARANCE,
     REACH,
     FloorPiece,
-    clear_of,
-    largest_part,
     reach_of,
 )
 from luminous_sim.cssg.requests import Request
@@ -27,9 +26,7 @@ from luminous_sim.cssg.scores import (
     directional_wall_distance,
     relation_field,
 )
-
-SEGMENTED_FIXTURES = {"CounterTop"}
-"""Fixture types built from several segments that a CDF names as one object."""
+from luminous_sim.cssg.validate import is_obstacle
 
 WRONG_HEADING_PENALTY = 0.5
 """metres of cost for standing at a heading other than the preferred one."""
@@ -48,14 +45,14 @@ class FloorContext:
     placed: dict[str, Placed2D]
     alternates: dict[str, list[Placed2D]] = None  # type: ignore[assignment]
     """A name bound to one segment of a fixture (a kitchen's counter) relates to any of its segments."""
-    solid: np.ndarray = None  # type: ignore[assignment]
-    """Cells under things the agent cannot walk through (footprints, not clearance zones)."""
     pieces: list[FloorPiece] = None  # type: ignore[assignment]
     """The cells of everything on the floor that the agent must be able to reach."""
     clear: np.ndarray = None  # type: ignore[assignment]
-    """Cells at least AGENT_CLEARANCE from every solid cell (kept up to date with `solid`)."""
+    """Which of the agent's grid points (`lattice`) are clear of every floor obstacle placed so far."""
     fields: dict = None  # type: ignore[assignment]
     """Relation fields computed so far (they depend on the room, the subject and the anchor only)."""
+    lattice: Lattice = None  # type: ignore[assignment]
+    """The agent's 0.25 m grid in this room."""
 
     @classmethod
     def create(cls, draft: SceneDraft) -> FloorContext:
@@ -63,56 +60,51 @@ class FloorContext:
         grid = FloorGrid.from_polygon(poly)
         for zone in draft.shell.door_clearance_zones():
             grid.block(zone)
-        solid = np.zeros(grid.shape, dtype=bool)
         pieces = []
         for p in draft.placed:
             if p.obj.parent is None:
                 grid.block(p.footprint)
-                cells = grid._cells(p.footprint)
-                solid |= cells
-                pieces.append(FloorPiece.of(p.obj.id, cells, reach_of(p.entry, p.obj.position[2])))
+                pieces.append(FloorPiece.of(p.obj.id, grid._cells(p.footprint), reach_of(p.entry, p.obj.position[2])))
                 if p.obj.layer == "fixture":  # keep the work zone in front of counters and appliances
                     grid.block(front_zone(p.entry, p.obj.position[0], p.obj.position[1], p.obj.yaw, WORK_ZONE))
         c = poly.centroid
-        return cls(draft, grid, directional_wall_distance(grid), (c.x, c.y), {}, {}, solid, pieces, clear_of(solid), {})
+        lattice = Lattice.of(draft.shell, grid)
+        clear = lattice.open_among(p.footprint for p in draft.placed if is_obstacle(p))
+        return cls(draft, grid, directional_wall_distance(grid), (c.x, c.y), {}, {}, pieces, clear, {}, lattice)
 
     def walkable(self, clear: np.ndarray) -> np.ndarray:
-        """The largest connected part of the floor where the agent's centre can be, given the cells
-        clear of solid things."""
-        return largest_part(clear & self.grid.memo("wall_clear",
-                                                   lambda: self.grid.wall_dist >= AGENT_CLEARANCE - RES / 2))
+        """Fine-grid cells under the agent's grid points in the largest 4-connected part of those
+        `clear` (an array over `lattice`), where the agent can walk."""
+        return self.lattice.walkable(clear)
 
     def keeps_everything_reachable(self, fp, reach: float = REACH) -> bool:
         """Whether adding footprint `fp` leaves every floor piece (and itself, within `reach`) within reach of
         walkable floor."""
         new = FloorPiece.of("new", self.grid._cells(fp), reach)
-        walk = self.walkable(self.clear & new.clear_of(self.grid.shape))
+        walk = self.walkable(self.clear & ~self.lattice.near(fp))
         return bool(walk.any()) and all(p.reachable(walk) for p in self.pieces + [new])
 
     def commit(self, object_id: str, fp, reach: float = REACH) -> None:
-        cells = self.grid._cells(fp)
-        piece = FloorPiece.of(object_id, cells, reach)
-        self.solid |= cells
-        self.clear &= piece.clear_of(self.grid.shape)
+        piece = FloorPiece.of(object_id, self.grid._cells(fp), reach)
+        self.clear &= ~self.lattice.near(fp)
         self.pieces.append(piece)
         self.grid.block(fp)
 
     def remove(self, gone: set[str], fp) -> None:
         """Take the floor pieces `gone` (standing on footprint `fp`) out again."""
         self.grid.unblock(fp)
-        self.solid &= ~self.grid._cells(fp)
-        self.clear = clear_of(self.solid)
+        self.clear = self.lattice.open_among(p.footprint for p in self.draft.placed if is_obstacle(p))
         self.pieces = [p for p in self.pieces if p.id not in gone]
 
     def snapshot(self) -> tuple:
         """What placing a piece changes, to go back to with `restore`."""
-        return (self.grid.free.copy(), self.solid.copy(), self.clear.copy(), list(self.pieces), dict(self.placed),
+        return (self.grid.free.copy(), self.clear.copy(), list(self.pieces), dict(self.placed),
                 dict(self.alternates))
 
     def restore(self, snap: tuple) -> None:
-        free, solid, clear, pieces, placed, alternates = snap
+        free, clear, pieces, placed, alternates = snap
         self.grid.set_free(free.copy())
-        self.solid, self.clear, self.pieces = solid.copy(), clear.copy(), list(pieces)
+        self.clear, self.pieces = clear.copy(), list(pieces)
         self.placed, self.alternates = dict(placed), dict(alternates)
 
     def anchor(self, name: str | None) -> Placed2D | None:
@@ -206,12 +198,19 @@ def place_piece(ctx: FloorContext, req: Request, tries: int = 6) -> Placed2D | N
     if not variants:
         return None
     fields: dict[tuple, tuple] = {}
-    for attempt in range(tries):
-        entry = variants[int(rng.integers(len(variants)))]
+
+    def field_of(entry) -> tuple:
         key = _entry_key(entry)
         if key not in fields:
             fields[key] = score(ctx, req, entry), np.stack([ctx.grid.feasible(entry, h) for h in HEADINGS])
-        (cost, heading), feas = fields[key]
+        return fields[key]
+
+    for attempt in range(tries):
+        if attempt == tries - 1 and len(variants) > 1:  # the variant that fits best (a smaller table)
+            entry = min(variants, key=lambda e: _cheapest(*field_of(e)))
+        else:
+            entry = variants[int(rng.integers(len(variants)))]
+        (cost, heading), feas = field_of(entry)
         if not feas.any():
             continue
         pick = _draw(cost, heading, feas, rng, cheapest=attempt == tries - 1)
@@ -232,6 +231,19 @@ def place_piece(ctx: FloorContext, req: Request, tries: int = 6) -> Placed2D | N
         ctx.placed[obj.id] = placed
         return placed
     return None
+
+
+def _cheapest(field: tuple[np.ndarray, np.ndarray | None], feas: np.ndarray) -> float:
+    """The least cost (with the heading penalty) over the feasible cells and headings; inf if none."""
+    cost, heading = field
+    cand = np.flatnonzero(feas)
+    if not len(cand):
+        return math.inf
+    cells = cand % cost.size
+    vals = cost.ravel()[cells]
+    if heading is not None:
+        vals = vals + WRONG_HEADING_PENALTY * (heading.ravel()[cells] != cand // cost.size)
+    return float(vals.min())
 
 
 def _draw(cost: np.ndarray, heading: np.ndarray | None, feas: np.ndarray, rng: np.random.Generator,

@@ -35,9 +35,8 @@ def _hosts(draft: SceneDraft, req: Request, by_name: dict[str, str]) -> tuple[li
     """Candidate receptacles and the region kind wanted ("surface" for on, "volume" for in)."""
     support = next((r for r in req.rels if r.relation in ("on", "in")), None)
     if support is not None:
-        target = by_name.get(support.anchor or "")
-        hosts = [p for p in draft.placed if p.obj.id == target]
-        return hosts, ("surface" if support.relation == "on" else "volume")
+        return draft.referents(by_name.get(support.anchor or "")), (
+            "surface" if support.relation == "on" else "volume")
     allowed = supports_for(req.type)
     # default objects never go in wall-mounted cabinets: nobody standing on the floor could see them there
     return [p for p in draft.placed if p.obj.type in allowed and p.obj.layer not in ("object", "decoration")], None

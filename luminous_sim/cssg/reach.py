@@ -1,5 +1,5 @@
-"""The agent's reach on the furniture layer's grid: which cells its centre can stand on (clear of solid
-things, in the largest connected part of the floor) and whether every floor piece stays within reach.
+"""The agent's reach on the furniture layer's grid: whether every floor piece stays within reach of
+the cells the agent can stand on (`lattice.Lattice.walkable`).
 
 Distances are cell-centre to cell-centre, as scipy's Euclidean distance transform measures them, but
 computed only in a window around one piece (in closed form when its cells fill a box), and each piece
@@ -17,8 +17,6 @@ from scipy import ndimage
 from luminous_sim.cssg.grid import RES
 from luminous_sim.vocab.agent_body import CAMERA_HEIGHT, VISIBILITY_DISTANCE
 
-AGENT_CLEARANCE = 0.25
-"""Half-width of the passage the agent needs (a little more than its 0.2 m radius, for the 0.25 m grid)."""
 REACH = VISIBILITY_DISTANCE - 0.05
 """Every piece must stay within this distance of the eye over walkable floor (ALFRED reaches 1.5 m)."""
 
@@ -91,21 +89,6 @@ class FloorPiece:
         r, c = np.unravel_index(int(np.argmax(hits)), hits.shape)
         self.witness = int(np.ravel_multi_index((r + rows.start, c + cols.start), walk.shape))
         return True
-
-    def clear_of(self, shape: tuple[int, int]) -> np.ndarray:
-        """Cells at least AGENT_CLEARANCE from every cell of the piece."""
-        out = np.ones(shape, dtype=bool)
-        if len(self.cells):
-            rows, cols, dist = self.distances(shape, AGENT_CLEARANCE)
-            out[rows, cols] = dist >= AGENT_CLEARANCE
-        return out
-
-
-def clear_of(solid: np.ndarray) -> np.ndarray:
-    """Cells at least AGENT_CLEARANCE from every solid cell."""
-    if not solid.any():  # scipy would measure from a phantom cell beyond the corner
-        return np.ones(solid.shape, dtype=bool)
-    return ndimage.distance_transform_edt(~solid) * RES >= AGENT_CLEARANCE
 
 
 def largest_part(ok: np.ndarray) -> np.ndarray:

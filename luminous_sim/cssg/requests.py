@@ -152,7 +152,9 @@ def _add_implicit(reqs: dict[str, Request]) -> None:
 
 
 def _ordered(reqs: dict[str, Request]) -> list[Request]:
-    """Topological order over anchors, ties by layer, then the priority table, then name."""
+    """Topological order over anchors, ties by layer, then (for small objects) the CDF's own before the
+    room's defaults, then the priority table, then name. Furniture keeps the priority order whoever asked
+    for it: a default bed still goes in before a required chair."""
     prio = {t: i for i, t in enumerate(implicit_table()["priority"])}
     layer_rank = {"fixture": 0, "furniture": 1, "object": 2, "wall": 3}
     g = nx.DiGraph()
@@ -168,5 +170,6 @@ def _ordered(reqs: dict[str, Request]) -> list[Request]:
                     r.rels.remove(rel)
                     g.remove_edge(rel.anchor, r.name)
     order = nx.lexicographical_topological_sort(
-        g, key=lambda n: (layer_rank[reqs[n].layer], prio.get(reqs[n].type, 99), not reqs[n].explicit, n))
+        g, key=lambda n: (layer_rank[reqs[n].layer], reqs[n].layer == "object" and not reqs[n].explicit,
+                          prio.get(reqs[n].type, 99), not reqs[n].explicit, n))
     return [reqs[n] for n in order]

@@ -8,6 +8,7 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+from scipy import ndimage
 
 from luminous_sim.assets.catalog import AssetEntry
 from luminous_sim.cssg.grid import RES, FloorGrid
@@ -88,6 +89,13 @@ def _half_extents(entry: AssetEntry) -> tuple[float, float]:
     return entry.dims[0] / 2, entry.dims[1] / 2
 
 
+def _wall_clearance(wall_dist: np.ndarray, ex: float, ey: float) -> np.ndarray:
+    """Per cell, how far a box of half extents `ex` (along x) and `ey` (along y) centred there stays from
+    the nearest wall: the least wall distance under it (negative where it crosses a wall or leaves the grid)."""
+    size = (2 * round(ey / RES) + 1, 2 * round(ex / RES) + 1)
+    return ndimage.minimum_filter(wall_dist, size=size, mode="constant", cval=-RES)
+
+
 def relation_field(
     relation: str, grid: FloorGrid, subject: AssetEntry, anchor: Placed2D | None, wall_dirs: np.ndarray,
     centroid: tuple[float, float],
@@ -109,8 +117,11 @@ def relation_field(
     if relation == "in_centre":
         return np.hypot(gx - centroid[0], gy - centroid[1]), None
     if anchor is None:  # relations to the room structure ("away_from wall")
-        if relation == "away_from":
-            return np.maximum(0.0, WALL_CLEAR - (grid.wall_dist - max(hw, hd))), None
+        if relation == "away_from":  # the clearance of the piece's own edges, turned the better way
+            along_x = grid.memo(("wall_clearance", hw, hd), lambda: _wall_clearance(grid.wall_dist, hw, hd))
+            along_y = grid.memo(("wall_clearance", hd, hw), lambda: _wall_clearance(grid.wall_dist, hd, hw))
+            return (np.maximum(0.0, WALL_CLEAR - np.maximum(along_x, along_y)),
+                    np.where(along_x >= along_y, 0, 1).astype(np.int8))
         return np.zeros(grid.shape), None
     ac = anchor.center()
     ahw, ahd = anchor.half()
@@ -195,6 +206,13 @@ def cost_in_field(relation: str, field: tuple[np.ndarray, np.ndarray | None], gr
     if relation == "against_wall" and yaw is not None:  # the wall behind the piece as it actually stands
         k = round(yaw / (math.pi / 2)) % 4
         return float(abs(wall_dirs[BACK_DIRECTION[k], r, c] + 0.0 - (-subject.bbox_min[1]) - GAP))
+    if relation == "away_from" and head is not None and yaw is not None:  # from the walls, as it stands
+        hw, hd = _half_extents(subject)
+        ex, ey = (hw, hd) if round(yaw / (math.pi / 2)) % 2 == 0 else (hd, hw)
+        m, n = round(ey / RES), round(ex / RES)
+        window = grid.wall_dist[max(r - m, 0):r + m + 1, max(c - n, 0):c + n + 1]
+        inside = r - m >= 0 and c - n >= 0 and r + m < grid.shape[0] and c + n < grid.shape[1]
+        return max(0.0, WALL_CLEAR - (float(window.min()) if inside else -RES))
     extra = 0.0
     if yaw is not None and head is not None and relation in HEADING_RELATIONS:
         extra = WRONG_HEADING_COST * (int(head[r, c]) != round(yaw / (math.pi / 2)) % 4)

@@ -10,12 +10,12 @@ import shapely
 from shapely.strtree import STRtree
 
 from luminous_sim.cssg.draft import SceneDraft
+from luminous_sim.cssg.lattice import STEP
 from luminous_sim.cssg.reach import horizontal_reach
 from luminous_sim.cssg.scores import TOLERANCE
 from luminous_sim.vocab.agent_body import AGENT_RADIUS
 from luminous_sim.vocab.agent_body import VISIBILITY_DISTANCE as REACH
 
-STEP = 0.25
 AGENT_HEIGHT = 1.8
 
 
@@ -134,7 +134,8 @@ def check_layout(draft: SceneDraft, requests, ctx, unplaced: list[str], attempt:
                 met, cost = False, float("inf")
             elif rel.relation in ("on", "in"):
                 anchor = by_name.get(rel.anchor or "")
-                met, cost = anchor is not None and placed.obj.parent == anchor.obj.id, 0.0
+                met = anchor is not None and placed.obj.parent in {p.obj.id for p in draft.referents(anchor.obj.id)}
+                cost = 0.0
             elif rel.relation in ("above", "under"):
                 anchor = by_name.get(rel.anchor or "")
                 met = anchor is not None and abs(_lateral(placed, anchor)) < 0.3

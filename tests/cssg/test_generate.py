@@ -122,3 +122,43 @@ def test_bathroom_fixtures_the_cdf_names_come_with_the_room():
     for seed in range(5):
         shell = choose_room(doc, np.random.default_rng(seed))
         assert {"CounterTop", "SinkBasin", "Toilet", "Bathtub"} <= fixture_types(shell, default_catalog())
+
+
+def test_the_counter_named_in_a_cdf_is_the_whole_counter_run():
+    """"A coffee machine on the counter": any segment of the kitchen's counter run will do, and the
+    validation counts it as met there."""
+    from luminous_sim.assets.catalog import default_catalog
+    from luminous_sim.cssg.draft import SceneDraft
+    from luminous_sim.cssg.structure import place_fixtures
+
+    doc = _load("kitchen_coffee_mug")
+    rng = np.random.default_rng(0)
+    draft = SceneDraft(choose_room(doc, rng), default_catalog(), rng)
+    place_fixtures(draft)
+    counters = [p for p in draft.placed if p.obj.type == "CounterTop"]
+    assert len(counters) > 1
+    assert [p.obj.id for p in draft.referents(counters[0].obj.id)] == [p.obj.id for p in counters]
+    sink = next(p for p in draft.placed if p.obj.type == "Sink")
+    assert draft.referents(sink.obj.id) == [sink] and draft.referents("nothing") == []
+    for seed in range(4):
+        g = generate(doc, seed=seed)
+        by_id = {o.id: o for o in g.scene.objects}
+        machine = next(o for o in g.scene.objects if o.name == "coffee_machine")
+        assert by_id[machine.parent].type == "CounterTop"
+        assert next(r for r in g.report.relations if r.subject == "coffee_machine" and r.relation == "on").met
+
+
+def test_the_cdfs_own_objects_go_before_the_rooms_defaults():
+    """Small objects the CDF asks for are placed before the defaults that would fill their shelf; furniture
+    keeps the priority order (the room's big pieces first, whoever asked for them)."""
+    from luminous_sim.cssg.requests import requests_from_cdf
+
+    doc = _load("kitchen_coffee_mug")
+    reqs = requests_from_cdf(doc, "Kitchen", np.random.default_rng(1), area=16.0)
+    objects = [r for r in reqs if r.layer == "object"]
+    explicit = [i for i, r in enumerate(objects) if r.explicit]
+    defaults = [i for i, r in enumerate(objects) if not r.explicit]
+    assert explicit and defaults and max(explicit) < min(defaults)
+    bedroom = requests_from_cdf(_load("bedroom_reading_desk"), "Bedroom", np.random.default_rng(1), area=14.0)
+    furniture = [r.type for r in bedroom if r.layer == "furniture"]
+    assert furniture.index("Bed") < furniture.index("Chair")

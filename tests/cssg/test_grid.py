@@ -94,3 +94,24 @@ def test_feasibility_is_cached_until_the_free_mask_changes(chair):
     assert not g.feasible(chair, HEADINGS[0])[r, c]
     g.set_free(g.room.copy())
     assert np.array_equal(g.feasible(chair, HEADINGS[0]), before)
+
+
+def test_away_from_wall_measures_the_pieces_own_edges_turned_the_better_way():
+    """A 2 m table in a 2.6 m wide corridor room clears the long walls only lengthwise: the field prefers
+    that heading, and the cost read at a yaw is the clearance of the table as it stands."""
+    from luminous_sim.cssg.scores import WALL_CLEAR, cost_in_field, relation_field
+
+    table = max(default_catalog().of_type("DiningTable"), key=lambda e: e.dims[0])
+    w, d = table.dims[0], table.dims[1]
+    assert w > 1.8 and d < 1.0
+    g = FloorGrid.from_polygon(Polygon([(0, 0), (2.6, 0), (2.6, 6), (0, 6)]))  # long along y
+    walls = directional_wall_distance(g)
+    field = relation_field("away_from", g, table, None, walls, (1.3, 3.0))
+    cost, head = field
+    r, c = g.cell(1.3, 3.0)
+    assert head is not None and head[r, c] == 1  # turned a quarter: its length along the room's
+    assert cost[r, c] == pytest.approx(max(0.0, WALL_CLEAR - (1.3 - d / 2)), abs=2 * RES)
+    lengthwise = cost_in_field("away_from", field, g, table, walls, 1.3, 3.0, yaw=np.pi / 2)
+    across = cost_in_field("away_from", field, g, table, walls, 1.3, 3.0, yaw=0.0)
+    assert lengthwise == pytest.approx(cost[r, c], abs=1e-9)
+    assert across == pytest.approx(WALL_CLEAR - (1.3 - w / 2), abs=2 * RES) and across > lengthwise
