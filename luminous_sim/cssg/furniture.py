@@ -27,7 +27,10 @@ from luminous_sim.cssg.scores import (
     relation_field,
 )
 from luminous_sim.cssg.validate import is_obstacle
+from luminous_sim.cssg.walls import BEHIND_SLACK, MARGIN, window_strips
 
+WINDOW_BEHIND_COST = 2.0
+"""Cost of a cell with a window behind, for a piece something is to hang above (the structure weight)."""
 WRONG_HEADING_PENALTY = 0.5
 """metres of cost for standing at a heading other than the preferred one."""
 WORK_ZONE = 0.7
@@ -169,6 +172,14 @@ def score(ctx: FloorContext, req: Request, entry) -> tuple[np.ndarray, np.ndarra
         total += rel.weight * cost
         if head is not None and rel.weight > best_w:
             heading, best_w = head, rel.weight
+    if req.clear_above:  # a painting is to hang above it: not in front of a window
+        key = ("window_behind", entry.dims[1], req.clear_above)
+        if key not in ctx.fields:
+            mask = np.zeros(ctx.grid.shape, dtype=bool)
+            for strip in window_strips(ctx.draft, entry.dims[1] + BEHIND_SLACK, req.clear_above + MARGIN + 0.05):
+                mask |= ctx.grid._cells(strip)
+            ctx.fields[key] = mask
+        total += WINDOW_BEHIND_COST * ctx.fields[key]
     return total, heading
 
 

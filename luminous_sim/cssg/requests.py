@@ -48,6 +48,8 @@ class Request:
     rels: list[Rel] = field(default_factory=list)
     attributes: dict = field(default_factory=dict)
     """colour, material and size from the CDF (size: a factor or {width, depth, height})."""
+    clear_above: float = 0.0
+    """Half-width (m) of a wall piece the CDF hangs above this one (0: none): no window behind it there."""
 
     def variants(self, catalog) -> list:
         """The asset variants this request may use, filtered and scaled by its attributes."""
@@ -68,6 +70,10 @@ class Request:
 def _instances(cdf: ChallengeDefinition) -> dict[str, list[str]]:
     """CDF name -> instance names (`mug`, or `pillow`, `pillow#2`, ... for count > 1)."""
     return {o.name: [o.name] + [f"{o.name}#{i}" for i in range(2, o.count + 1)] for o in cdf.scene.objects}
+
+
+DEFAULT_ABOVE_WIDTH = 1.2
+"""Width (m) assumed for a wall piece hung above something when the CDF gives no size (a large painting)."""
 
 
 def requests_from_cdf(cdf: ChallengeDefinition, room_type: str, rng: np.random.Generator,
@@ -91,6 +97,12 @@ def requests_from_cdf(cdf: ChallengeDefinition, room_type: str, rng: np.random.G
         for sub in inst[o.subject]:
             anchor = anchors[min(inst[o.subject].index(sub), len(anchors) - 1)] if anchors != [None] else None
             reqs[sub].rels.append(Rel(rel, anchor, o.weight, o.hard, True, f"cdf:scene.relations[{o.index}]"))
+    for r in list(reqs.values()):
+        size = r.attributes.get("size")
+        width = size.get("width", DEFAULT_ABOVE_WIDTH) if isinstance(size, dict) else DEFAULT_ABOVE_WIDTH
+        for rel in r.rels:
+            if rel.relation == "above" and rel.anchor in reqs:
+                reqs[rel.anchor].clear_above = max(reqs[rel.anchor].clear_above, width / 2)
     if defaults:
         _add_defaults(reqs, room_type, rng, area)
     _add_implicit(reqs)

@@ -8,6 +8,7 @@ import math
 from collections.abc import Callable
 
 import numpy as np
+from shapely.geometry import Polygon
 
 from luminous_sim.assets.catalog import AssetEntry
 from luminous_sim.cssg.draft import Placed, SceneDraft
@@ -37,6 +38,19 @@ def _openings(draft: SceneDraft, wall: Wall) -> list[tuple[float, float]]:
     spans = [d.span for d in draft.shell.doors if d.wall == wall.id]
     spans += [w.span for w in draft.shell.windows if w.wall == wall.id]
     return spans
+
+
+def window_strips(draft: SceneDraft, depth: float, widen: float) -> list[Polygon]:
+    """Floor strips in front of every window, `depth` into the room and `widen` past each side: where a
+    piece standing against the wall would have the window behind it, and nothing could hang above it."""
+    walls = {w.id: w for w in draft.shell.walls}
+    out = []
+    for win in draft.shell.windows:
+        wall = walls[win.wall]
+        a, b = win.span
+        a, b = max(a - widen, 0.0), min(b + widen, wall.length)
+        out.append(Polygon([wall.point(a, 0.0), wall.point(b, 0.0), wall.point(b, depth), wall.point(a, depth)]))
+    return out
 
 
 def clashes(draft: SceneDraft, entry: AssetEntry, x: float, y: float, yaw: float, z0: float,

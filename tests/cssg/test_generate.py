@@ -162,3 +162,33 @@ def test_the_cdfs_own_objects_go_before_the_rooms_defaults():
     bedroom = requests_from_cdf(_load("bedroom_reading_desk"), "Bedroom", np.random.default_rng(1), area=14.0)
     furniture = [r.type for r in bedroom if r.layer == "furniture"]
     assert furniture.index("Bed") < furniture.index("Chair")
+
+
+def test_a_piece_something_hangs_above_keeps_windows_from_behind_it():
+    """The painting above the sofa: the sofa's request knows the painting's half-width, and its score costs
+    WINDOW_BEHIND_COST more in front of each window (where nothing could hang above it)."""
+    from dataclasses import replace
+
+    from luminous_sim.assets.catalog import default_catalog
+    from luminous_sim.cssg.draft import SceneDraft
+    from luminous_sim.cssg.furniture import WINDOW_BEHIND_COST, FloorContext, score
+    from luminous_sim.cssg.requests import requests_from_cdf
+    from luminous_sim.cssg.walls import window_strips
+    from luminous_sim.rooms.generate import generate_shell
+
+    doc = _load("livingroom_painting_sofa")
+    reqs = {r.name: r for r in requests_from_cdf(doc, "LivingRoom", np.random.default_rng(0), area=20.0)}
+    assert reqs["sofa"].clear_above == pytest.approx(0.6) and reqs["tv_stand"].clear_above == 0.0
+    shell = next(s for s in (generate_shell("LivingRoom", np.random.default_rng(i)) for i in range(20)) if s.windows)
+    draft = SceneDraft(shell, default_catalog(), np.random.default_rng(0))
+    ctx = FloorContext.create(draft)
+    sofa = draft.catalog.of_type("Sofa")[0]
+    with_painting, _ = score(ctx, reqs["sofa"], sofa)
+    without, _ = score(ctx, replace(reqs["sofa"], clear_above=0.0), sofa)
+    strips = window_strips(draft, sofa.dims[1] + 0.3, 0.6 + 0.15)
+    inside = np.zeros(ctx.grid.shape, dtype=bool)
+    for s in strips:
+        inside |= ctx.grid._cells(s)
+    assert inside.any() and (~inside).any()
+    assert np.allclose((with_painting - without)[inside], WINDOW_BEHIND_COST)
+    assert np.allclose((with_painting - without)[~inside], 0.0)
