@@ -91,6 +91,7 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
     rng = np.random.default_rng(np.random.SeedSequence([seed, 11]))
     world = _prepared_world(scene, task_type)
     unreachable: set[str] = set()
+    full: set[str] = set()
     try:
         task = draw_task(scene, world, task_type, rng)
         start = world.agent
@@ -99,9 +100,10 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
             if traj.success or not any(k in f for f in traj.failures for k in REDRAW_ON):
                 break
             unreachable.update(traj.unreachable)
+            full.update(traj.full)
             fresh = _prepared_world(scene, task_type)
             try:
-                redrawn = draw_task(scene, fresh, task_type, rng, excluded=unreachable)
+                redrawn = draw_task(scene, fresh, task_type, rng, excluded=unreachable, full=full)
             except TaskSamplingError:  # nothing else to draw: the failed episode stands
                 fresh.close()
                 break

@@ -98,6 +98,7 @@ class Oracle:
                     traj.unreachable.append(exc.unreachable)
                 if exc.full:
                     forbidden.append(Not(Atom("inReceptacle", exc.full)))
+                    traj.full.append(exc.full[1])
         traj.high_pddl.append({"discrete_action": {"action": "NoOp", "args": []}, "high_idx": len(traj.high_pddl),
                                "planner_action": {"action": "End", "value": 1}})
         return traj

@@ -23,12 +23,17 @@ SPOT_SEED = 2024
 """Seed of the dry-run placements (kept apart from the world's own random stream)."""
 
 
-def has_room(world: World, object_type: str, receptacle_type: str, excluded: Iterable[str] = ()) -> bool:
+def has_room(world: World, object_type: str, receptacle_type: str, excluded: Iterable[str] = (),
+             full: Iterable[str] = ()) -> bool:
     """Whether some object of `object_type` has a free, stable spot in some `receptacle_type` now
-    (doors counted as open). Slices that do not exist yet are stood in for by their whole."""
+    (doors counted as open), other than the `full` ones (a put found no room there). Slices that do
+    not exist yet are stood in for by their whole."""
     state = world.interactions.state.without(set(excluded))
     objs = state.of_type(object_type) or state.of_type(parent_type(object_type) or "")
-    hosts = state.of_type(receptacle_type)
+    every = state.of_type(receptacle_type)
+    hosts = [h for h in every if h not in set(full)]
+    if every and not hosts:
+        return False
     if receptacle_type in HANGERS or not objs or not hosts:
         return True
     rng = np.random.default_rng(SPOT_SEED)
@@ -36,17 +41,21 @@ def has_room(world: World, object_type: str, receptacle_type: str, excluded: Ite
                for o in objs for h in hosts if o != h)
 
 
-def has_room_for_two(world: World, object_type: str, receptacle_type: str, excluded: Iterable[str] = ()) -> bool:
+def has_room_for_two(world: World, object_type: str, receptacle_type: str, excluded: Iterable[str] = (),
+                     full: Iterable[str] = ()) -> bool:
     """Whether two different objects of `object_type` both have a free, stable spot in one
-    `receptacle_type` (the second beside the first), doors counted as open. Two slices that do not
-    exist yet fit where their whole does: they are pieces of it."""
+    `receptacle_type` other than the `full` ones (the second beside the first), doors counted as open.
+    Two slices that do not exist yet fit where their whole does: they are pieces of it."""
     state = world.interactions.state.without(set(excluded))
     objs = state.of_type(object_type)
-    hosts = state.of_type(receptacle_type)
+    every = state.of_type(receptacle_type)
+    hosts = [h for h in every if h not in set(full)]
+    if every and not hosts:
+        return False
     if receptacle_type in HANGERS or not hosts:
         return True
     if not objs and state.of_type(parent_type(object_type) or ""):
-        return has_room(world, object_type, receptacle_type, excluded)
+        return has_room(world, object_type, receptacle_type, excluded, full)
     rng = np.random.default_rng(SPOT_SEED)
     find = world.interactions.find_spot
     for h in hosts:
@@ -60,16 +69,18 @@ def has_room_for_two(world: World, object_type: str, receptacle_type: str, exclu
     return False
 
 
-def physically_feasible(world: World, params: PddlParams, excluded: Iterable[str] = (), two: bool = False) -> bool:
+def physically_feasible(world: World, params: PddlParams, excluded: Iterable[str] = (), two: bool = False,
+                        full: Iterable[str] = ()) -> bool:
     """The task's object (or its movable receptacle) has room in the target receptacle (`two` of them,
-    for pick_two_obj_and_place), and the object has room in its movable receptacle."""
+    for pick_two_obj_and_place), and the object has room in its movable receptacle; receptacles a put
+    already found `full` do not count."""
     obj = params.object_target + ("Sliced" if params.object_sliced else "")
     inner = params.mrecep_target or obj
-    if params.parent_target and not has_room(world, inner, params.parent_target, excluded):
+    if params.parent_target and not has_room(world, inner, params.parent_target, excluded, full):
         return False
-    if two and params.parent_target and not has_room_for_two(world, inner, params.parent_target, excluded):
+    if two and params.parent_target and not has_room_for_two(world, inner, params.parent_target, excluded, full):
         return False
-    return not (params.mrecep_target and not has_room(world, obj, params.mrecep_target, excluded))
+    return not (params.mrecep_target and not has_room(world, obj, params.mrecep_target, excluded, full))
 
 
 def unseeable(world: World) -> set[str]:
@@ -82,17 +93,18 @@ def unseeable(world: World) -> set[str]:
 
 
 def draw_task(scene: Scene, world: World, task_type: str, rng: np.random.Generator,
-              excluded: Iterable[str] = ()) -> TaskInstance:
+              excluded: Iterable[str] = (), full: Iterable[str] = ()) -> TaskInstance:
     """A feasible task of `task_type` that the world can physically support, leaving out objects no
-    one can see and `excluded` ones (the oracle found no pose to see them). Raises TaskSamplingError
-    when there is none."""
+    one can see and `excluded` ones (the oracle found no pose to see them), and putting nothing in the
+    `full` receptacles (a put found no room there). Raises TaskSamplingError when there is none."""
     excluded = set(excluded) | unseeable(world)
     verdict: dict[tuple, bool] = {}
 
     def fits(p: PddlParams) -> bool:
         key = (p.object_target, p.object_sliced, p.mrecep_target, p.parent_target)
         if key not in verdict:
-            verdict[key] = physically_feasible(world, p, excluded, two=task_type == "pick_two_obj_and_place")
+            verdict[key] = physically_feasible(world, p, excluded, two=task_type == "pick_two_obj_and_place",
+                                               full=full)
         return verdict[key]
 
     return sample_task(scene, world.interactions.state.without(excluded), task_type, rng, keep=fits)

@@ -29,6 +29,8 @@ class Trajectory:
     """Why each failed attempt failed, in order."""
     unreachable: list[str] = field(default_factory=list)
     """Objects no pose could see (left out of later plans, and of later task draws)."""
+    full: list[str] = field(default_factory=list)
+    """Receptacles a put found no room in (no later task draw asks to put things there)."""
 
     def add_frame(self, rgb: np.ndarray | None, high_idx: int, low_idx: int) -> None:
         if rgb is None:

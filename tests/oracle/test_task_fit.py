@@ -157,3 +157,36 @@ def test_two_slices_to_be_cut_fit_where_their_whole_does(world, kitchen_scene):
     # one apple, no slices yet: a pick_two of slices is as placeable as the apple itself
     assert has_room_for_two(world, "AppleSliced", "CounterTop") == has_room(world, "Apple", "CounterTop") is True
     assert not has_room_for_two(world, "Apple", "CounterTop")  # but two whole apples there are not
+
+
+def test_a_redraw_puts_nothing_where_a_put_found_no_room(world, kitchen_scene):
+    """A put that found a receptacle full rules it out of later draws (ALFRED's generator drops such
+    tasks), but not the other receptacles of its type."""
+    state = world.interactions.state
+    micro = state.of_type("Microwave")
+    assert len(micro) == 1 and has_room(world, "Apple", "Microwave")
+    assert not has_room(world, "Apple", "Microwave", full=micro)
+    assert not physically_feasible(world, PddlParams("Apple", "Microwave"), full=micro)
+    rng = np.random.default_rng(0)
+    for _ in range(8):
+        task = draw_task(kitchen_scene, world, "pick_heat_then_place_in_recep", rng, full=micro)
+        assert task.params.parent_target != "Microwave"
+    counters = state.of_type("CounterTop")
+    if len(counters) > 1:
+        assert has_room(world, "Apple", "CounterTop", full=counters[:1])
+
+
+def test_the_oracle_reports_a_receptacle_a_put_found_full(world, kitchen_scene, monkeypatch):
+    """So that the episode's redraw can leave it out (episode.run_episode passes it to draw_task)."""
+    micro = world.interactions.state.of_type("Microwave")[0]
+    real = world.interactions.find_spot
+
+    def no_room_in_the_microwave(oid, receptacle, *args, **kwargs):
+        if receptacle == micro:
+            return f"{receptacle} is full: no free, stable spot for {oid}"
+        return real(oid, receptacle, *args, **kwargs)
+
+    monkeypatch.setattr(world.interactions, "find_spot", no_room_in_the_microwave)
+    goal = goal_for(PddlParams("Apple", "Microwave"), "pick_and_place_simple")
+    traj = Oracle(world, record_frames=False).run(goal)
+    assert not traj.success and traj.full == [micro]
