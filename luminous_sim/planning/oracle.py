@@ -29,12 +29,15 @@ PLAN_TIMEOUT = 8.0
 class ExecutionError(PlanningError):
     """A low-level action failed while executing the plan (the oracle replans)."""
 
-    def __init__(self, message: str, unreachable: str | None = None, full: tuple[str, str] | None = None):
+    def __init__(self, message: str, unreachable: str | None = None, full: tuple[str, str] | None = None,
+                 packed: bool = False):
         super().__init__(message)
         self.unreachable = unreachable
         """An object no pose can see: the next plan must do without it."""
         self.full = full
         """(object, receptacle) that did not fit: the next plan must leave the object elsewhere."""
+        self.packed = packed
+        """Whether the receptacle had no free spot at all (not merely none within reach from here)."""
 
 
 def with_forbidden(goal: Expr, forbidden: list[Expr]) -> Expr:
@@ -98,7 +101,8 @@ class Oracle:
                     traj.unreachable.append(exc.unreachable)
                 if exc.full:
                     forbidden.append(Not(Atom("inReceptacle", exc.full)))
-                    traj.full.append(exc.full[1])
+                    if exc.packed:
+                        traj.full.append(exc.full[1])
         traj.high_pddl.append({"discrete_action": {"action": "NoOp", "args": []}, "high_idx": len(traj.high_pddl),
                                "planner_action": {"action": "End", "value": 1}})
         return traj
@@ -198,7 +202,8 @@ class Oracle:
         if not result.success:
             full = (api["objectId"], api["receptacleObjectId"]) if api["action"] == "PutObject" and (
                 "full" in result.error or "no place" in result.error) else None
-            raise ExecutionError(f"{api['action']} failed: {result.error}", full=full)
+            raise ExecutionError(f"{api['action']} failed: {result.error}", full=full,
+                                 packed=full is not None and "is full" in result.error)
         traj.low_actions.append({"api_action": api, "discrete_action": discrete, "high_idx": high_idx})
         self._frame(traj, high_idx, len(traj.low_actions) - 1)
 

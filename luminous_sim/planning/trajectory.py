@@ -30,7 +30,8 @@ class Trajectory:
     unreachable: list[str] = field(default_factory=list)
     """Objects no pose could see (left out of later plans, and of later task draws)."""
     full: list[str] = field(default_factory=list)
-    """Receptacles a put found no room in (no later task draw asks to put things there)."""
+    """Receptacles a put found full, with no free spot at all (no later task draw asks to put things
+    there); not those with room only out of reach from where the agent stood."""
 
     def add_frame(self, rgb: np.ndarray | None, high_idx: int, low_idx: int) -> None:
         if rgb is None:

@@ -190,3 +190,18 @@ def test_the_oracle_reports_a_receptacle_a_put_found_full(world, kitchen_scene, 
     goal = goal_for(PddlParams("Apple", "Microwave"), "pick_and_place_simple")
     traj = Oracle(world, record_frames=False).run(goal)
     assert not traj.success and traj.full == [micro]
+
+
+def test_a_receptacle_with_room_only_out_of_reach_is_not_reported_full(world, kitchen_scene, monkeypatch):
+    """Room out of reach from one pose says nothing about the receptacle: a redraw may still use it."""
+    micro = world.interactions.state.of_type("Microwave")[0]
+    real = world.interactions.find_spot
+
+    def out_of_reach(oid, receptacle, *args, **kwargs):
+        if receptacle == micro:
+            return f"{receptacle} has no place to put things within reach"
+        return real(oid, receptacle, *args, **kwargs)
+
+    monkeypatch.setattr(world.interactions, "find_spot", out_of_reach)
+    traj = Oracle(world, record_frames=False).run(goal_for(PddlParams("Apple", "Microwave"), "pick_and_place_simple"))
+    assert not traj.success and traj.full == [] and any("within reach" in f for f in traj.failures)
