@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from luminous_sim.cssg.regions import region_spots, sample_in_region
+from luminous_sim.cssg.regions import region_spots, sample_in_region, scan_region
 from luminous_sim.cssg.sight import View, shades
 from luminous_sim.states import effects as fx
 from luminous_sim.states import rules
@@ -76,6 +76,8 @@ def _controls(world: World) -> dict[str, str]:
 
 VIEW_TRIES = 8
 """Draws of a put pose looking for one in the agent's view."""
+SCAN_VIEW_CHECKS = 12
+"""Scanned poses tried for a clear view before a put takes the first free one (or a dry run gives up)."""
 
 
 class Interactions:
@@ -346,17 +348,31 @@ class Interactions:
                 return view.sees((float(xy[0]), float(xy[1])), (mid, spot.floor_z + 0.8 * height))
             return bool(np.any(np.linalg.norm(eyes - np.array([xy[0], xy[1], mid]), axis=1) <= reach))
 
+        def clear_view(got) -> bool:
+            x, y, z = got[:3]
+            centre = np.array([x, y, z + (entry.bbox_min[2] + entry.bbox_max[2]) / 2])
+            near = eyes[np.linalg.norm(eyes - centre, axis=1) <= reach + 0.01]
+            hits = self.world.client.rayTestBatch(near.tolist(), [centre.tolist()] * len(near))
+            return any(h[0] == -1 for h in hits)
+
+        drawn = False
         for _ in range(VIEW_TRIES):
             got = sample_in_region(entry, spot, rng, occupied, tries=60, accept=in_reach)
             if got is None:  # a tight fit (a box beside a remote) may take more draws
                 continue
-            x, y, z = got[:3]
-            centre = np.array([x, y, z + (entry.bbox_min[2] + entry.bbox_max[2]) / 2])
-            near = eyes[np.linalg.norm(eyes - centre, axis=1) <= reach + 0.01]
+            drawn = True
             first = first or (got if real else None)
-            hits = self.world.client.rayTestBatch(near.tolist(), [centre.tolist()] * len(near))
-            if any(h[0] == -1 for h in hits):
+            if clear_view(got):
                 return got
+        if drawn:
+            return first
+        # no draw found room: scan for the gap left on a crowded table (the first few in clear view)
+        for i, got in enumerate(scan_region(entry, spot, occupied, accept=in_reach)):
+            if clear_view(got):
+                return got
+            first = first or (got if real else None)
+            if i + 1 >= SCAN_VIEW_CHECKS:
+                break
         return first
 
     def _standing_eyes(self) -> np.ndarray:

@@ -65,3 +65,23 @@ def test_a_region_covered_beyond_max_fill_is_given_up_at_once():
     assert rng.bit_generator.state == state  # nothing drawn
     assert sample_in_region(entry, spot, rng, half_full, max_fill=0.9) is not None
     assert sample_in_region(entry, spot, np.random.default_rng(0), half_full) is not None  # no limit by default
+
+
+def test_a_scan_finds_the_one_gap_that_random_draws_miss():
+    """A 0.6 x 0.4 table top covered but for one gap 4 cm wider than a small object: twenty random draws
+    seldom land it there, the scan does, and says none where there is no gap."""
+    from luminous_sim.cssg.regions import scan_region
+
+    cube = next(e for t in ("Egg", "KeyChain", "SoapBar", "CreditCard") for e in default_catalog().of_type(t)
+                if max(e.dims[:2]) < 0.12 and e.dims[2] < 0.4)
+    spot = RegionSpot(None, "top", "surface", (0.0, 0.0), (0.6, 0.4), 0.9, 0.5, 0.0)  # type: ignore[arg-type]
+    x0, y0 = 0.05, -0.05
+    x1, y1 = x0 + max(cube.dims[:2]) + 0.04, y0 + max(cube.dims[:2]) + 0.04  # 2 cm to spare each way
+    gap = box(x0, y0, x1, y1)
+    occupied = [box(-0.3, -0.2, x0, 0.2), box(x1, -0.2, 0.3, 0.2),  # footprints all around the gap
+                box(x0, -0.2, x1, y0), box(x0, y1, x1, 0.2)]
+    misses = sum(sample_in_region(cube, spot, np.random.default_rng(s), occupied) is None for s in range(20))
+    got = next(scan_region(cube, spot, occupied), None)
+    assert got is not None and gap.buffer(1e-6).contains(got[4])
+    assert misses > 10
+    assert next(scan_region(cube, spot, occupied + [gap]), None) is None
