@@ -171,7 +171,8 @@ def test_put_refuses_incompatible_and_full_receptacles(world, kitchen_scene, mon
     go_to(world, counter)
     import luminous_sim.world.interaction as interaction
 
-    monkeypatch.setattr(interaction, "sample_in_region", lambda *a, **k: None)  # no free spot anywhere
+    monkeypatch.setattr(interaction, "sample_in_region", lambda *a, **k: None)  # no free spot anywhere:
+    monkeypatch.setattr(interaction, "scan_region", lambda *a, **k: iter(()))  # not by draws, nor by a scan
     r = world.step({"action": "PutObject", "objectId": knife, "receptacleObjectId": counter})
     assert not r.success and "full" in r.error
     assert world.interactions.held == knife and state(world, knife).parent is None
