@@ -27,7 +27,7 @@ from luminous_sim.cssg.scores import (
     relation_field,
 )
 from luminous_sim.cssg.validate import is_obstacle
-from luminous_sim.cssg.walls import BEHIND_SLACK, MARGIN, window_strips
+from luminous_sim.cssg.walls import ABOVE_JITTER, BEHIND_SLACK, MARGIN, window_strips
 
 WINDOW_BEHIND_COST = 2.0
 """Cost of a cell with a window behind, for a piece something is to hang above (the structure weight)."""
@@ -176,7 +176,8 @@ def score(ctx: FloorContext, req: Request, entry) -> tuple[np.ndarray, np.ndarra
         key = ("window_behind", entry.dims[1], req.clear_above)
         if key not in ctx.fields:
             mask = np.zeros(ctx.grid.shape, dtype=bool)
-            for strip in window_strips(ctx.draft, entry.dims[1] + BEHIND_SLACK, req.clear_above + MARGIN + 0.05):
+            widen = req.clear_above + MARGIN + ABOVE_JITTER
+            for strip in window_strips(ctx.draft, entry.dims[1] + BEHIND_SLACK, widen):
                 mask |= ctx.grid._cells(strip)
             ctx.fields[key] = mask
         total += WINDOW_BEHIND_COST * ctx.fields[key]
@@ -248,13 +249,17 @@ def _cheapest(field: tuple[np.ndarray, np.ndarray | None], feas: np.ndarray) -> 
     """The least cost (with the heading penalty) over the feasible cells and headings; inf if none."""
     cost, heading = field
     cand = np.flatnonzero(feas)
-    if not len(cand):
-        return math.inf
+    return float(_cell_values(cost, heading, cand).min()) if len(cand) else math.inf
+
+
+def _cell_values(cost: np.ndarray, heading: np.ndarray | None, cand: np.ndarray) -> np.ndarray:
+    """Cost of each candidate flat index into (heading, row, column): the cell's cost, plus
+    WRONG_HEADING_PENALTY off the preferred heading (none without a heading field)."""
     cells = cand % cost.size
     vals = cost.ravel()[cells]
     if heading is not None:
         vals = vals + WRONG_HEADING_PENALTY * (heading.ravel()[cells] != cand // cost.size)
-    return float(vals.min())
+    return vals
 
 
 def _draw(cost: np.ndarray, heading: np.ndarray | None, feas: np.ndarray, rng: np.random.Generator,
@@ -265,8 +270,7 @@ def _draw(cost: np.ndarray, heading: np.ndarray | None, feas: np.ndarray, rng: n
     if heading is None:
         heading = np.full(cost.shape, int(rng.integers(4)))
     cand = np.flatnonzero(feas)
-    cells = cand % cost.size
-    vals = cost.ravel()[cells] + WRONG_HEADING_PENALTY * (heading.ravel()[cells] != cand // cost.size)
+    vals = _cell_values(cost, heading, cand)
     if cheapest:
         return int(cand[np.argmin(vals)])
     cdf = np.cumsum(np.exp(-(vals - vals.min()) / TEMPERATURE))

@@ -96,6 +96,13 @@ def _wall_clearance(wall_dist: np.ndarray, ex: float, ey: float) -> np.ndarray:
     return ndimage.minimum_filter(wall_dist, size=size, mode="constant", cval=-RES)
 
 
+def _wall_clearances(grid: FloorGrid, hw: float, hd: float) -> tuple[np.ndarray, np.ndarray]:
+    """`_wall_clearance` of a piece of half width `hw` and half depth `hd` at headings 0/180 (width along
+    x) and 90/270 (width along y), computed once per room and size."""
+    return (grid.memo(("wall_clearance", hw, hd), lambda: _wall_clearance(grid.wall_dist, hw, hd)),
+            grid.memo(("wall_clearance", hd, hw), lambda: _wall_clearance(grid.wall_dist, hd, hw)))
+
+
 def relation_field(
     relation: str, grid: FloorGrid, subject: AssetEntry, anchor: Placed2D | None, wall_dirs: np.ndarray,
     centroid: tuple[float, float],
@@ -118,8 +125,7 @@ def relation_field(
         return np.hypot(gx - centroid[0], gy - centroid[1]), None
     if anchor is None:  # relations to the room structure ("away_from wall")
         if relation == "away_from":  # the clearance of the piece's own edges, turned the better way
-            along_x = grid.memo(("wall_clearance", hw, hd), lambda: _wall_clearance(grid.wall_dist, hw, hd))
-            along_y = grid.memo(("wall_clearance", hd, hw), lambda: _wall_clearance(grid.wall_dist, hd, hw))
+            along_x, along_y = _wall_clearances(grid, hw, hd)
             return (np.maximum(0.0, WALL_CLEAR - np.maximum(along_x, along_y)),
                     np.where(along_x >= along_y, 0, 1).astype(np.int8))
         return np.zeros(grid.shape), None
@@ -206,13 +212,10 @@ def cost_in_field(relation: str, field: tuple[np.ndarray, np.ndarray | None], gr
     if relation == "against_wall" and yaw is not None:  # the wall behind the piece as it actually stands
         k = round(yaw / (math.pi / 2)) % 4
         return float(abs(wall_dirs[BACK_DIRECTION[k], r, c] + 0.0 - (-subject.bbox_min[1]) - GAP))
-    if relation == "away_from" and head is not None and yaw is not None:  # from the walls, as it stands
-        hw, hd = _half_extents(subject)
-        ex, ey = (hw, hd) if round(yaw / (math.pi / 2)) % 2 == 0 else (hd, hw)
-        m, n = round(ey / RES), round(ex / RES)
-        window = grid.wall_dist[max(r - m, 0):r + m + 1, max(c - n, 0):c + n + 1]
-        inside = r - m >= 0 and c - n >= 0 and r + m < grid.shape[0] and c + n < grid.shape[1]
-        return max(0.0, WALL_CLEAR - (float(window.min()) if inside else -RES))
+    # away_from the walls (the only away_from field with a heading), as the piece actually stands
+    if relation == "away_from" and head is not None and yaw is not None:
+        clearance = _wall_clearances(grid, *_half_extents(subject))[round(yaw / (math.pi / 2)) % 2]
+        return max(0.0, WALL_CLEAR - float(clearance[r, c]))
     extra = 0.0
     if yaw is not None and head is not None and relation in HEADING_RELATIONS:
         extra = WRONG_HEADING_COST * (int(head[r, c]) != round(yaw / (math.pi / 2)) % 4)

@@ -103,6 +103,8 @@ def _above_target(draft: SceneDraft, req: Request, by_name: dict[str, str]) -> s
 
 BEHIND_SLACK = 0.3
 """How far (m) beyond its depth a host's back may stand from the wall it hangs a piece above."""
+ABOVE_JITTER = 0.05
+"""How far (m) along the wall a piece hung above something may be drawn off its centre."""
 ABOVE_SHIFT = 0.2
 """How far (m) a piece above something may move sideways to stay within its wall (a basin near a corner)."""
 
@@ -187,7 +189,7 @@ def place_wall_piece(draft: SceneDraft, req: Request, by_name: dict[str, str], t
                 u_center = u + side * (host.entry.dims[0] / 2 + float(rng.uniform(*NEAR_OFFSET)) * 0.5)
             else:
                 z0 = max(wall_height(req.type), top + ABOVE_GAP)
-                u_center = _onto_wall(wall, entry, u + float(rng.uniform(-0.05, 0.05)), ABOVE_SHIFT)
+                u_center = _onto_wall(wall, entry, u + float(rng.uniform(-ABOVE_JITTER, ABOVE_JITTER)), ABOVE_SHIFT)
         else:
             lengths = np.array([w.length for w in draft.shell.walls])
             wall = draft.shell.walls[int(rng.choice(len(lengths), p=lengths / lengths.sum()))]

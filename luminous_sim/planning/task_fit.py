@@ -23,6 +23,14 @@ SPOT_SEED = 2024
 """Seed of the dry-run placements (kept apart from the world's own random stream)."""
 
 
+def _hosts(state, receptacle_type: str, full: Iterable[str]) -> list[str] | None:
+    """The receptacles of a type other than the `full` ones; None when it has some and all are full."""
+    every = state.of_type(receptacle_type)
+    full = set(full)
+    hosts = [h for h in every if h not in full]
+    return None if every and not hosts else hosts
+
+
 def has_room(world: World, object_type: str, receptacle_type: str, excluded: Iterable[str] = (),
              full: Iterable[str] = ()) -> bool:
     """Whether some object of `object_type` has a free, stable spot in some `receptacle_type` now
@@ -30,9 +38,8 @@ def has_room(world: World, object_type: str, receptacle_type: str, excluded: Ite
     not exist yet are stood in for by their whole."""
     state = world.interactions.state.without(set(excluded))
     objs = state.of_type(object_type) or state.of_type(parent_type(object_type) or "")
-    every = state.of_type(receptacle_type)
-    hosts = [h for h in every if h not in set(full)]
-    if every and not hosts:
+    hosts = _hosts(state, receptacle_type, full)
+    if hosts is None:
         return False
     if receptacle_type in HANGERS or not objs or not hosts:
         return True
@@ -48,9 +55,8 @@ def has_room_for_two(world: World, object_type: str, receptacle_type: str, exclu
     Two slices that do not exist yet fit where their whole does: they are pieces of it."""
     state = world.interactions.state.without(set(excluded))
     objs = state.of_type(object_type)
-    every = state.of_type(receptacle_type)
-    hosts = [h for h in every if h not in set(full)]
-    if every and not hosts:
+    hosts = _hosts(state, receptacle_type, full)
+    if hosts is None:
         return False
     if receptacle_type in HANGERS or not hosts:
         return True

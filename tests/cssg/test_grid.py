@@ -115,3 +115,34 @@ def test_away_from_wall_measures_the_pieces_own_edges_turned_the_better_way():
     across = cost_in_field("away_from", field, g, table, walls, 1.3, 3.0, yaw=0.0)
     assert lengthwise == pytest.approx(cost[r, c], abs=1e-9)
     assert across == pytest.approx(WALL_CLEAR - (1.3 - w / 2), abs=2 * RES) and across > lengthwise
+
+
+def test_the_last_try_takes_the_variant_whose_best_cell_is_cheapest():
+    """A dining table away from the walls of a small, empty room: the last try is not a random variant but the
+    one that fits best, and `_cheapest` is the least drawable cost (a brute-force minimum)."""
+    from luminous_sim.cssg.draft import SceneDraft
+    from luminous_sim.cssg.furniture import (
+        WRONG_HEADING_PENALTY,
+        FloorContext,
+        _cheapest,
+        place_piece,
+        score,
+    )
+    from luminous_sim.cssg.requests import Rel, Request
+    from luminous_sim.rooms.generate import generate_shell
+
+    shell = generate_shell("Bathroom", np.random.default_rng(1), shape="rect")  # 6.6 m2: tables differ
+    draft = SceneDraft(shell, default_catalog(), np.random.default_rng(0))
+    ctx = FloorContext.create(draft)
+    req = Request("table", "DiningTable", "furniture", True, rels=[Rel("away_from", None, 2.0, True, True, "test")])
+    variants = req.variants(draft.catalog)
+    fields = {e.id: (score(ctx, req, e), np.stack([ctx.grid.feasible(e, h) for h in HEADINGS])) for e in variants}
+    for (cost, head), feas in fields.values():
+        k, r, c = np.nonzero(feas)
+        brute = [cost[i, j] + (0.0 if head is None else WRONG_HEADING_PENALTY * (head[i, j] != h))
+                 for h, i, j in zip(k, r, c, strict=True)]
+        assert _cheapest((cost, head), feas) == pytest.approx(min(brute) if brute else np.inf)
+    best = min(variants, key=lambda e: _cheapest(*fields[e.id]))
+    assert sum(_cheapest(*f) == _cheapest(*fields[best.id]) for f in fields.values()) == 1, "one fits best"
+    placed = place_piece(ctx, req, tries=1)  # the one try is the last
+    assert placed is not None and placed.entry.id == best.id

@@ -176,32 +176,21 @@ def test_a_redraw_puts_nothing_where_a_put_found_no_room(world, kitchen_scene):
         assert has_room(world, "Apple", "CounterTop", full=counters[:1])
 
 
-def test_the_oracle_reports_a_receptacle_a_put_found_full(world, kitchen_scene, monkeypatch):
-    """So that the episode's redraw can leave it out (episode.run_episode passes it to draw_task)."""
+@pytest.mark.parametrize("error, reported", [
+    ("{} is full: no free, stable spot for {}", True),  # no room at all: the redraw leaves it out
+    ("{} has no place to put things within reach", False),  # room out of reach from one pose: kept
+])
+def test_the_oracle_reports_only_receptacles_with_no_room_at_all(world, kitchen_scene, monkeypatch, error, reported):
+    """The receptacles the episode's redraw leaves out (episode.run_episode passes them to draw_task)."""
     micro = world.interactions.state.of_type("Microwave")[0]
     real = world.interactions.find_spot
 
     def no_room_in_the_microwave(oid, receptacle, *args, **kwargs):
         if receptacle == micro:
-            return f"{receptacle} is full: no free, stable spot for {oid}"
+            return error.format(receptacle, oid)
         return real(oid, receptacle, *args, **kwargs)
 
     monkeypatch.setattr(world.interactions, "find_spot", no_room_in_the_microwave)
-    goal = goal_for(PddlParams("Apple", "Microwave"), "pick_and_place_simple")
-    traj = Oracle(world, record_frames=False).run(goal)
-    assert not traj.success and traj.full == [micro]
-
-
-def test_a_receptacle_with_room_only_out_of_reach_is_not_reported_full(world, kitchen_scene, monkeypatch):
-    """Room out of reach from one pose says nothing about the receptacle: a redraw may still use it."""
-    micro = world.interactions.state.of_type("Microwave")[0]
-    real = world.interactions.find_spot
-
-    def out_of_reach(oid, receptacle, *args, **kwargs):
-        if receptacle == micro:
-            return f"{receptacle} has no place to put things within reach"
-        return real(oid, receptacle, *args, **kwargs)
-
-    monkeypatch.setattr(world.interactions, "find_spot", out_of_reach)
     traj = Oracle(world, record_frames=False).run(goal_for(PddlParams("Apple", "Microwave"), "pick_and_place_simple"))
-    assert not traj.success and traj.full == [] and any("within reach" in f for f in traj.failures)
+    assert not traj.success and traj.full == ([micro] if reported else [])
+    assert any(f"PutObject failed: {error.format(micro, '')}"[:40] in f for f in traj.failures)
