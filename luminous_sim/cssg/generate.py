@@ -20,7 +20,7 @@ from luminous_sim.cssg.objects import place_object
 from luminous_sim.cssg.requests import Request, requests_from_cdf
 from luminous_sim.cssg.structure import fixture_types, place_fixtures
 from luminous_sim.cssg.tables import layer_of
-from luminous_sim.cssg.validate import LayoutReport, check_layout
+from luminous_sim.cssg.validate import LayoutReport, check_layout, named, relation_checks
 from luminous_sim.cssg.walls import place_wall_piece
 from luminous_sim.errors import InfeasibleSceneError
 from luminous_sim.rooms.shell import RoomShell
@@ -181,6 +181,7 @@ def sample_layout(cdf: ChallengeDefinition, shell: RoomShell, rng: np.random.Gen
     placed earlier in this sample, the sample goes back to just before that anchor and draws it again
     (at most BACKTRACKS times), so that an anchor drawn into a corner does not doom its dependents.
     An anchor bound to one of the room's own fixtures is not drawn, so it is never gone back to.
+    A sample stops at the first failure that no backtrack can undo (its report covers what was placed).
     """
     draft = SceneDraft(shell, catalog, rng)
     place_fixtures(draft)
@@ -192,6 +193,7 @@ def sample_layout(cdf: ChallengeDefinition, shell: RoomShell, rng: np.random.Gen
     checkpoints: dict[str, _Checkpoint] = {}
     bound: set[str] = set()
     backtracks = 0
+    undo_floor = _undo_floors(requests)
     i = 0
     while i < len(requests):
         req = requests[i]
@@ -210,8 +212,36 @@ def sample_layout(cdf: ChallengeDefinition, shell: RoomShell, rng: np.random.Gen
                 continue
         if not ok and req.name not in by_name:
             unplaced.append(req.name)
+        if not ok and (backtracks >= BACKTRACKS or undo_floor[i] > i) and _fails_for_good(req, draft, ctx, unplaced):
+            return draft, check_layout(draft, requests[:i + 1], ctx, unplaced, attempt, stopped_after=req.name)
         i += 1
     return draft, check_layout(draft, requests, ctx, unplaced, attempt)
+
+
+def _undo_floors(requests: list[Request]) -> list[float]:
+    """Per request, the earliest request a later backtrack could go back to (inf: none can): a failure that
+    no backtrack can undo is final."""
+    index = {r.name: k for k, r in enumerate(requests)}
+    floors: list[float] = [float("inf")] * len(requests)
+    lowest = float("inf")
+    for j in range(len(requests) - 1, -1, -1):
+        floors[j] = lowest
+        req = requests[j]
+        if req.layer in ("furniture", "fixture"):
+            for r in req.rels:
+                k = index.get(r.anchor or "")
+                if r.explicit and r.hard and k is not None and k < j and requests[k].layer in ("furniture", "fixture"):
+                    lowest = min(lowest, k)
+    return floors
+
+
+def _fails_for_good(req: Request, draft: SceneDraft, ctx: FloorContext, unplaced: list[str]) -> bool:
+    """Whether a CDF object just placed (or not) already fails validation: left out, or one of its hard
+    relations unmet, exactly as the final check would find it."""
+    if not req.explicit:
+        return False
+    return req.name in unplaced or any(c.explicit and c.hard and not c.met
+                                       for c in relation_checks(req, named(draft), draft, ctx))
 
 
 def generate(cdf: ChallengeDefinition, seed: int = 0, room: RoomShell | None = None,

@@ -15,11 +15,15 @@ import numpy as np
 
 from luminous_sim.assets.catalog import AssetEntry, Catalog
 from luminous_sim.cssg.draft import SceneDraft
-from luminous_sim.cssg.pose import against_wall, local_to_world
+from luminous_sim.cssg.pose import against_wall, footprint, local_to_world
 from luminous_sim.rooms.shell import CounterRun, FixtureSlot, RoomShell, Wall
 from luminous_sim.scene.model import SceneObject
 
 GAP = 0.01
+CLEAR_STEP = 0.05
+"""How far (m) a counter segment that would run into a fixture already there moves along its wall."""
+OVERLAP_AREA = 1e-4
+"""Footprint overlap (m^2) that counts as running into another fixture (the validation report's figure)."""
 
 
 def _width(e: AssetEntry) -> float:
@@ -30,6 +34,36 @@ def _clamped(wall: Wall, entry: AssetEntry, u_start: float) -> float:
     """The start along the wall that keeps the asset within it, clear of the walls at both ends (a slot at a
     corner, a wider asset)."""
     return min(max(u_start, GAP), wall.length - _width(entry) - GAP)
+
+
+def _clear(draft: SceneDraft, wall: Wall, entry: AssetEntry, u_start: float) -> bool:
+    """Whether the asset against `wall` from `u_start` keeps clear of every fixture placed so far (a room
+    converted from AI2-THOR may have a run that stops short of a corner, or a fridge, within our deeper
+    counters' reach)."""
+    pose = against_wall(wall, entry, _clamped(wall, entry, u_start), GAP)
+    fp = footprint(entry, pose.x, pose.y, pose.yaw)
+    return not any(p.obj.parent is None and fp.intersects(p.footprint) and fp.intersection(p.footprint).area > OVERLAP_AREA
+                   for p in draft.placed)
+
+
+MAX_SHIFT = 0.5
+"""How far (m) a free-standing fixture may move along its wall from its slot to keep clear of others."""
+
+
+def _nearest_free(draft: SceneDraft, wall: Wall, entry: AssetEntry, u_start: float) -> float | None:
+    """The start nearest `u_start` (within MAX_SHIFT, along the wall) where the asset keeps clear of the
+    fixtures placed so far and of every door's clearance zone; None if there is none."""
+    doors = draft.shell.door_clearance_zones()
+    steps = round(MAX_SHIFT / CLEAR_STEP)
+    for k in sorted(range(-steps, steps + 1), key=lambda k: (abs(k), k)):
+        u = u_start + k * CLEAR_STEP
+        if u < GAP or u + _width(entry) > wall.length - GAP or not _clear(draft, wall, entry, u):
+            continue
+        pose = against_wall(wall, entry, u, GAP)
+        fp = footprint(entry, pose.x, pose.y, pose.yaw)
+        if not any(fp.intersects(z) and fp.intersection(z).area > OVERLAP_AREA for z in doors):
+            return u
+    return None
 
 
 def _add_against(draft: SceneDraft, wall: Wall, entry: AssetEntry, u_start: float, z: float = 0.0,
@@ -62,6 +96,10 @@ def _tile_counter(draft: SceneDraft, wall: Wall, a: float, b: float) -> list[Sce
         fits = [e for e in straight if _width(e) <= b - u + 1e-6]
         if not fits:
             break
+        fits = [e for e in fits if _clear(draft, wall, e, u)]
+        if not fits:
+            u += CLEAR_STEP
+            continue
         widest = max(_width(e) for e in fits)
         choice = [e for e in fits if abs(_width(e) - widest) < 1e-6]
         entry = choice[int(draft.rng.integers(len(choice)))]
@@ -185,10 +223,21 @@ def place_fixtures(draft: SceneDraft) -> None:
         if slot.counter:
             continue
         wall = walls[slot.wall]
-        entry = draft.pick_variant(slot.type, lambda e, w=slot.width: _width(e) <= w + 0.05)
-        if entry is None:
+        def start(e: AssetEntry, s: FixtureSlot = slot) -> float:
+            return s.offset + max(0.0, (s.width - _width(e)) / 2)
+
+        def fits(e: AssetEntry, w: float = slot.width) -> bool:
+            return _width(e) <= w + 0.05
+
+        entry = draft.pick_variant(slot.type, lambda e, wall=wall: fits(e) and _clear(draft, wall, e, start(e)))
+        u = None if entry is None else start(entry)
+        if entry is None:  # something already there runs into the slot: the fixture moves along its wall
+            entry = draft.pick_variant(slot.type, lambda e, wall=wall: fits(e) and
+                                       _nearest_free(draft, wall, e, start(e)) is not None)
+            u = None if entry is None else _nearest_free(draft, wall, entry, start(entry))
+        if entry is None or u is None:
             continue
-        host = _add_against(draft, wall, entry, slot.offset + max(0.0, (slot.width - _width(entry)) / 2))
+        host = _add_against(draft, wall, entry, u)
         _add_anchors(draft, host, entry)
 
 

@@ -42,13 +42,15 @@ class LayoutReport:
     reachable_points: int = 0
     unreachable: list[str] = field(default_factory=list)
     required: list[str] = field(default_factory=list)
+    stopped_after: str | None = None
+    """The request after which a sample that could no longer pass was stopped (None: it ran to the end)."""
 
     @property
     def ok(self) -> bool:
         hard_failed = [r for r in self.relations if r.explicit and r.hard and not r.met]
         missing = [n for n in self.unplaced if n in self.required]
         return not hard_failed and not missing and not self.overlaps and not self.unreachable and \
-            self.reachable_points > 0
+            self.reachable_points > 0 and self.stopped_after is None
 
     def failed_relations(self) -> list[str]:
         return [f"{r.subject} {r.relation} {r.anchor or ''}".strip() + f" ({r.source})"
@@ -121,40 +123,57 @@ def _largest_component(pts: np.ndarray) -> np.ndarray:
     return of_point == of_point[int(np.argmax(best))]
 
 
-def check_layout(draft: SceneDraft, requests, ctx, unplaced: list[str], attempt: int) -> LayoutReport:
-    """Relations, overlaps and reachability of a finished draft."""
-    report = LayoutReport(attempt, unplaced=list(unplaced), required=[r.name for r in requests if r.explicit])
-    by_name = {p.obj.name: p for p in draft.placed if p.obj.name}
+def check_layout(draft: SceneDraft, requests, ctx, unplaced: list[str], attempt: int,
+                 stopped_after: str | None = None) -> LayoutReport:
+    """Relations, overlaps and reachability of a finished draft; of a sample stopped early (`stopped_after`
+    its last request), the relations of `requests` placed so far only: it is rejected whatever the rest says."""
+    report = LayoutReport(attempt, unplaced=list(unplaced), required=[r.name for r in requests if r.explicit],
+                          stopped_after=stopped_after)
+    by_name = named(draft)
     for req in requests:
-        placed = by_name.get(req.name)
-        if placed is None and not req.explicit:
-            continue  # a default piece left out has no relations to meet; a CDF object left out fails them
-        for rel in req.rels:
-            if placed is None:
-                met, cost = False, float("inf")
-            elif rel.relation in ("on", "in"):
-                anchor = by_name.get(rel.anchor or "")
-                met = anchor is not None and placed.obj.parent in {p.obj.id for p in draft.referents(anchor.obj.id)}
-                cost = 0.0
-            elif rel.relation in ("above", "under"):
-                anchor = by_name.get(rel.anchor or "")
-                met = anchor is not None and abs(_lateral(placed, anchor)) < 0.3
-                cost = 0.0
-            else:
-                if rel.anchor and ctx.anchor(rel.anchor) is None and rel.anchor not in ("wall", "window", "door"):
-                    met, cost = False, float("inf")
-                else:
-                    cost = ctx.cost_at(rel.relation, placed.entry, rel.anchor, placed.obj.position[0],
-                                       placed.obj.position[1], placed.obj.yaw)
-                    met = cost <= TOLERANCE.get(rel.relation, 0.3) + 1e-6
-            report.relations.append(RelationCheck(req.name, rel.relation, rel.anchor, rel.source, rel.hard,
-                                                  rel.explicit, bool(met), round(float(cost), 4)))
+        report.relations.extend(relation_checks(req, by_name, draft, ctx))
+    if stopped_after is not None:
+        return report
     report.overlaps = solid_overlaps(draft)
     grid = reachable_grid(draft)
     report.reachable_points = len(grid)
     if len(grid):
         report.unreachable = _out_of_reach([p for p in draft.placed if p.obj.layer != "decoration"], grid)
     return report
+
+
+def named(draft: SceneDraft) -> dict:
+    """The draft's placed things by their CDF or default name."""
+    return {p.obj.name: p for p in draft.placed if p.obj.name}
+
+
+def relation_checks(req, by_name: dict, draft: SceneDraft, ctx) -> list[RelationCheck]:
+    """Whether each relation of one request holds in the draft (none for a default piece left out: it has
+    no relations to meet; a CDF object left out fails all of its own)."""
+    placed = by_name.get(req.name)
+    if placed is None and not req.explicit:
+        return []
+    out = []
+    for rel in req.rels:
+        if placed is None:
+            met, cost = False, float("inf")
+        elif rel.relation in ("on", "in"):
+            anchor = by_name.get(rel.anchor or "")
+            met = anchor is not None and placed.obj.parent in {p.obj.id for p in draft.referents(anchor.obj.id)}
+            cost = 0.0
+        elif rel.relation in ("above", "under"):
+            anchor = by_name.get(rel.anchor or "")
+            met = anchor is not None and abs(_lateral(placed, anchor)) < 0.3
+            cost = 0.0
+        elif rel.anchor and ctx.anchor(rel.anchor) is None and rel.anchor not in ("wall", "window", "door"):
+            met, cost = False, float("inf")
+        else:
+            cost = ctx.cost_at(rel.relation, placed.entry, rel.anchor, placed.obj.position[0],
+                               placed.obj.position[1], placed.obj.yaw)
+            met = cost <= TOLERANCE.get(rel.relation, 0.3) + 1e-6
+        out.append(RelationCheck(req.name, rel.relation, rel.anchor, rel.source, rel.hard, rel.explicit,
+                                 bool(met), round(float(cost), 4)))
+    return out
 
 
 def _out_of_reach(placed: list, grid: np.ndarray) -> list[str]:

@@ -192,3 +192,80 @@ def test_a_piece_something_hangs_above_keeps_windows_from_behind_it():
     assert inside.any() and (~inside).any()
     assert np.allclose((with_painting - without)[inside], WINDOW_BEHIND_COST)
     assert np.allclose((with_painting - without)[~inside], 0.0)
+
+
+def test_a_sample_stops_at_a_failure_no_backtrack_can_undo():
+    from luminous_sim.assets.catalog import default_catalog
+    from luminous_sim.cssg.generate import sample_layout
+
+    doc = cdf.loads(
+        "cdf_version: 2\nname: too_many_beds\nscene:\n  room_type: Bathroom\n"
+        "  room: {max_area: 6}\n  objects:\n    - {name: bed, type: Bed, count: 4}\n",
+        source="beds.yaml",
+    )
+    rng = np.random.default_rng(0)
+    catalog = default_catalog()
+    draft, report = sample_layout(doc, choose_room(doc, rng, catalog), rng, catalog, 0)
+    assert not report.ok and report.stopped_after and report.stopped_after.startswith("bed")
+    assert report.stopped_after in report.unplaced
+    assert not [p for p in draft.placed if p.obj.layer == "object"], "nothing after the failure is placed"
+
+
+def test_a_failure_a_later_backtrack_can_undo_does_not_stop_the_sample():
+    from luminous_sim.cssg.generate import _undo_floors
+    from luminous_sim.cssg.requests import requests_from_cdf
+
+    requests = requests_from_cdf(_load("kitchen_coffee_mug"), "Kitchen", np.random.default_rng(0))
+    floors = _undo_floors(requests)
+    table = next(i for i, r in enumerate(requests) if r.name == "table")
+    assert floors[table] <= table, "a stool that must face the table can still send the sample back to it"
+    assert floors[-1] == float("inf")
+
+
+def test_stopping_doomed_samples_early_never_changes_the_scene(monkeypatch):
+    import luminous_sim.cssg.generate as gen
+
+    doc = _load("bathroom_soap")
+    stopped = []
+    real = gen.check_layout
+
+    def spy(*args, **kwargs):
+        report = real(*args, **kwargs)
+        stopped.append(report.stopped_after)
+        return report
+
+    monkeypatch.setattr(gen, "check_layout", spy)
+    early = [generate(doc, seed=s).scene.to_json() for s in range(4)]
+    assert any(stopped), "some bathroom sample fails for good before its end"
+    monkeypatch.setattr(gen, "_fails_for_good", lambda *a: False)
+    assert [generate(doc, seed=s).scene.to_json() for s in range(4)] == early
+
+
+def test_every_converted_alfred_room_gets_its_fixtures_without_overlaps():
+    """AI2-THOR kitchens whose counter runs stop short of a corner, or whose stove counter runs into the
+    fridge's slot, once got counters and fridges that overlapped (so every sample failed)."""
+    from luminous_sim.assets.catalog import default_catalog
+    from luminous_sim.cssg.draft import SceneDraft
+    from luminous_sim.cssg.structure import place_fixtures
+    from luminous_sim.cssg.validate import solid_overlaps
+    from luminous_sim.rooms.library import load_room, room_names
+
+    catalog = default_catalog()
+    rooms = [load_room(n) for n in room_names(include_procedural=False) if n.startswith("FloorPlan")]
+    assert len(rooms) == 120
+    for shell in rooms:
+        if not shell.fixtures.slots:
+            continue
+        draft = SceneDraft(shell, catalog, np.random.default_rng(0))
+        place_fixtures(draft)
+        assert not solid_overlaps(draft), (shell.name, solid_overlaps(draft))
+        types = {p.obj.type for p in draft.placed}
+        assert {s.type for s in shell.fixtures.slots if catalog.of_type(s.type)} <= types, shell.name
+
+
+@pytest.mark.parametrize("room", ["FloorPlan2", "FloorPlan24", "FloorPlan29"])
+def test_cssg_fills_converted_kitchens_whose_fixtures_once_overlapped(room):
+    from luminous_sim.rooms.library import load_room
+
+    g = generate(empty_cdf("Kitchen"), seed=0, room=load_room(room))
+    assert g.report.ok and {"Fridge", "CounterTop", "Sink"} <= {o.type for o in g.scene.objects}
