@@ -2,13 +2,16 @@
 
     python benchmarks/bench_cssg.py --n 100          # the issue's figures (slow: physics on every scene)
     python benchmarks/bench_cssg.py --n 10 --no-physics
+    python benchmarks/bench_cssg.py --n 60 --alfred-rooms        # in the 30 AI2-THOR rooms of each type
+    python benchmarks/bench_cssg.py --n 60 --alfred-rooms --empty-cdf   # defaults and implicit rules only
 
 Per room type it uses the example CDF of that room type (explicit relations) and reports, for CSSG
 and the baseline: explicit relations met, implicit rules met, scenes with interpenetrations > 1 cm,
 objects that moved (> 1 cm) or fell while settling, required objects reachable by the agent, objects to
 interact with that a sight line from where the agent stands meets (world/sightlines.py); then the
 median time of one layout sample, of one valid scene (resamples included), and of a valid scene + PyBullet
-build + settle.
+build + settle. With --alfred-rooms the rooms are the shells converted from AI2-THOR's FloorPlans (seed i
+uses room i modulo 30) instead of procedural ones; with --empty-cdf the CDF asks only for the room type.
 """
 
 from __future__ import annotations
@@ -49,10 +52,22 @@ def _rate(hits: int, total: int) -> str:
     return f"{100 * hits / total:5.1f}% ({hits}/{total})" if total else "  n/a"
 
 
-def run(room_type: str, n: int, physics: bool, grid_dir: Path | None) -> None:
+def _alfred_rooms(room_type: str) -> list:
+    from luminous_sim.rooms.library import load_room, room_names
+
+    rooms = [load_room(n) for n in room_names(include_procedural=False) if n.startswith("FloorPlan")]
+    return [r for r in rooms if r.room_type == room_type]
+
+
+def run(room_type: str, n: int, physics: bool, grid_dir: Path | None, alfred: bool = False,
+        empty: bool = False) -> None:
+    from luminous_sim.cssg.baseline import empty_cdf
     from luminous_sim.world.physics_check import check_physics
 
-    doc = cdf.load(Path(__file__).resolve().parents[1] / "cdf" / "examples" / f"{EXAMPLES[room_type]}.yaml")
+    source = "empty CDF" if empty else f"{EXAMPLES[room_type]}.yaml"
+    doc = empty_cdf(room_type) if empty else \
+        cdf.load(Path(__file__).resolve().parents[1] / "cdf" / "examples" / f"{EXAMPLES[room_type]}.yaml")
+    rooms = _alfred_rooms(room_type) if alfred else []
     catalog = default_catalog()
     rows = {}
     tops = []
@@ -65,7 +80,7 @@ def run(room_type: str, n: int, physics: bool, grid_dir: Path | None) -> None:
             t0 = time.perf_counter()
             if method == "cssg":
                 try:
-                    g = generate(doc, seed=seed, catalog=catalog)
+                    g = generate(doc, seed=seed, catalog=catalog, room=rooms[seed % len(rooms)] if rooms else None)
                 except LuminousError:  # no valid layout (or no room) for this seed
                     infeasible += 1
                     continue
@@ -73,7 +88,8 @@ def run(room_type: str, n: int, physics: bool, grid_dir: Path | None) -> None:
                 sample_times.append(scene_times[-1] / (g.report.attempt + 1))
             else:
                 rng = np.random.default_rng(np.random.SeedSequence([seed, 0]))
-                draft, report = sample_uniform(doc, choose_room(doc, rng, catalog), rng, catalog)
+                shell = rooms[seed % len(rooms)] if rooms else choose_room(doc, rng, catalog)
+                draft, report = sample_uniform(doc, shell, rng, catalog)
                 g = Generated(draft.to_scene("uniform", seed), report)
                 sample_times.append(time.perf_counter() - t0)
             rels = g.report.relations
@@ -100,7 +116,8 @@ def run(room_type: str, n: int, physics: bool, grid_dir: Path | None) -> None:
                 tops.append(g)
         rows[method] = (exp, exp_total, imp, imp_total, req_ok, req_total, pen_scenes, moved, fell, infeasible,
                         sample_times, scene_times, full_times, soft, soft_total, targets - unseen, targets)
-    print(f"\n== {room_type} ({EXAMPLES[room_type]}.yaml, {n} seeds) ==")
+    where = f", {len(rooms)} AI2-THOR rooms" if rooms else ""
+    print(f"\n== {room_type} ({source}, {n} seeds{where}) ==")
     print(f"{'':34}{'CSSG':>22}{'baseline':>22}")
     c, b = rows["cssg"], rows["baseline"]
     print(f"{'explicit hard relations met':34}{_rate(c[0], c[1]):>22}{_rate(b[0], b[1]):>22}")
@@ -153,9 +170,12 @@ def main() -> None:
     ap.add_argument("--rooms", nargs="*", default=list(EXAMPLES))
     ap.add_argument("--no-physics", action="store_true")
     ap.add_argument("--grid-dir", type=Path, default=Path("out/bench"))
+    ap.add_argument("--alfred-rooms", action="store_true", help="rooms converted from AI2-THOR's FloorPlans")
+    ap.add_argument("--empty-cdf", action="store_true", help="a CDF that asks only for the room type")
     args = ap.parse_args()
     for room in args.rooms:
-        run(room, args.n, not args.no_physics, args.grid_dir)
+        run(room, args.n, not args.no_physics, None if args.alfred_rooms or args.empty_cdf else args.grid_dir,
+            args.alfred_rooms, args.empty_cdf)
 
 
 if __name__ == "__main__":

@@ -2,8 +2,8 @@
 
 Counter runs are tiled with CounterTop segments; the sink slot gets a Sink with its SinkBasin and
 Faucet (the Sink's anchors), the stove slot four StoveBurners on the counter and StoveKnobs on its
-front, the fridge slot a Fridge; bathrooms get their Toilet, Sink and Bathtub (with its basin), and a
-counter beside the sink where the vanity is long enough. A sink or cooktop counter wider than its
+front, the fridge slot a Fridge; bathrooms get their Toilet, Sink and Bathtub (with its basin) or shower
+stall (ShowerHead, ShowerDoor, ShowerGlass), and a counter beside the sink where the vanity is long enough. A sink or cooktop counter wider than its
 slot keeps within what is left of its run, so that it does not run into the next fixture.
 """
 
@@ -208,6 +208,43 @@ def _fill_run(draft: SceneDraft, wall: Wall, run: CounterRun, slots: list[Fixtur
     _tile_counter(draft, wall, u, end)
 
 
+SHOWER_HEAD_TOP = 2.0
+"""Height (m) of the top of a shower head's wall fitting."""
+WALL_END = 0.05
+"""A stall side this close (m) to its wall's end stands against the next wall and takes no glass."""
+FLAT_PANEL = 0.2
+"""Depth (m) under which a glass screen is one flat panel (not L-shaped)."""
+"""A stall side this close (m) to its wall's end stands against the next wall and takes no glass."""
+
+
+def _shower(draft: SceneDraft, wall: Wall, slot: FixtureSlot) -> None:
+    """A shower stall in its slot: a head on the back wall, a door across the front, and a glass side
+    panel on each side not against a wall (just outside the slot, where that floor is free)."""
+    door = draft.pick_variant("ShowerDoor", lambda e: _width(e) <= slot.width + 1e-6)
+    head = draft.pick_variant("ShowerHead")
+    glass = draft.pick_variant("ShowerGlass", lambda e: e.dims[1] < FLAT_PANEL and e.dims[2] > SHOWER_HEAD_TOP - 0.2
+                               and _width(e) <= slot.depth + 1e-6)
+    mid = slot.offset + slot.width / 2
+    if head is not None:
+        _add_against(draft, wall, head, mid - _width(head) / 2, z=SHOWER_HEAD_TOP - head.dims[2])
+    if door is not None:
+        _add_against(draft, wall, door, mid - _width(door) / 2, v_extra=slot.depth - door.dims[1] - GAP)
+    if glass is None:
+        return
+    half_t = glass.dims[1] / 2
+    for u, open_side in ((slot.offset - half_t, slot.offset > WALL_END),
+                         (slot.offset + slot.width + half_t, slot.offset + slot.width < wall.length - WALL_END)):
+        yaw = wall.yaw + math.pi / 2  # the panel's width runs from the wall into the room
+        x, y = wall.point(u, GAP + _width(glass) / 2)
+        cx = (glass.bbox_min[0] + glass.bbox_max[0]) / 2
+        cy = (glass.bbox_min[1] + glass.bbox_max[1]) / 2
+        ox, oy = local_to_world(0.0, 0.0, yaw, (cx, cy))
+        fp = footprint(glass, x - ox, y - oy, yaw)
+        if open_side and not any(p.obj.parent is None and fp.intersects(p.footprint)
+                                 and fp.intersection(p.footprint).area > OVERLAP_AREA for p in draft.placed):
+            draft.add(glass, x - ox, y - oy, -glass.bbox_min[2], yaw, "fixture", True)
+
+
 def place_fixtures(draft: SceneDraft) -> None:
     """Add every fixture of the shell's fixture plan to the draft."""
     shell = draft.shell
@@ -223,6 +260,9 @@ def place_fixtures(draft: SceneDraft) -> None:
         if slot.counter:
             continue
         wall = walls[slot.wall]
+        if slot.type == "Shower":
+            _shower(draft, wall, slot)
+            continue
         def start(e: AssetEntry, s: FixtureSlot = slot) -> float:
             return s.offset + max(0.0, (s.width - _width(e)) / 2)
 

@@ -242,7 +242,7 @@ def test_stopping_doomed_samples_early_never_changes_the_scene(monkeypatch):
 
 
 def test_every_converted_alfred_room_gets_its_fixtures_without_overlaps():
-    """AI2-THOR kitchens whose counter runs stop short of a corner, or whose stove counter runs into the
+    """Every slot is filled (a shower slot with a stall). AI2-THOR kitchens whose counter runs stop short of a corner, or whose stove counter runs into the
     fridge's slot, once got counters and fridges that overlapped (so every sample failed)."""
     from luminous_sim.assets.catalog import default_catalog
     from luminous_sim.cssg.draft import SceneDraft
@@ -253,6 +253,7 @@ def test_every_converted_alfred_room_gets_its_fixtures_without_overlaps():
     catalog = default_catalog()
     rooms = [load_room(n) for n in room_names(include_procedural=False) if n.startswith("FloorPlan")]
     assert len(rooms) == 120
+    showers = 0
     for shell in rooms:
         if not shell.fixtures.slots:
             continue
@@ -261,6 +262,10 @@ def test_every_converted_alfred_room_gets_its_fixtures_without_overlaps():
         assert not solid_overlaps(draft), (shell.name, solid_overlaps(draft))
         types = {p.obj.type for p in draft.placed}
         assert {s.type for s in shell.fixtures.slots if catalog.of_type(s.type)} <= types, shell.name
+        if any(s.type == "Shower" for s in shell.fixtures.slots):  # a stall: head, door and a glass side
+            assert {"ShowerHead", "ShowerDoor", "ShowerGlass"} <= types, shell.name
+            showers += 1
+    assert showers == 9
 
 
 @pytest.mark.parametrize("room", ["FloorPlan2", "FloorPlan24", "FloorPlan29"])
