@@ -140,7 +140,7 @@ def run(room_type: str, n: int, physics: bool, grid_dir: Path | None, alfred: bo
 
 
 def _grid(generated: list, out: Path) -> None:
-    from PIL import Image
+    from PIL import Image, ImageOps
 
     from luminous_sim.world.scene_builder import build_scene
     from luminous_sim.world.views import top_down
@@ -149,11 +149,10 @@ def _grid(generated: list, out: Path) -> None:
     for g in generated:
         built = build_scene(g.scene, settle_steps=0)
         try:
-            img = top_down(built, px_per_m=50, labels=False)
+            img = top_down(built, px_per_m=80, labels=False)
         finally:
             built.client.disconnect()
-        img.thumbnail((360, 360))
-        tiles.append(img)
+        tiles.append(ImageOps.pad(img, (360, 360), color="white"))  # scaled to fill its tile
     cols = 3
     rows = (len(tiles) + cols - 1) // cols
     sheet = Image.new("RGB", (cols * 360, rows * 360), "white")
