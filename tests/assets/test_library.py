@@ -157,6 +157,37 @@ def test_support_surfaces_are_flat_where_declared(entry, region):
         client.disconnect()
 
 
+RIDGE = 0.006
+"""Height (m) above a support surface at which a ridge inside its region tilts what rests on it."""
+
+
+@pytest.mark.parametrize("entry,region", [(e, r) for e, r in SURFACES if e.type != "Plate"],
+                         ids=[f"{e.id}:{r['name']}" for e, r in SURFACES if e.type != "Plate"])
+def test_nothing_stands_proud_of_a_support_surface_up_to_its_edges(entry, region):
+    """Out to the region's edges, nothing within 3 cm above the surface (a bed's turned-down sheet once
+    stood 13 mm proud at the head end, and a laptop put there tilted and slid as it settled). Plates are
+    left out: their region spans the rising rim on purpose, so that an apple fits on a side plate."""
+    from luminous_sim.world.asset_loader import load_asset
+    from luminous_sim.world.client import new_client
+
+    client = new_client()
+    try:
+        load_asset(client, entry, fixed=True)
+        client.performCollisionDetection()
+        cx, cy, cz = region["center"]
+        sx, sy, _ = region["size"]
+        proud = []
+        for fx in (-0.47, -0.25, 0.0, 0.25, 0.47):
+            for fy in (-0.47, -0.25, 0.0, 0.25, 0.47):
+                x, y = cx + fx * sx, cy + fy * sy
+                hit = client.rayTest([x, y, cz + 0.03], [x, y, cz - 0.5])[0]
+                if hit[0] >= 0 and hit[3][2] - cz > RIDGE:
+                    proud.append((fx, fy, round(hit[3][2] - cz, 3)))
+        assert not proud, f"{entry.id} {region['name']}: ridges above z={cz} at {proud}"
+    finally:
+        client.disconnect()
+
+
 STATEFUL = sorted({(e.type, s) for e in ENTRIES for s in ("on", "dirty")
                    if any(v["state"] == s for v in e.visuals)})
 

@@ -666,8 +666,9 @@ def bed(v: int, rng: np.random.Generator) -> AssetSpec:
     duvet_top = top_m + 0.045
     parts.append(Part(soft_box_at((-mw / 2 - 0.03, duvet0, top_m - drop), (mw / 2 + 0.03, duvet1, duvet_top), 0.025),
                       "bed_duvet", convex=True))
+    fold1 = duvet0 + 0.16  # the turned-down sheet stands 12 mm proud of the duvet up to here
     parts.append(Part(soft_box_at((-mw / 2 - 0.032, duvet0 - 0.02, top_m - drop + 0.02),
-                                  (mw / 2 + 0.032, duvet0 + 0.16, duvet_top + 0.012), 0.02), "bed_sheet", convex=True))
+                                  (mw / 2 + 0.032, fold1, duvet_top + 0.012), 0.02), "bed_sheet", convex=True))
     n_pil = 1 if mw < 1.2 else 2
     pw = min(0.7, (mw - 0.12) / n_pil)
     for k in range(n_pil):
@@ -682,6 +683,7 @@ def bed(v: int, rng: np.random.Generator) -> AssetSpec:
         parts.append(Part(g.cylinder(r, 0.004, (x * mw, duvet0 + y, duvet_top + 0.001), sections=12), "dirt",
                           state="dirty"))
     mass = {"single": 50.0, "double": 65.0, "queen": 72.0, "king": 80.0}[size]
-    regions = [surface("top", mw, duvet1 - duvet0, duvet_top, 0.6, cy=(duvet0 + duvet1) / 2, margin=0.06)]
+    # the flat duvet only: an object half on the turned-down sheet would tilt and slide as it settles
+    regions = [surface("top", mw, duvet1 - fold1, duvet_top, 0.6, cy=(fold1 + duvet1) / 2, margin=0.06)]
     desc = f"{size} bed with a {head} headboard" + (f" and a {foot} footboard" if foot else "")
     return AssetSpec("Bed", v, "furniture", [Link("base", parts, mass)], regions=regions, description=desc)
