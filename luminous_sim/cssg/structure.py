@@ -36,6 +36,13 @@ def _clamped(wall: Wall, entry: AssetEntry, u_start: float) -> float:
     return min(max(u_start, GAP), wall.length - _width(entry) - GAP)
 
 
+def _inside(draft: SceneDraft, wall: Wall, entry: AssetEntry, u_start: float) -> bool:
+    """Whether the asset against `wall` from `u_start` stays on the floor, clear of every wall (a converted
+    room's wall may jut out within a fixture's depth)."""
+    pose = against_wall(wall, entry, _clamped(wall, entry, u_start), GAP)
+    return draft.shell.polygon().buffer(0.005).contains(footprint(entry, pose.x, pose.y, pose.yaw))
+
+
 def _clear(draft: SceneDraft, wall: Wall, entry: AssetEntry, u_start: float) -> bool:
     """Whether the asset against `wall` from `u_start` keeps clear of every fixture placed so far (a room
     converted from AI2-THOR may have a run that stops short of a corner, or a fridge, within our deeper
@@ -57,7 +64,8 @@ def _nearest_free(draft: SceneDraft, wall: Wall, entry: AssetEntry, u_start: flo
     steps = round(MAX_SHIFT / CLEAR_STEP)
     for k in sorted(range(-steps, steps + 1), key=lambda k: (abs(k), k)):
         u = u_start + k * CLEAR_STEP
-        if u < GAP or u + _width(entry) > wall.length - GAP or not _clear(draft, wall, entry, u):
+        if u < GAP or u + _width(entry) > wall.length - GAP or not _clear(draft, wall, entry, u) or \
+                not _inside(draft, wall, entry, u):
             continue
         pose = against_wall(wall, entry, u, GAP)
         fp = footprint(entry, pose.x, pose.y, pose.yaw)
@@ -269,7 +277,8 @@ def place_fixtures(draft: SceneDraft) -> None:
         def fits(e: AssetEntry, w: float = slot.width) -> bool:
             return _width(e) <= w + 0.05
 
-        entry = draft.pick_variant(slot.type, lambda e, wall=wall: fits(e) and _clear(draft, wall, e, start(e)))
+        entry = draft.pick_variant(slot.type, lambda e, wall=wall: fits(e) and _clear(draft, wall, e, start(e))
+                                   and _inside(draft, wall, e, start(e)))
         u = None if entry is None else start(entry)
         if entry is None:  # something already there runs into the slot: the fixture moves along its wall
             entry = draft.pick_variant(slot.type, lambda e, wall=wall: fits(e) and

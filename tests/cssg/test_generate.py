@@ -274,3 +274,12 @@ def test_cssg_fills_converted_kitchens_whose_fixtures_once_overlapped(room):
 
     g = generate(empty_cdf("Kitchen"), seed=0, room=load_room(room))
     assert g.report.ok and {"Fridge", "CounterTop", "Sink"} <= {o.type for o in g.scene.objects}
+
+
+def test_a_converted_bathrooms_tub_stays_clear_of_its_walls():
+    """FloorPlan405's tub slot is narrower than some tubs: one of those once went 1-3 cm into a wall."""
+    from luminous_sim.rooms.library import load_room
+    from luminous_sim.world.physics_check import check_physics
+
+    g = generate(empty_cdf("Bathroom"), seed=4, room=load_room("FloorPlan405"))
+    assert not check_physics(g.scene).interpenetrations
