@@ -3,8 +3,9 @@
 Counter runs are tiled with CounterTop segments; the sink slot gets a Sink with its SinkBasin and
 Faucet (the Sink's anchors), the stove slot four StoveBurners on the counter and StoveKnobs on its
 front, the fridge slot a Fridge; bathrooms get their Toilet, Sink and Bathtub (with its basin) or shower
-stall (ShowerHead, ShowerDoor, ShowerGlass), and a counter beside the sink where the vanity is long enough. A sink or cooktop counter wider than its
-slot keeps within what is left of its run, so that it does not run into the next fixture.
+stall (ShowerHead, ShowerDoor, ShowerGlass), and a counter beside the sink where the vanity is long
+enough. A sink or cooktop counter wider than its slot keeps within what is left of its run, so that it
+does not run into the next fixture.
 """
 
 from __future__ import annotations
@@ -36,21 +37,30 @@ def _clamped(wall: Wall, entry: AssetEntry, u_start: float) -> float:
     return min(max(u_start, GAP), wall.length - _width(entry) - GAP)
 
 
-def _inside(draft: SceneDraft, wall: Wall, entry: AssetEntry, u_start: float) -> bool:
-    """Whether the asset against `wall` from `u_start` stays on the floor, clear of every wall (a converted
-    room's wall may jut out within a fixture's depth)."""
+def _footprint_against(wall: Wall, entry: AssetEntry, u_start: float):
+    """The footprint of the asset with its back against `wall` from `u_start` (as `_add_against` puts it)."""
     pose = against_wall(wall, entry, _clamped(wall, entry, u_start), GAP)
-    return draft.shell.polygon().buffer(0.005).contains(footprint(entry, pose.x, pose.y, pose.yaw))
+    return footprint(entry, pose.x, pose.y, pose.yaw)
+
+
+def _runs_into(fp, others) -> bool:
+    """Whether footprint `fp` overlaps any of the polygons `others` by more than OVERLAP_AREA."""
+    return any(fp.intersects(o) and fp.intersection(o).area > OVERLAP_AREA for o in others)
+
+
+def _free(draft: SceneDraft, fp, keep_clear=()) -> bool:
+    """Whether a fixture footprint stays on the floor (a converted room's wall may jut out within a
+    fixture's depth) and clear of the free-standing fixtures placed so far and of `keep_clear`."""
+    return draft.shell.polygon().buffer(0.005).contains(fp) and not _runs_into(
+        fp, [p.footprint for p in draft.placed if p.obj.parent is None] + list(keep_clear))
 
 
 def _clear(draft: SceneDraft, wall: Wall, entry: AssetEntry, u_start: float) -> bool:
-    """Whether the asset against `wall` from `u_start` keeps clear of every fixture placed so far (a room
-    converted from AI2-THOR may have a run that stops short of a corner, or a fridge, within our deeper
+    """Whether a counter segment against `wall` from `u_start` keeps clear of every fixture placed so far (a
+    room converted from AI2-THOR may have a run that stops short of a corner, or a fridge, within our deeper
     counters' reach)."""
-    pose = against_wall(wall, entry, _clamped(wall, entry, u_start), GAP)
-    fp = footprint(entry, pose.x, pose.y, pose.yaw)
-    return not any(p.obj.parent is None and fp.intersects(p.footprint) and fp.intersection(p.footprint).area > OVERLAP_AREA
-                   for p in draft.placed)
+    fp = _footprint_against(wall, entry, u_start)
+    return not _runs_into(fp, [p.footprint for p in draft.placed if p.obj.parent is None])
 
 
 MAX_SHIFT = 0.5
@@ -58,18 +68,15 @@ MAX_SHIFT = 0.5
 
 
 def _nearest_free(draft: SceneDraft, wall: Wall, entry: AssetEntry, u_start: float) -> float | None:
-    """The start nearest `u_start` (within MAX_SHIFT, along the wall) where the asset keeps clear of the
-    fixtures placed so far and of every door's clearance zone; None if there is none."""
+    """`u_start` if the asset is `_free` there, else the nearest start within MAX_SHIFT along the wall where it
+    is `_free` and off every door's clearance zone; None if there is none."""
+    if _free(draft, _footprint_against(wall, entry, u_start)):
+        return u_start
     doors = draft.shell.door_clearance_zones()
     steps = round(MAX_SHIFT / CLEAR_STEP)
     for k in sorted(range(-steps, steps + 1), key=lambda k: (abs(k), k)):
         u = u_start + k * CLEAR_STEP
-        if u < GAP or u + _width(entry) > wall.length - GAP or not _clear(draft, wall, entry, u) or \
-                not _inside(draft, wall, entry, u):
-            continue
-        pose = against_wall(wall, entry, u, GAP)
-        fp = footprint(entry, pose.x, pose.y, pose.yaw)
-        if not any(fp.intersects(z) and fp.intersection(z).area > OVERLAP_AREA for z in doors):
+        if GAP <= u <= wall.length - _width(entry) - GAP and _free(draft, _footprint_against(wall, entry, u), doors):
             return u
     return None
 
@@ -218,11 +225,8 @@ def _fill_run(draft: SceneDraft, wall: Wall, run: CounterRun, slots: list[Fixtur
 
 SHOWER_HEAD_TOP = 2.0
 """Height (m) of the top of a shower head's wall fitting."""
-WALL_END = 0.05
-"""A stall side this close (m) to its wall's end stands against the next wall and takes no glass."""
 FLAT_PANEL = 0.2
 """Depth (m) under which a glass screen is one flat panel (not L-shaped)."""
-"""A stall side this close (m) to its wall's end stands against the next wall and takes no glass."""
 
 
 def _shower(draft: SceneDraft, wall: Wall, slot: FixtureSlot) -> None:
@@ -239,18 +243,15 @@ def _shower(draft: SceneDraft, wall: Wall, slot: FixtureSlot) -> None:
         _add_against(draft, wall, door, mid - _width(door) / 2, v_extra=slot.depth - door.dims[1] - GAP)
     if glass is None:
         return
+    yaw = wall.yaw + math.pi / 2  # the panel's width runs from the wall into the room
+    centre = local_to_world(0.0, 0.0, yaw, ((glass.bbox_min[0] + glass.bbox_max[0]) / 2,
+                                            (glass.bbox_min[1] + glass.bbox_max[1]) / 2))
     half_t = glass.dims[1] / 2
-    for u, open_side in ((slot.offset - half_t, slot.offset > WALL_END),
-                         (slot.offset + slot.width + half_t, slot.offset + slot.width < wall.length - WALL_END)):
-        yaw = wall.yaw + math.pi / 2  # the panel's width runs from the wall into the room
+    for u in (slot.offset - half_t, slot.offset + slot.width + half_t):
         x, y = wall.point(u, GAP + _width(glass) / 2)
-        cx = (glass.bbox_min[0] + glass.bbox_max[0]) / 2
-        cy = (glass.bbox_min[1] + glass.bbox_max[1]) / 2
-        ox, oy = local_to_world(0.0, 0.0, yaw, (cx, cy))
-        fp = footprint(glass, x - ox, y - oy, yaw)
-        if open_side and not any(p.obj.parent is None and fp.intersects(p.footprint)
-                                 and fp.intersection(p.footprint).area > OVERLAP_AREA for p in draft.placed):
-            draft.add(glass, x - ox, y - oy, -glass.bbox_min[2], yaw, "fixture", True)
+        x, y = x - centre[0], y - centre[1]
+        if _free(draft, footprint(glass, x, y, yaw)):  # a side against a wall needs no glass
+            draft.add(glass, x, y, -glass.bbox_min[2], yaw, "fixture", True)
 
 
 def place_fixtures(draft: SceneDraft) -> None:
@@ -271,21 +272,19 @@ def place_fixtures(draft: SceneDraft) -> None:
         if slot.type == "Shower":
             _shower(draft, wall, slot)
             continue
+
         def start(e: AssetEntry, s: FixtureSlot = slot) -> float:
             return s.offset + max(0.0, (s.width - _width(e)) / 2)
 
-        def fits(e: AssetEntry, w: float = slot.width) -> bool:
-            return _width(e) <= w + 0.05
-
-        entry = draft.pick_variant(slot.type, lambda e, wall=wall: fits(e) and _clear(draft, wall, e, start(e))
-                                   and _inside(draft, wall, e, start(e)))
-        u = None if entry is None else start(entry)
-        if entry is None:  # something already there runs into the slot: the fixture moves along its wall
-            entry = draft.pick_variant(slot.type, lambda e, wall=wall: fits(e) and
-                                       _nearest_free(draft, wall, e, start(e)) is not None)
-            u = None if entry is None else _nearest_free(draft, wall, entry, start(entry))
-        if entry is None or u is None:
+        # each variant's start: its slot, else nearby along the wall (None: nowhere)
+        places = {e.id: _nearest_free(draft, wall, e, start(e))
+                  for e in draft.catalog.of_type(slot.type) if _width(e) <= slot.width + 0.05}
+        # a variant that fits its slot as planned, else one that must move to keep clear
+        entry = draft.pick_variant(slot.type, lambda e, p=places: p.get(e.id) == start(e)) or \
+            draft.pick_variant(slot.type, lambda e, p=places: p.get(e.id) is not None)
+        if entry is None:
             continue
+        u = places[entry.id]
         host = _add_against(draft, wall, entry, u)
         _add_anchors(draft, host, entry)
 
