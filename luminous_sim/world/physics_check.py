@@ -66,7 +66,7 @@ def interpenetrations(built: BuiltScene, tol: float = PENETRATION_TOL) -> list[d
 def unseeable_objects(built: BuiltScene) -> list[str]:
     """Objects to interact with that no sight line from the reachable grid meets (through a closed
     container's door: the container must be seen)."""
-    from luminous_sim.cssg.validate import scene_reachable_grid
+    from luminous_sim.scene import scene_reachable_grid
     from luminous_sim.states.model import ObjectState, WorldState
     from luminous_sim.world.sightlines import unseen
 
