@@ -10,9 +10,8 @@ from shapely.ops import unary_union
 
 from luminous_sim.assets.catalog import AssetEntry, Catalog
 from luminous_sim.rooms.shell import RoomShell
-from luminous_sim.scene import Scene, SceneObject, blocks_agent, footprint, reachable_grid
+from luminous_sim.scene import Layer, Scene, SceneObject, blocks_agent, footprint, reachable_grid
 from luminous_sim.scene.ids import thor_object_id
-from luminous_sim.scene.model import Layer
 
 SEGMENTED_FIXTURES = {"CounterTop"}
 """Fixture types built from several segments that a CDF names as one object."""

@@ -10,7 +10,7 @@ from luminous_sim.scene.agent_grid import (
     reachable_grid,
     scene_reachable_grid,
 )
-from luminous_sim.scene.model import Scene, SceneObject
+from luminous_sim.scene.model import Layer, Scene, SceneObject
 from luminous_sim.scene.pose import (
     WallPose,
     against_wall,
@@ -35,6 +35,7 @@ from luminous_sim.scene.sight import Shade, View, in_sight, shades
 __all__ = [
     "AGENT_HEIGHT",
     "HANGERS",
+    "Layer",
     "REACH",
     "STEP",
     "RegionSpot",

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from luminous_sim.scene.model import Scene
+from luminous_sim.scene import Scene
 from luminous_sim.world.agent import GRID, AgentPose
 
 

@@ -10,7 +10,7 @@ from itertools import combinations
 
 import numpy as np
 
-from luminous_sim.scene.model import Scene
+from luminous_sim.scene import Scene
 from luminous_sim.vocab.agent_body import VISIBILITY_DISTANCE
 from luminous_sim.world.client import body_aabb
 from luminous_sim.world.scene_builder import BuiltScene, build_scene, settle, settle_report
