@@ -28,8 +28,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from luminous_sim import cdf
 from luminous_sim.assets.catalog import default_catalog
-from luminous_sim.cssg.baseline import sample_uniform
-from luminous_sim.cssg.generate import Generated, choose_room, generate
+from luminous_sim.cssg import Generated, choose_room, generate, sample_uniform
 from luminous_sim.errors import LuminousError
 
 EXAMPLES = {
@@ -61,7 +60,7 @@ def _alfred_rooms(room_type: str) -> list:
 
 def run(room_type: str, n: int, physics: bool, grid_dir: Path | None, alfred: bool = False,
         empty: bool = False) -> None:
-    from luminous_sim.cssg.baseline import empty_cdf
+    from luminous_sim.cssg import empty_cdf
     from luminous_sim.world.physics_check import check_physics
 
     source = "empty CDF" if empty else f"{EXAMPLES[room_type]}.yaml"

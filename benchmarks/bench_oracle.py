@@ -36,9 +36,9 @@ ROOMS = {"pick_and_place_simple": ["Kitchen", "LivingRoom", "Bedroom", "Bathroom
 
 def episode(task_type: str, k: int) -> dict:
     """Run task slot `k` of `task_type` in a generated room that supports such a task."""
+    from luminous_sim.data import scene_for_task
     from luminous_sim.episode import run_episode
     from luminous_sim.errors import LuminousError
-    from luminous_sim.tasks.scenes import scene_for_task
 
     room = ROOMS[task_type][k % len(ROOMS[task_type])]
     seed = 1000 + k

@@ -8,8 +8,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
-from luminous_sim.cssg.baseline import empty_cdf
-from luminous_sim.cssg.generate import generate
+from luminous_sim.cssg import empty_cdf, generate
 from luminous_sim.vocab import ROOM_TYPES
 
 

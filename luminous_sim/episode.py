@@ -11,7 +11,7 @@ import numpy as np
 
 from luminous_sim.assets.objio import write_atomic
 from luminous_sim.planning.trajectory import Trajectory
-from luminous_sim.scene.model import Scene
+from luminous_sim.scene import Scene
 from luminous_sim.world.agent import AgentPose
 
 TASK_REDRAWS = 3

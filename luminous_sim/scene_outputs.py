@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 
 from luminous_sim.assets.objio import png_bytes, write_atomic
-from luminous_sim.cssg.generate import Generated
+from luminous_sim.cssg import Generated
 
 
 def write_scene_outputs(generated: Generated, out_dir: Path, physics: bool = True) -> dict:
@@ -39,7 +39,7 @@ def write_scene_outputs(generated: Generated, out_dir: Path, physics: bool = Tru
 
 
 def _reachable(scene) -> np.ndarray:
-    from luminous_sim.cssg.validate import scene_reachable_grid
+    from luminous_sim.scene import scene_reachable_grid
 
     return scene_reachable_grid(scene)
 

@@ -34,8 +34,7 @@ def _digest(chunks) -> str:
 
 def scene_hashes(seeds: int) -> dict[str, str]:
     from luminous_sim import cdf
-    from luminous_sim.cssg.baseline import empty_cdf
-    from luminous_sim.cssg.generate import generate
+    from luminous_sim.cssg import empty_cdf, generate
     from luminous_sim.errors import InfeasibleSceneError
     from luminous_sim.rooms.library import load_room
     from luminous_sim.vocab import ROOM_TYPES

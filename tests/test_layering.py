@@ -1,5 +1,6 @@
-"""Imports point down (or sideways) only, as DESIGN.md's layer table says, and pybullet lives in
-luminous_sim/world/ alone. Function-level (lazy) imports count too."""
+"""Imports point down (or sideways) only, as DESIGN.md's layer table says, pybullet lives in
+luminous_sim/world/ alone, and the scene generator (cssg/) is a producer that only layer L5 imports.
+Function-level (lazy) imports count too."""
 
 from __future__ import annotations
 
@@ -17,6 +18,9 @@ LAYER = {
     "data": 5, "eval": 5, "cli": 5, "demo": 5, "episode": 5, "scene_outputs": 5,
 }
 PYBULLET = {"pybullet", "pybullet_utils", "pybullet_data"}
+GENERATOR = "cssg"
+"""Imported by layer L5 only (task-driven generation, the command line): the simulator, the planner and
+the task layer use the scene geometry in scene/, never the generator's insides."""
 
 
 def _imports(path: Path) -> set[str]:
@@ -26,6 +30,11 @@ def _imports(path: Path) -> set[str]:
             names |= {a.name for a in node.names}
         elif isinstance(node, ast.ImportFrom) and node.module and node.level == 0:
             names.add(node.module)
+            if node.module == "luminous_sim":  # `from luminous_sim import cssg`
+                names |= {f"luminous_sim.{a.name}" for a in node.names}
+        elif (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and node.func.attr == "import_module"
+              and node.args and isinstance(node.args[0], ast.Constant) and isinstance(node.args[0].value, str)):
+            names.add(node.args[0].value)
     return names
 
 
@@ -54,3 +63,16 @@ def test_imports_point_down_and_pybullet_stays_in_world():
                 if LAYER[target] > LAYER[own]:
                     problems.append(f"{path.relative_to(PKG)} (L{LAYER[own]}) imports {name} (L{LAYER[target]})")
     assert not problems, "\n".join(problems)
+
+
+def test_nothing_below_layer_5_imports_the_generator():
+    problems = []
+    for path in sorted(PKG.rglob("*.py")):
+        if path.parent == PKG and path.name == "__init__.py":
+            continue
+        own = _package(path)
+        if own == GENERATOR or LAYER[own] >= 5:
+            continue
+        problems += [f"{path.relative_to(PKG)} (L{LAYER[own]}) imports {name}" for name in sorted(_imports(path))
+                     if name.split(".")[:2] == ["luminous_sim", GENERATOR]]
+    assert not problems, "the generator is a producer (DESIGN.md, Layers):\n" + "\n".join(problems)

@@ -24,8 +24,7 @@ def _run(args: argparse.Namespace) -> int:
     from tqdm import tqdm
 
     from luminous_sim import cdf as cdf_mod
-    from luminous_sim.cssg.baseline import empty_cdf, sample_uniform
-    from luminous_sim.cssg.generate import Generated, generate
+    from luminous_sim.cssg import Generated, empty_cdf, generate, sample_uniform
     from luminous_sim.scene_outputs import write_scene_outputs
 
     doc = cdf_mod.load(args.cdf) if args.cdf else empty_cdf(args.room_type)
@@ -39,7 +38,7 @@ def _run(args: argparse.Namespace) -> int:
         seed = args.seed + k
         if args.baseline:
             from luminous_sim.assets.catalog import default_catalog
-            from luminous_sim.cssg.generate import choose_room
+            from luminous_sim.cssg import choose_room
 
             rng = np.random.default_rng(np.random.SeedSequence([seed, 0]))
             room = shell or choose_room(doc, rng)

@@ -1,1 +1,28 @@
-"""Layer L1: Constrained Stochastic Scene Generation (and the uniform-random baseline)."""
+"""Layer L1: Constrained Stochastic Scene Generation (and the uniform-random baseline).
+
+A producer of scenes: nothing below layer L5 but task-driven generation (`luminous_sim.data`) imports it.
+The plain geometry it shares with the simulator and the planner lives in `luminous_sim.scene`.
+
+Typical use::
+
+    from luminous_sim.cssg import generate
+    generated = generate(cdf, seed=0)   # generated.scene, generated.report
+"""
+
+from luminous_sim.cssg.baseline import empty_cdf, generate_uniform, sample_uniform
+from luminous_sim.cssg.generate import ATTEMPTS, Generated, choose_room, generate, sample_layout
+from luminous_sim.cssg.validate import LayoutReport, RelationCheck, check_layout
+
+__all__ = [
+    "ATTEMPTS",
+    "Generated",
+    "LayoutReport",
+    "RelationCheck",
+    "check_layout",
+    "choose_room",
+    "empty_cdf",
+    "generate",
+    "generate_uniform",
+    "sample_layout",
+    "sample_uniform",
+]

@@ -13,14 +13,12 @@ from luminous_sim.cdf.schema import ChallengeDefinition
 from luminous_sim.cssg.draft import SceneDraft
 from luminous_sim.cssg.furniture import FloorContext, register
 from luminous_sim.cssg.objects import place_object
-from luminous_sim.cssg.pose import footprint
-from luminous_sim.cssg.reach import reach_of
 from luminous_sim.cssg.requests import Request, requests_from_cdf
 from luminous_sim.cssg.structure import place_fixtures
 from luminous_sim.cssg.validate import LayoutReport, check_layout
 from luminous_sim.cssg.walls import place_wall_piece
 from luminous_sim.rooms.shell import RoomShell
-from luminous_sim.scene.model import Scene
+from luminous_sim.scene import Scene, footprint, reach_of
 
 FURNITURE_TRIES = 200
 

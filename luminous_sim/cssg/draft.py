@@ -9,10 +9,9 @@ from shapely.geometry import Polygon
 from shapely.ops import unary_union
 
 from luminous_sim.assets.catalog import AssetEntry, Catalog
-from luminous_sim.cssg.pose import footprint
 from luminous_sim.rooms.shell import RoomShell
+from luminous_sim.scene import Layer, Scene, SceneObject, blocks_agent, footprint, reachable_grid
 from luminous_sim.scene.ids import thor_object_id
-from luminous_sim.scene.model import Layer, Scene, SceneObject
 
 SEGMENTED_FIXTURES = {"CounterTop"}
 """Fixture types built from several segments that a CDF names as one object."""
@@ -61,6 +60,10 @@ class SceneDraft:
     def floor_obstacles(self) -> Polygon:
         """Union of the footprints of everything standing on the floor."""
         return unary_union([p.footprint for p in self.placed if p.obj.parent is None and p.obj.layer != "structure"])
+
+    def reachable_grid(self) -> np.ndarray:
+        """The agent's reachable 0.25 m grid among the things placed so far (`scene.reachable_grid`)."""
+        return reachable_grid(self.shell, [p.footprint for p in self.placed if blocks_agent(p.obj, p.entry)])
 
     def pick_variant(self, object_type: str, fits=lambda e: True) -> AssetEntry | None:
         """A uniformly drawn variant of a type that satisfies `fits`, or None."""

@@ -11,12 +11,7 @@ import numpy as np
 from luminous_sim.cssg.draft import SEGMENTED_FIXTURES, SceneDraft
 from luminous_sim.cssg.grid import HEADINGS, FloorGrid
 from luminous_sim.cssg.lattice import Lattice
-from luminous_sim.cssg.pose import footprint, front_zone
-from luminous_sim.cssg.reach import (
-    REACH,
-    FloorPiece,
-    reach_of,
-)
+from luminous_sim.cssg.reach import FloorPiece
 from luminous_sim.cssg.requests import Request
 from luminous_sim.cssg.scores import (
     TEMPERATURE,
@@ -26,8 +21,8 @@ from luminous_sim.cssg.scores import (
     directional_wall_distance,
     relation_field,
 )
-from luminous_sim.cssg.validate import is_obstacle
 from luminous_sim.cssg.walls import ABOVE_JITTER, BEHIND_SLACK, MARGIN, window_strips
+from luminous_sim.scene import REACH, blocks_agent, footprint, front_zone, reach_of
 
 WINDOW_BEHIND_COST = 2.0
 """Cost of a cell with a window behind, for a piece something is to hang above (the structure weight)."""
@@ -72,7 +67,7 @@ class FloorContext:
                     grid.block(front_zone(p.entry, p.obj.position[0], p.obj.position[1], p.obj.yaw, WORK_ZONE))
         c = poly.centroid
         lattice = Lattice.of(draft.shell, grid)
-        clear = lattice.open_among(p.footprint for p in draft.placed if is_obstacle(p))
+        clear = lattice.open_among(p.footprint for p in draft.placed if blocks_agent(p.obj, p.entry))
         return cls(draft, grid, directional_wall_distance(grid), (c.x, c.y), {}, {}, pieces, clear, {}, lattice)
 
     def walkable(self, clear: np.ndarray) -> np.ndarray:
@@ -96,7 +91,7 @@ class FloorContext:
     def remove(self, gone: set[str], fp) -> None:
         """Take the floor pieces `gone` (standing on footprint `fp`) out again."""
         self.grid.unblock(fp)
-        self.clear = self.lattice.open_among(p.footprint for p in self.draft.placed if is_obstacle(p))
+        self.clear = self.lattice.open_among(p.footprint for p in self.draft.placed if blocks_agent(p.obj, p.entry))
         self.pieces = [p for p in self.pieces if p.id not in gone]
 
     def snapshot(self) -> tuple:

@@ -24,7 +24,7 @@ from luminous_sim.cssg.validate import LayoutReport, check_layout, named, relati
 from luminous_sim.cssg.walls import place_wall_piece
 from luminous_sim.errors import InfeasibleSceneError
 from luminous_sim.rooms.shell import RoomShell
-from luminous_sim.scene.model import Scene
+from luminous_sim.scene import Scene
 
 ATTEMPTS = 20
 

@@ -1,8 +1,8 @@
 """The agent's 0.25 m grid inside the room, as the furniture layer tracks it while placing pieces.
 
-The validation (`validate.reachable_grid`) and the simulator's navigation put the agent only on these
-points, each at least AGENT_RADIUS from every wall and floor obstacle. Tracking the same points with
-the same exact distances while placing furniture means a passage the layout keeps open is one the
+The validation and the simulator's navigation put the agent only on these points (`scene.reachable_grid`),
+each at least AGENT_RADIUS from every wall and floor obstacle. Tracking the same points with the same
+exact distances while placing furniture means a passage the layout keeps open is one the
 agent can really walk through, not one the fine placement grid only believes wide enough.
 """
 
@@ -16,10 +16,8 @@ import shapely
 from luminous_sim.cssg.grid import RES, FloorGrid
 from luminous_sim.cssg.reach import largest_part
 from luminous_sim.rooms.shell import RoomShell
+from luminous_sim.scene import STEP
 from luminous_sim.vocab.agent_body import AGENT_RADIUS
-
-STEP = 0.25
-"""Spacing of the agent's grid (AI2-THOR's gridSize), aligned with the world origin."""
 
 
 @dataclass(frozen=True)
@@ -43,7 +41,7 @@ class Lattice:
         pts = shell.grid_points(STEP, clearance=AGENT_RADIUS, avoid_fixtures=False).reshape(-1, 2)
         keys = np.round(pts / STEP).astype(int)
         # x-major like the points, so that among equally large parts the first labelled is the one
-        # holding the first point: `validate.reachable_grid`'s choice
+        # holding the first point: `scene.reachable_grid`'s choice
         ij = keys - keys.min(axis=0) if len(pts) else np.zeros((0, 2), dtype=int)
         shape = tuple(int(v) for v in ij.max(axis=0) + 1) if len(pts) else (0, 0)
         rows = np.clip(np.floor((pts[:, 1] - grid.y0) / RES).astype(int), 0, grid.shape[0] - 1)

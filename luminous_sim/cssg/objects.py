@@ -11,20 +11,22 @@ import numpy as np
 from shapely.geometry import Polygon
 
 from luminous_sim.cssg.draft import Placed, SceneDraft
-from luminous_sim.cssg.pose import rotate
-from luminous_sim.cssg.regions import (
+from luminous_sim.cssg.requests import Request
+from luminous_sim.cssg.tables import supports_for
+from luminous_sim.cssg.walls import clashes
+from luminous_sim.scene import (
     HANGERS,
     RegionSpot,
+    Shade,
+    View,
+    blocks_agent,
     fits,
     hang_pose,
     region_spots,
+    rotate,
     sample_in_region,
+    shades,
 )
-from luminous_sim.cssg.requests import Request
-from luminous_sim.cssg.sight import Shade, View, shades
-from luminous_sim.cssg.tables import supports_for
-from luminous_sim.cssg.validate import is_obstacle, reachable_grid
-from luminous_sim.cssg.walls import clashes
 from luminous_sim.vocab import abilities
 
 MAX_FILL = 0.85
@@ -75,8 +77,8 @@ def _eyes(draft: SceneDraft) -> tuple[int, np.ndarray]:
     when it does (objects on furniture do not change it; a plant on the floor, or going back, may)."""
     counted, version, eyes = draft.memo.get("eyes", (0, -1, None))
     if (eyes is None or counted > len(draft.placed)
-            or any(is_obstacle(p) for p in draft.placed[counted:])):
-        version, eyes = version + 1, reachable_grid(draft)
+            or any(blocks_agent(p.obj, p.entry) for p in draft.placed[counted:])):
+        version, eyes = version + 1, draft.reachable_grid()
     draft.memo["eyes"] = (len(draft.placed), version, eyes)
     return version, eyes
 

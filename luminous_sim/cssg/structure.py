@@ -16,9 +16,8 @@ import numpy as np
 
 from luminous_sim.assets.catalog import AssetEntry, Catalog
 from luminous_sim.cssg.draft import SceneDraft
-from luminous_sim.cssg.pose import against_wall, footprint, local_to_world
 from luminous_sim.rooms.shell import CounterRun, FixtureSlot, RoomShell, Wall
-from luminous_sim.scene.model import SceneObject
+from luminous_sim.scene import SceneObject, against_wall, footprint, local_to_world
 
 GAP = 0.01
 CLEAR_STEP = 0.05

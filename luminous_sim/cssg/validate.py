@@ -10,13 +10,9 @@ import shapely
 from shapely.strtree import STRtree
 
 from luminous_sim.cssg.draft import SceneDraft
-from luminous_sim.cssg.lattice import STEP
-from luminous_sim.cssg.reach import horizontal_reach
 from luminous_sim.cssg.scores import TOLERANCE
-from luminous_sim.vocab.agent_body import AGENT_RADIUS
+from luminous_sim.scene import horizontal_reach
 from luminous_sim.vocab.agent_body import VISIBILITY_DISTANCE as REACH
-
-AGENT_HEIGHT = 1.8
 
 
 @dataclass
@@ -62,18 +58,6 @@ class LayoutReport:
         return d
 
 
-def floor_obstacles(draft: SceneDraft) -> list[tuple[str, object]]:
-    """Footprints of everything an agent bumps into: floor-standing things lower than its height."""
-    return [(p.obj.id, p.footprint) for p in draft.placed if is_obstacle(p)]
-
-
-def is_obstacle(p) -> bool:
-    """Whether a placed thing stands in the agent's way: on the floor and lower than its height."""
-    if p.obj.parent is not None or p.obj.layer == "object":
-        return False
-    return p.obj.position[2] + p.entry.bbox_min[2] < AGENT_HEIGHT
-
-
 def _z_range(p) -> tuple[float, float]:
     return p.obj.position[2] + p.entry.bbox_min[2], p.obj.position[2] + p.entry.bbox_max[2]
 
@@ -91,38 +75,6 @@ def solid_overlaps(draft: SceneDraft, tol: float = 1e-4) -> list[tuple[str, str]
     return out
 
 
-def reachable_grid(draft: SceneDraft) -> np.ndarray:
-    """Agent positions on the 0.25 m grid, free of obstacles, in the largest connected component."""
-    pts = draft.shell.grid_points(STEP, clearance=AGENT_RADIUS, avoid_fixtures=False)
-    obstacles = [fp for _, fp in floor_obstacles(draft)]
-    if len(pts) == 0:
-        return pts
-    if obstacles:
-        pidx, _ = STRtree(obstacles).query(shapely.points(pts), predicate="dwithin", distance=AGENT_RADIUS)
-        blocked = np.zeros(len(pts), dtype=bool)
-        blocked[pidx] = True
-        pts = pts[~blocked]
-    if len(pts) == 0:
-        return pts
-    return pts[_largest_component(pts)]
-
-
-def _largest_component(pts: np.ndarray) -> np.ndarray:
-    """Mask of the points in the largest 4-connected component of grid points `pts` (ties: the component
-    holding the earliest point)."""
-    from scipy import ndimage
-
-    keys = np.round(pts / STEP).astype(int)
-    keys -= keys.min(axis=0)
-    image = np.zeros(tuple(keys.max(axis=0) + 1), dtype=bool)
-    image[keys[:, 0], keys[:, 1]] = True
-    labels, _ = ndimage.label(image)
-    of_point = labels[keys[:, 0], keys[:, 1]]
-    sizes = np.bincount(of_point)
-    best = sizes[of_point] == sizes.max()
-    return of_point == of_point[int(np.argmax(best))]
-
-
 def check_layout(draft: SceneDraft, requests, ctx, unplaced: list[str], attempt: int,
                  stopped_after: str | None = None) -> LayoutReport:
     """Relations, overlaps and reachability of a finished draft; of a sample stopped early (`stopped_after`
@@ -135,7 +87,7 @@ def check_layout(draft: SceneDraft, requests, ctx, unplaced: list[str], attempt:
     if stopped_after is not None:
         return report
     report.overlaps = solid_overlaps(draft)
-    grid = reachable_grid(draft)
+    grid = draft.reachable_grid()
     report.reachable_points = len(grid)
     if len(grid):
         report.unreachable = _out_of_reach([p for p in draft.placed if p.obj.layer != "decoration"], grid)
@@ -193,17 +145,3 @@ def _lateral(placed, anchor) -> float:
     yaw = anchor.obj.yaw
     axis = np.array([np.cos(yaw), np.sin(yaw)])
     return float((np.array(placed.footprint.centroid.coords[0]) - np.array(anchor.footprint.centroid.coords[0])) @ axis)
-
-
-def scene_reachable_grid(scene, catalog=None) -> np.ndarray:
-    """The reachable 0.25 m grid of a finished Scene (same rule as during generation)."""
-    from luminous_sim.assets.catalog import default_catalog
-    from luminous_sim.cssg.draft import Placed
-    from luminous_sim.cssg.pose import footprint
-
-    catalog = catalog or default_catalog()
-    draft = SceneDraft(scene.room, catalog, np.random.default_rng(0))
-    for o in scene.objects:
-        e = catalog.for_object(o)
-        draft.placed.append(Placed(o, e, footprint(e, o.position[0], o.position[1], o.yaw)))
-    return reachable_grid(draft)

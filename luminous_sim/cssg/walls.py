@@ -12,10 +12,10 @@ from shapely.geometry import Polygon
 
 from luminous_sim.assets.catalog import AssetEntry
 from luminous_sim.cssg.draft import Placed, SceneDraft
-from luminous_sim.cssg.pose import footprint, yaw_facing
 from luminous_sim.cssg.requests import Request
 from luminous_sim.cssg.tables import wall_height
 from luminous_sim.rooms.shell import Wall
+from luminous_sim.scene import footprint, yaw_facing
 
 MARGIN = 0.1
 ABOVE_GAP = 0.25

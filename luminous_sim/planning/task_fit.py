@@ -11,8 +11,7 @@ from collections.abc import Iterable
 
 import numpy as np
 
-from luminous_sim.cssg.regions import HANGERS
-from luminous_sim.scene.model import Scene
+from luminous_sim.scene import HANGERS, Scene
 from luminous_sim.tasks.model import PddlParams, TaskInstance
 from luminous_sim.tasks.sample import sample_task
 from luminous_sim.vocab import parent_type

@@ -1,5 +1,66 @@
-"""Layer L1: the scene description (what goes where), independent of any simulator."""
+"""Layer L1: the scene description (what goes where), independent of any simulator, and the plain geometry
+of a scene that the generator, the simulator and the planner share: poses and footprints, receptacle
+regions, sight lines into them, the agent's reach and its reachable 0.25 m grid."""
 
-from luminous_sim.scene.model import Scene, SceneObject
+from luminous_sim.scene.agent_grid import (
+    AGENT_HEIGHT,
+    STEP,
+    blocks_agent,
+    largest_component,
+    reachable_grid,
+    scene_reachable_grid,
+)
+from luminous_sim.scene.model import Layer, Scene, SceneObject
+from luminous_sim.scene.pose import (
+    WallPose,
+    against_wall,
+    footprint,
+    front_zone,
+    local_to_world,
+    rotate,
+    yaw_facing,
+)
+from luminous_sim.scene.reach import REACH, horizontal_reach, reach_of
+from luminous_sim.scene.regions import (
+    HANGERS,
+    RegionSpot,
+    fits,
+    hang_pose,
+    region_spots,
+    sample_in_region,
+    scan_region,
+)
+from luminous_sim.scene.sight import Shade, View, in_sight, shades
 
-__all__ = ["Scene", "SceneObject"]
+__all__ = [
+    "AGENT_HEIGHT",
+    "HANGERS",
+    "Layer",
+    "REACH",
+    "STEP",
+    "RegionSpot",
+    "Scene",
+    "SceneObject",
+    "Shade",
+    "View",
+    "WallPose",
+    "against_wall",
+    "blocks_agent",
+    "fits",
+    "footprint",
+    "front_zone",
+    "hang_pose",
+    "horizontal_reach",
+    "in_sight",
+    "largest_component",
+    "local_to_world",
+    "reach_of",
+    "reachable_grid",
+    "region_spots",
+    "rotate",
+    "sample_in_region",
+    "scan_region",
+    "scene_reachable_grid",
+    "shades",
+    "yaw_facing",
+]

@@ -9,8 +9,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from luminous_sim.cssg.regions import region_spots, sample_in_region, scan_region
-from luminous_sim.cssg.sight import View, shades
+from luminous_sim.scene import View, region_spots, sample_in_region, scan_region, shades
 from luminous_sim.states import effects as fx
 from luminous_sim.states import rules
 from luminous_sim.states.model import ObjectState, WorldState
@@ -294,7 +293,7 @@ class Interactions:
                  and _region_distance(s, eyes) <= reach]
         if not spots:
             return f"{receptacle} has no place to put things within reach"
-        from luminous_sim.cssg.pose import footprint
+        from luminous_sim.scene import footprint
 
         boxes, prints = [], []
         for other in self.state.contents(receptacle):

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from luminous_sim.scene.model import Scene
+from luminous_sim.scene import Scene
 from luminous_sim.world.agent import GRID, AgentPose
 
 
@@ -19,7 +19,7 @@ class NavGrid:
 
     @classmethod
     def from_scene(cls, scene: Scene) -> NavGrid:
-        from luminous_sim.cssg.validate import scene_reachable_grid
+        from luminous_sim.scene import scene_reachable_grid
 
         pts = scene_reachable_grid(scene)
         return cls(frozenset((round(x / GRID), round(y / GRID)) for x, y in pts))

@@ -10,7 +10,7 @@ from itertools import combinations
 
 import numpy as np
 
-from luminous_sim.scene.model import Scene
+from luminous_sim.scene import Scene
 from luminous_sim.vocab.agent_body import VISIBILITY_DISTANCE
 from luminous_sim.world.client import body_aabb
 from luminous_sim.world.scene_builder import BuiltScene, build_scene, settle, settle_report
@@ -66,7 +66,7 @@ def interpenetrations(built: BuiltScene, tol: float = PENETRATION_TOL) -> list[d
 def unseeable_objects(built: BuiltScene) -> list[str]:
     """Objects to interact with that no sight line from the reachable grid meets (through a closed
     container's door: the container must be seen)."""
-    from luminous_sim.cssg.validate import scene_reachable_grid
+    from luminous_sim.scene import scene_reachable_grid
     from luminous_sim.states.model import ObjectState, WorldState
     from luminous_sim.world.sightlines import unseen
 

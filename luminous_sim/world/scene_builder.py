@@ -10,8 +10,14 @@ from pybullet_utils.bullet_client import BulletClient
 
 from luminous_sim.assets.catalog import Catalog, default_catalog
 from luminous_sim.assets.materials import palette
-from luminous_sim.scene.model import Scene, SceneObject
-from luminous_sim.world.asset_loader import LoadedAsset, base_link_pose, load_asset, set_joint, show_state
+from luminous_sim.scene import Scene, SceneObject
+from luminous_sim.world.asset_loader import (
+    LoadedAsset,
+    base_link_pose,
+    load_asset,
+    set_joint,
+    show_state,
+)
 from luminous_sim.world.client import new_client
 
 

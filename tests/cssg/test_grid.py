@@ -9,8 +9,8 @@ from shapely.geometry import Polygon, box
 
 from luminous_sim.assets.catalog import default_catalog
 from luminous_sim.cssg.grid import HEADINGS, RES, FloorGrid
-from luminous_sim.cssg.pose import footprint
 from luminous_sim.cssg.scores import directional_wall_distance, heading_index
+from luminous_sim.scene import footprint
 
 
 @pytest.fixture(scope="module")

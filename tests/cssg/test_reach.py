@@ -15,13 +15,10 @@ from luminous_sim.cssg.draft import Placed, SceneDraft
 from luminous_sim.cssg.furniture import FloorContext
 from luminous_sim.cssg.generate import generate
 from luminous_sim.cssg.grid import RES
-from luminous_sim.cssg.pose import footprint
-from luminous_sim.cssg.reach import REACH, FloorPiece, horizontal_reach, reach_of
+from luminous_sim.cssg.reach import FloorPiece
 from luminous_sim.cssg.structure import place_fixtures
-from luminous_sim.cssg.validate import is_obstacle, reachable_grid
 from luminous_sim.rooms.generate import generate_shell
-from luminous_sim.scene.model import SceneObject
-from luminous_sim.vocab.agent_body import CAMERA_HEIGHT
+from luminous_sim.scene import REACH, SceneObject, blocks_agent, footprint, reach_of
 
 
 def _edt_to(mask: np.ndarray) -> np.ndarray:
@@ -78,14 +75,14 @@ def _reference_reachable(draft: SceneDraft, ctx: FloorContext, extra: list, fp, 
 
 
 def _grid_with(draft: SceneDraft, footprints: list) -> np.ndarray:
-    """`reachable_grid` with more floor obstacles standing (as stand-in cabinets)."""
+    """The draft's reachable grid with more floor obstacles standing (as stand-in cabinets)."""
     entry = draft.catalog.of_type("Cabinet")[0]
     for i, fp in enumerate(footprints):
         obj = SceneObject(id=f"extra{i}", type="Cabinet", asset=entry.id, position=(0.0, 0.0, 0.0),
                           layer="furniture")
         draft.placed.append(Placed(obj, entry, fp))
-        assert is_obstacle(draft.placed[-1])
-    return reachable_grid(draft)
+        assert blocks_agent(obj, entry)
+    return draft.reachable_grid()
 
 
 def _masks(ctx: FloorContext) -> list[np.ndarray]:
@@ -133,7 +130,7 @@ def test_the_walkable_floor_is_the_validations_reachable_grid():
             draft.placed.append(Placed(o, e, footprint(e, o.position[0], o.position[1], o.yaw)))
         ctx = FloorContext.create(draft)
         walk = ctx.walkable(ctx.clear)
-        cells = {ctx.grid.cell(x, y) for x, y in reachable_grid(draft)}
+        cells = {ctx.grid.cell(x, y) for x, y in draft.reachable_grid()}
         assert cells == set(zip(*np.nonzero(walk), strict=True)), seed
 
 
@@ -141,12 +138,3 @@ def test_generated_layouts_keep_every_piece_reachable():
     doc = cdf.load(Path(__file__).resolve().parents[2] / "cdf" / "examples" / "bedroom_reading_desk.yaml")
     g = generate(doc, seed=3)
     assert not g.report.unreachable and g.report.reachable_points > 0
-
-
-def test_low_things_must_be_nearer_than_tall_ones():
-    """ALFRED measures reach from the eye: a garbage can's top is far below it, a fridge's is not."""
-    assert horizontal_reach(0.0, 2.0) == pytest.approx(REACH)
-    assert horizontal_reach(1.8, 2.0) == pytest.approx((REACH**2 - (1.8 - CAMERA_HEIGHT) ** 2) ** 0.5)
-    can = horizontal_reach(0.0, 0.3)
-    assert can == pytest.approx((REACH**2 - (CAMERA_HEIGHT - 0.3) ** 2) ** 0.5) and can < 0.8
-    assert horizontal_reach(0.0, 0.0, reach=1.0) == 0.0

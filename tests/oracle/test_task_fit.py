@@ -109,8 +109,8 @@ def test_doors_the_agent_cannot_open_are_never_counted_open():
     """A side table's drawer is a gated region of a type ALFRED cannot open: a dry run that counts doors
     as open still leaves it out."""
     from luminous_sim import cdf
-    from luminous_sim.cssg.generate import generate
-    from luminous_sim.cssg.regions import region_spots
+    from luminous_sim.cssg import generate
+    from luminous_sim.scene import region_spots
     from luminous_sim.world.world import World
 
     doc = cdf.load(Path(__file__).resolve().parents[2] / "cdf" / "examples" / "bedroom_reading_desk.yaml")
@@ -133,8 +133,8 @@ def test_doors_the_agent_cannot_open_are_never_counted_open():
 
 
 def test_a_dry_run_can_pretend_a_first_object_is_already_put(world, kitchen_scene):
-    from luminous_sim.cssg.pose import footprint
     from luminous_sim.planning.task_fit import has_room_for_two
+    from luminous_sim.scene import footprint
 
     apple, mug, counter = obj(kitchen_scene, "apple"), obj(kitchen_scene, "mug"), obj(kitchen_scene, "counter")
     it = world.interactions

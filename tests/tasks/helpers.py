@@ -9,7 +9,7 @@ import numpy as np
 
 from luminous_sim.rooms.generate import generate_shell
 from luminous_sim.rooms.shell import RoomShell
-from luminous_sim.scene.model import Scene, SceneObject
+from luminous_sim.scene import Scene, SceneObject
 from luminous_sim.states import ObjectState, WorldState
 
 Layout = dict[str, tuple[str, str | None]]

@@ -23,7 +23,7 @@ CASES = TASKS
 
 @pytest.mark.parametrize(("task_type", "params", "room"), CASES, ids=IDS)
 def test_generated_scene_supports_the_task(task_type, params, room):
-    from luminous_sim.cssg.generate import generate
+    from luminous_sim.cssg import generate
 
     doc = cdf_for_task(task_type, params, room)
     scene = generate(doc, seed=1).scene

@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 
 from luminous_sim import cdf
-from luminous_sim.cssg.generate import generate
+from luminous_sim.cssg import generate
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "cdf" / "examples"
 

@@ -6,8 +6,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from luminous_sim.cssg.baseline import empty_cdf
-from luminous_sim.cssg.generate import generate
+from luminous_sim.cssg import empty_cdf, generate
 from luminous_sim.world.world import World, WorldConfig
 from tests.world.fuzz import fuzz, random_action
 

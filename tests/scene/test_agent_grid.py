@@ -1,13 +1,19 @@
-"""The layout report's reachable grid: the largest 4-connected set of free 0.25 m points, as a graph
+"""The agent's reachable grid: the largest 4-connected set of free 0.25 m points, as a graph
 search finds it (ties: the set holding the earliest point)."""
 
 from __future__ import annotations
+
+from pathlib import Path
 
 import networkx as nx
 import numpy as np
 import pytest
 
-from luminous_sim.cssg.validate import STEP, _largest_component
+from luminous_sim import cdf
+from luminous_sim.cssg import generate
+from luminous_sim.scene.agent_grid import STEP, largest_component, scene_reachable_grid
+
+EXAMPLES = Path(__file__).resolve().parents[2] / "cdf" / "examples"
 
 
 def _reference(pts: np.ndarray) -> np.ndarray:
@@ -30,10 +36,19 @@ def test_largest_component_matches_a_graph_search(seed):
     xs, ys = np.meshgrid(np.arange(-4, 12) * STEP, np.arange(3, 15) * STEP, indexing="ij")
     pts = np.stack([xs.ravel(), ys.ravel()], axis=1)
     pts = pts[rng.random(len(pts)) < 0.55]
-    assert np.array_equal(_largest_component(pts), _reference(pts))
+    assert np.array_equal(largest_component(pts), _reference(pts))
 
 
 def test_equal_components_keep_the_one_with_the_earliest_point():
     pts = np.array([[2.0, 0.0], [2.25, 0.0], [0.0, 0.0], [0.0, 0.25]])
-    assert _largest_component(pts).tolist() == [True, True, False, False]
-    assert np.array_equal(_largest_component(pts), _reference(pts))
+    assert largest_component(pts).tolist() == [True, True, False, False]
+    assert np.array_equal(largest_component(pts), _reference(pts))
+
+
+@pytest.mark.parametrize("example", ["kitchen_coffee_mug.yaml", "bedroom_reading_desk.yaml"])
+def test_a_finished_scene_has_the_grid_its_generator_validated(example):
+    """The simulator's reachable grid (from the scene alone) is the one the generator's report counted."""
+    g = generate(cdf.load(EXAMPLES / example), seed=1)
+    grid = scene_reachable_grid(g.scene)
+    assert len(grid) == g.report.reachable_points > 0
+    assert np.allclose(np.round(grid / STEP), grid / STEP)

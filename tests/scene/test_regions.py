@@ -10,8 +10,8 @@ import pytest
 from shapely.geometry import Polygon, box
 
 from luminous_sim.assets.catalog import default_catalog
-from luminous_sim.cssg.pose import rotate
-from luminous_sim.cssg.regions import EDGE_INSET, RegionSpot, sample_in_region
+from luminous_sim.scene.pose import rotate
+from luminous_sim.scene.regions import EDGE_INSET, RegionSpot, sample_in_region
 
 
 def _reference(entry, spot, rng, occupied, tries=20):
@@ -70,7 +70,7 @@ def test_a_region_covered_beyond_max_fill_is_given_up_at_once():
 def test_a_scan_finds_the_one_gap_that_random_draws_miss():
     """A 0.6 x 0.4 table top covered but for one gap 4 cm wider than a small object: twenty random draws
     seldom land it there, the scan does, and says none where there is no gap."""
-    from luminous_sim.cssg.regions import scan_region
+    from luminous_sim.scene.regions import scan_region
 
     cube = next(e for t in ("Egg", "KeyChain", "SoapBar", "CreditCard") for e in default_catalog().of_type(t)
                 if max(e.dims[:2]) < 0.12 and e.dims[2] < 0.4)

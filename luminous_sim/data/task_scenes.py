@@ -7,13 +7,17 @@ from __future__ import annotations
 import numpy as np
 
 from luminous_sim.assets.catalog import Catalog
-from luminous_sim.cssg.baseline import empty_cdf
-from luminous_sim.cssg.generate import generate
+from luminous_sim.cssg import empty_cdf, generate
 from luminous_sim.errors import InfeasibleSceneError
-from luminous_sim.scene.model import Scene
-from luminous_sim.tasks.cdf_bridge import cdf_for_task
-from luminous_sim.tasks.errors import TaskError, TaskSamplingError
-from luminous_sim.tasks.sample import draw_params, feasible_params, state_from_scene
+from luminous_sim.scene import Scene
+from luminous_sim.tasks import (
+    TaskError,
+    TaskSamplingError,
+    cdf_for_task,
+    draw_params,
+    feasible_params,
+    state_from_scene,
+)
 
 DEFAULT_ROOM_TRIES = 3
 """Default rooms tried before one is generated for the task."""

@@ -12,8 +12,8 @@ import shapely
 from shapely.geometry import Polygon
 
 from luminous_sim.assets.catalog import AssetEntry
-from luminous_sim.cssg.pose import rotate
 from luminous_sim.scene.model import SceneObject
+from luminous_sim.scene.pose import rotate
 
 EDGE_INSET = 0.04
 

@@ -4,9 +4,8 @@ from __future__ import annotations
 
 import pytest
 
-from luminous_sim.tasks.errors import TaskSamplingError
-from luminous_sim.tasks.sample import feasible_params, state_from_scene
-from luminous_sim.tasks.scenes import scene_for_task
+from luminous_sim.data import scene_for_task
+from luminous_sim.tasks import TaskSamplingError, feasible_params, state_from_scene
 
 
 @pytest.mark.parametrize(("task_type", "room"), [("pick_two_obj_and_place", "Bedroom"),

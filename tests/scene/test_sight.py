@@ -11,8 +11,8 @@ import pytest
 
 from luminous_sim import cdf
 from luminous_sim.assets.catalog import default_catalog
-from luminous_sim.cssg.generate import generate
-from luminous_sim.cssg.sight import BOARD, MARGIN, Box2, Shade, in_sight, shades
+from luminous_sim.cssg import generate
+from luminous_sim.scene.sight import BOARD, MARGIN, Box2, Shade, in_sight, shades
 from luminous_sim.vocab import abilities
 from luminous_sim.vocab.agent_body import CAMERA_HEIGHT
 

@@ -17,7 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from luminous_sim.assets.catalog import AssetEntry
-from luminous_sim.cssg.pose import rotate
+from luminous_sim.scene.pose import rotate
 from luminous_sim.vocab.agent_body import CAMERA_HEIGHT, VISIBILITY_DISTANCE
 
 BOARD = 0.03
