@@ -7,7 +7,7 @@
 from __future__ import annotations
 
 from luminous_sim.errors import VocabularyError
-from luminous_sim.vocab import abilities, can_contain, receptacle_objects
+from luminous_sim.vocab import FILLABLE, abilities, can_contain, receptacle_objects
 
 _TABLES = frozenset(
     {"CounterTop", "DiningTable", "CoffeeTable", "SideTable", "Desk", "Dresser", "Shelf"}
@@ -25,21 +25,6 @@ STANDS_ON: dict[str, frozenset[str]] = {
     "PaperTowelRoll": frozenset({"CounterTop", "DiningTable", "Shelf"}),
 }
 """Object type -> receptacle types it may stand on, beyond ALFRED's compatibility table."""
-
-FILLABLE: frozenset[str] = frozenset(
-    {
-        "Bowl",
-        "Cup",
-        "Mug",
-        "Pot",
-        "Kettle",
-        "HousePlant",
-        "WateringCan",
-        "WineBottle",
-        "Glassbottle",
-    }
-)
-"""Types that can hold a liquid (AI2-THOR's canFillWithLiquid)."""
 
 ABILITY_NAMES: tuple[str, ...] = (
     "pickupable",

@@ -80,9 +80,40 @@ def _replace_marker(node: Any) -> Any:
     return node
 
 
+def _defs_by_title(schema: dict[str, Any]) -> dict[str, Any]:
+    """Key each `$defs` entry by its title rather than by its Python class name.
+
+    The CDF's document names (`Scene`, `AgentPose`, `ObjectState`) are the titles; the classes carry a
+    `Spec` suffix so as not to clash with the runtime `scene.Scene`, `world.agent.AgentPose` and
+    `states.ObjectState`.
+    """
+    defs = schema.get("$defs", {})
+    renames = {k: v["title"] for k, v in defs.items() if v.get("title", k) != k}
+    if not renames:
+        return schema
+    taken = set(defs) - set(renames)
+    for title in renames.values():
+        if title in taken:
+            raise ValueError(f"two schema definitions would share the title {title!r}")
+        taken.add(title)
+    refs = {f"#/$defs/{old}": f"#/$defs/{new}" for old, new in renames.items()}
+
+    def walk(node: Any) -> Any:
+        if isinstance(node, dict):
+            return {k: refs.get(v, v) if k == "$ref" else walk(v) for k, v in node.items()}
+        if isinstance(node, list):
+            return [walk(v) for v in node]
+        return node
+
+    out = walk({k: v for k, v in schema.items() if k != "$defs"})
+    out["$defs"] = {renames.get(k, k): walk(v) for k, v in defs.items()}
+    return out
+
+
 def schema_dict() -> dict[str, Any]:
     """The JSON Schema (draft 2020-12) of the current CDF version."""
-    schema = _replace_marker(ChallengeDefinition.model_json_schema(mode="validation"))
+    schema = _defs_by_title(ChallengeDefinition.model_json_schema(mode="validation"))
+    schema = _replace_marker(schema)
     schema.setdefault("$defs", {})["Expression"] = _expression_schema()
     return {
         "$schema": "https://json-schema.org/draft/2020-12/schema",

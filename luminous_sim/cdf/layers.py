@@ -1,5 +1,10 @@
 """Placement layers and priorities (data): CSSG places room structure, then furniture, then objects,
 then decorations; within a layer, a higher priority `q` is placed first (paper: q(desk) > q(chair)).
+
+Which types are structure or decoration is vocabulary (`vocab.STRUCTURE_TYPES`, `vocab.DECORATION_TYPES`).
+CSSG's own placement classes (`cssg.tables.generation_layer`: fixture, furniture, wall, object) answer a
+different question, how a piece is placed, and differ from these layers for some types (a Microwave is in
+the furniture layer here but stands on a counter as an object there).
 """
 
 from __future__ import annotations
@@ -7,6 +12,7 @@ from __future__ import annotations
 from enum import IntEnum
 
 from luminous_sim.cdf.affordances import has_ability
+from luminous_sim.vocab import DECORATION_TYPES, STRUCTURE_TYPES
 
 
 class Layer(IntEnum):
@@ -17,12 +23,6 @@ class Layer(IntEnum):
     OBJECT = 2
     DECORATION = 3
 
-
-STRUCTURE_TYPES: frozenset[str] = frozenset({"Window", "LightSwitch", "ShowerDoor", "ShowerGlass"})
-"""Types that belong to the room itself."""
-
-DECORATION_TYPES: frozenset[str] = frozenset({"Painting", "Poster", "Curtains", "Blinds", "Mirror"})
-"""Types placed last, on walls or windows."""
 
 PRIORITY: dict[str, int] = {
     "CounterTop": 100,

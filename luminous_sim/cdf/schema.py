@@ -48,7 +48,7 @@ from luminous_sim.cdf import refs
 from luminous_sim.cdf.predicates import Expr, ExprError, expr_from_data, to_sexpr
 from luminous_sim.cdf.relations import ALIASES, RELATIONS, canonical, unknown_relation_message
 from luminous_sim.errors import VocabularyError
-from luminous_sim.vocab import ALL_TYPES, ROOM_TYPES, check_type
+from luminous_sim.vocab import ALL_TYPES, NAVIGATION_ACTIONS, ROOM_TYPES, check_type
 
 CDF_VERSION = 2
 """The version this model describes; older documents are upgraded on load (see upgrade.py)."""
@@ -210,8 +210,12 @@ class Attributes(_Model):
     size: Size | None = None
 
 
-class ObjectState(_Model):
+class ObjectStateSpec(_Model):
     """Initial object state (AI2-THOR's metadata names); unset flags are left to the generator."""
+
+    # The docstring is the schema's description. The runtime state is `states.ObjectState`; the JSON
+    # Schema keeps the document's name (export keys `$defs` by title).
+    model_config = ConfigDict(title="ObjectState")
 
     isOpen: StrictBool | None = None
     isToggled: StrictBool | None = Field(None, validation_alias=AliasChoices("isToggled", "isOn"))
@@ -231,7 +235,7 @@ class ObjectSpec(_Model):
     asset: AssetName | None = None
     layer: Literal["furniture", "object", "decoration"] | None = None
     attributes: Attributes | None = None
-    state: ObjectState | None = None
+    state: ObjectStateSpec | None = None
 
 
 class Relation(_Model):
@@ -252,8 +256,11 @@ _ROOM_TYPE_SCHEMA = {
 }
 
 
-class Scene(_Model):
+class SceneSpec(_Model):
     """The indoor-layout section."""
+
+    # What a generated `scene.Scene` must satisfy; the JSON Schema keeps the document's name.
+    model_config = ConfigDict(title="Scene")
 
     room_type: Annotated[
         tuple[RoomType, ...],
@@ -281,8 +288,11 @@ TaskType = Literal[
 ]
 
 
-class AgentPose(_Model):
+class AgentPoseSpec(_Model):
     """The agent's start: position (x, z) in metres, yaw in degrees, horizon (positive = down)."""
+
+    # The simulator's pose is `world.agent.AgentPose`; the JSON Schema keeps the document's name.
+    model_config = ConfigDict(title="AgentPose")
 
     position: tuple[Finite, Finite] | None = None
     rotation: Literal[0, 90, 180, 270] | None = None
@@ -293,12 +303,11 @@ class Task(_Model):
     """The task-definition section: initial state and goal as PDDL-like expressions."""
 
     type: TaskType | None = None
-    agent: AgentPose | None = None
+    agent: AgentPoseSpec | None = None
     initial: Expression | None = None
     goal: Expression
 
 
-NAV_ACTIONS = ("MoveAhead", "RotateLeft", "RotateRight", "LookUp", "LookDown")
 HighLevelAction = Literal[
     "GotoLocation",
     "PickupObject",
@@ -365,7 +374,7 @@ class LowLevelStep(_Model):
 
     @model_validator(mode="after")
     def _arguments(self) -> LowLevelStep:
-        if self.action in NAV_ACTIONS:
+        if self.action in NAVIGATION_ACTIONS:
             if self.objectId is not None or self.receptacleObjectId is not None:
                 raise ValueError(f"{self.action} takes no objectId or receptacleObjectId")
         elif self.action == "PutObject":
@@ -382,7 +391,7 @@ def _step_tag(value: Any) -> str:
     if isinstance(value, LowLevelStep):
         return "low-level"
     if isinstance(value, dict) and (
-        "objectId" in value or "receptacleObjectId" in value or value.get("action") in NAV_ACTIONS
+        "objectId" in value or "receptacleObjectId" in value or value.get("action") in NAVIGATION_ACTIONS
     ):
         return "low-level"
     return "high-level"
@@ -404,7 +413,7 @@ class ChallengeDefinition(_Model):
     cdf_version: Literal[2]
     name: Text | None = None
     description: Annotated[str, Field(max_length=10_000)] | None = None
-    scene: Scene
+    scene: SceneSpec
     task: Task | None = None
     execution: tuple[Step, ...] | None = None
 

@@ -19,7 +19,7 @@ from luminous_sim.cssg.furniture import FloorContext, hard_relations_met, place_
 from luminous_sim.cssg.objects import place_object
 from luminous_sim.cssg.requests import Request, requests_from_cdf
 from luminous_sim.cssg.structure import fixture_types, place_fixtures
-from luminous_sim.cssg.tables import layer_of
+from luminous_sim.cssg.tables import generation_layer
 from luminous_sim.cssg.validate import LayoutReport, check_layout, named, relation_checks
 from luminous_sim.cssg.walls import place_wall_piece
 from luminous_sim.errors import InfeasibleSceneError
@@ -54,7 +54,7 @@ def choose_room(cdf: ChallengeDefinition, rng: np.random.Generator, catalog: Cat
         from luminous_sim.rooms.library import shell_for
 
         return shell_for(room, rng)
-    wanted = {o.type for o in cdf.scene.objects if layer_of(o.type) == "fixture"}
+    wanted = {o.type for o in cdf.scene.objects if generation_layer(o.type) == "fixture"}
     meeting: list[RoomShell] = []
     for _ in range(200):
         shell = generate_shell(room_type, rng, shape=getattr(room, "shape", None))

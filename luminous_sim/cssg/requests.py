@@ -14,7 +14,7 @@ import numpy as np
 from luminous_sim.cdf.graph import oriented_relations, resolve_order
 from luminous_sim.cdf.relations import STRUCTURE_ELEMENTS
 from luminous_sim.cdf.schema import ChallengeDefinition
-from luminous_sim.cssg.tables import layer_of, placement, room_defaults, supports_for
+from luminous_sim.cssg.tables import generation_layer, placement, room_defaults, supports_for
 from luminous_sim.vocab import room_objects
 
 
@@ -112,7 +112,7 @@ def requests_from_cdf(cdf: ChallengeDefinition, room_type: str, rng: np.random.G
 def _layer(object_type: str, declared: str | None, room_type: str) -> str:
     if object_type in placement().get("wall_mounted_in", {}).get(room_type, []):
         return "wall"
-    own = layer_of(object_type)
+    own = generation_layer(object_type)
     if declared == "decoration" and own != "wall":
         return own
     return own if declared is None or own in ("fixture", "wall") else {"furniture": "furniture",
@@ -133,12 +133,12 @@ def _add_defaults(reqs: dict[str, Request], room_type: str, rng: np.random.Gener
             name = f"{t.lower()}_auto{i}"
             reqs[name] = Request(name, t, _layer(t, None, room_type), False)
     for t, n in sorted(room_objects(room_type).items()):
-        if t in have or layer_of(t) not in ("object", "wall") or rng.random() >= n / 30:
+        if t in have or generation_layer(t) not in ("object", "wall") or rng.random() >= n / 30:
             continue
-        if layer_of(t) == "object" and not supports_for(t):
+        if generation_layer(t) == "object" and not supports_for(t):
             continue
         name = f"{t.lower()}_auto0"
-        reqs[name] = Request(name, t, layer_of(t), False)
+        reqs[name] = Request(name, t, generation_layer(t), False)
 
 
 def _add_implicit(reqs: dict[str, Request]) -> None:

@@ -7,7 +7,14 @@ from functools import cache
 from importlib import resources
 from typing import Any
 
-from luminous_sim.vocab import abilities, receptacle_objects
+from luminous_sim.vocab import (
+    FIXTURE_TYPES,
+    FURNITURE_TYPES,
+    WALL_TYPES,
+    abilities,
+    receptacle_objects,
+    vocab_data,
+)
 
 
 @cache
@@ -23,21 +30,23 @@ def room_defaults(room_type: str) -> dict[str, Any]:
     return _load("room_defaults.json")[room_type]
 
 
-def layer_of(object_type: str) -> str:
-    """fixture, furniture, wall or object."""
-    p = placement()
-    if object_type in p["fixture"]:
+def generation_layer(object_type: str) -> str:
+    """How CSSG places a type: fixture, furniture, wall or object (the first that lists it, in that order).
+
+    Not the CDF's placement-order layer (`cdf.layers.layer_of`); both read their type lists from `vocab`.
+    """
+    if object_type in FIXTURE_TYPES:
         return "fixture"
-    if object_type in p["furniture"]:
+    if object_type in FURNITURE_TYPES:
         return "furniture"
-    if object_type in p["wall"]:
+    if object_type in WALL_TYPES:
         return "wall"
     return "object"
 
 
 def wall_height(object_type: str) -> float:
     """Height of the bottom of a wall-hung object above the floor."""
-    return float(placement()["wall"][object_type])
+    return float(placement()["wall_height"][object_type])
 
 
 @cache
@@ -53,6 +62,4 @@ def supports_for(object_type: str) -> frozenset[str]:
 
 @cache
 def placement_receptacles() -> tuple[str, ...]:
-    from luminous_sim.vocab import vocab_data
-
     return tuple(sorted(vocab_data()["receptacle_objects"]))

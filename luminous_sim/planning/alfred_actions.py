@@ -7,9 +7,6 @@ from typing import Any
 
 from luminous_sim.scene.ids import type_of_id
 
-DISCRETE_NAV = {"MoveAhead": "MoveAhead_25", "RotateLeft": "RotateLeft_90", "RotateRight": "RotateRight_90",
-                "LookUp": "LookUp_15", "LookDown": "LookDown_15"}
-
 
 def nav_api(action: str) -> dict[str, Any]:
     """The api_action ALFRED records for a navigation step."""

@@ -11,10 +11,11 @@ import numpy as np
 
 from luminous_sim.cdf.predicates import And, Atom, Exists, Expr, Not
 from luminous_sim.errors import PlanningError
-from luminous_sim.planning.alfred_actions import DISCRETE_NAV, interaction_api, nav_api, type_name
+from luminous_sim.planning.alfred_actions import interaction_api, nav_api, type_name
 from luminous_sim.planning.expand import Step, _gating_parent, expand
 from luminous_sim.planning.navigation import NavGraph, goto_actions
 from luminous_sim.planning.trajectory import Trajectory
+from luminous_sim.vocab import DISCRETE_NAVIGATION
 from luminous_sim.world.masks import interaction_args
 from luminous_sim.world.poses import find_interaction_pose
 from luminous_sim.world.world import World
@@ -179,7 +180,7 @@ class Oracle:
         except Exception as exc:  # networkx.NetworkXNoPath
             raise ExecutionError(f"no path to {object_id}: {exc}") from exc
         for a in steps:
-            self._low(nav_api(a), {"action": DISCRETE_NAV[a], "args": {}}, high_idx, traj)
+            self._low(nav_api(a), {"action": DISCRETE_NAVIGATION[a], "args": {}}, high_idx, traj)
         return pose
 
     def _interact(self, step: Step, high_idx: int, traj: Trajectory) -> None:

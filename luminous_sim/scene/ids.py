@@ -20,9 +20,17 @@ def thor_object_id(object_type: str, position: tuple[float, float, float], taken
 
 
 def type_of_id(object_id: str) -> str:
-    """The object type in an id: `Apple|+00.1|...` -> Apple, `Apple|...|AppleSliced_2` -> AppleSliced."""
-    last = object_id.split("|")[-1]
+    """The object type an AI2-THOR/ALFRED id names (its `objectType`).
+
+    `Apple|+00.46|+00.82|+02.27` -> Apple; a slice `Apple|...|AppleSliced_2` -> AppleSliced; a basin
+    `Sink|...|SinkBasin` -> SinkBasin (the part after the position names the sub-object); our clash suffix
+    `Apple|...|2` -> Apple.
+    """
+    parts = object_id.split("|")
+    last = parts[-1]
     head, _, tail = last.rpartition("_")
     if head.isalpha() and tail.isdigit():
         return head
-    return object_id.split("|")[0]
+    if len(parts) == 5 and last.isalpha():
+        return last
+    return parts[0]

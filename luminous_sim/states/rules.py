@@ -11,17 +11,16 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from luminous_sim.states.model import WorldState
-from luminous_sim.states.tables import (
-    CLOSED_TO_SWITCH_ON,
-    GATING_OPENABLE,
-    HIGH_LEVEL_ONLY,
-    INTERACTIONS,
-    NAVIGATION,
-    SLICING_TOOLS,
-)
+from luminous_sim.states.tables import CLOSED_TO_SWITCH_ON, GATING_OPENABLE, HIGH_LEVEL_ONLY
 from luminous_sim.states.transitions import effects
 from luminous_sim.states.update import apply
-from luminous_sim.vocab import abilities, can_contain
+from luminous_sim.vocab import (
+    INTERACTION_ACTIONS,
+    SLICING_TOOLS,
+    STATE_NEUTRAL_ACTIONS,
+    abilities,
+    can_contain,
+)
 
 __all__ = ["apply", "check", "effects", "enclosing_closed", "step"]
 
@@ -130,7 +129,7 @@ def check(
     """Whether the object-state rules allow an action.
 
     Args:
-        action: an ALFRED low-level action name (`tables.INTERACTIONS`); navigation actions are
+        action: an ALFRED low-level action name (`vocab.INTERACTION_ACTIONS`); navigation actions are
             always allowed.
         state: the current state.
         target: the object acted on; for PutObject the held object (None means "the held one").
@@ -139,7 +138,7 @@ def check(
     Returns:
         None if allowed, else a message naming the objects involved and what is wrong.
     """
-    if action in NAVIGATION:
+    if action in STATE_NEUTRAL_ACTIONS:
         return None
     if action in HIGH_LEVEL_ONLY:
         return f"{action} is a planner action, not a low-level one: use {HIGH_LEVEL_ONLY[action]}"
@@ -147,7 +146,7 @@ def check(
         return _put(state, target, receptacle)
     rule = _RULES.get(action)
     if rule is None:
-        return f"unknown action {action!r}; expected one of {', '.join(INTERACTIONS)}"
+        return f"unknown action {action!r}; expected one of {', '.join(INTERACTION_ACTIONS)}"
     if target is None:
         return f"{action} needs a target object"
     if target not in state:

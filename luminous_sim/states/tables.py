@@ -1,29 +1,10 @@
-"""Data for the state rules: which types cook, fill, slice, gate access; the action names."""
+"""Data for the state rules: which types cook, gate access, switch off or heat on a stove; slices.
+
+The action names, fillable vessels and slicing tools are vocabulary (`luminous_sim.vocab`)."""
 
 from __future__ import annotations
 
 from luminous_sim.vocab import SLICED_TYPES, vocab_data
-
-INTERACTIONS: tuple[str, ...] = (
-    "PickupObject",
-    "PutObject",
-    "OpenObject",
-    "CloseObject",
-    "ToggleObjectOn",
-    "ToggleObjectOff",
-    "SliceObject",
-)
-"""ALFRED's low-level interaction actions (spec/alfred.md section 2.2), the ones the rules judge."""
-
-NAVIGATION: tuple[str, ...] = (
-    "MoveAhead",
-    "RotateLeft",
-    "RotateRight",
-    "LookUp",
-    "LookDown",
-    "NoOp",
-)
-"""Actions that change no object state: `check` allows them and `effects` returns nothing."""
 
 HIGH_LEVEL_ONLY: dict[str, str] = {
     "CleanObject": "PutObject into a SinkBasin, then ToggleObjectOn its Faucet",
@@ -31,9 +12,6 @@ HIGH_LEVEL_ONLY: dict[str, str] = {
     "CoolObject": "PutObject into a Fridge, then CloseObject",
 }
 """Planner actions with no low-level counterpart -> the low-level actions that achieve them."""
-
-SLICING_TOOLS: frozenset[str] = frozenset({"Knife", "ButterKnife"})
-"""What the agent must hold to slice (ALFRED: any type whose name contains "Knife")."""
 
 GATING_OPENABLE: frozenset[str] = frozenset(vocab_data()["openable"])
 """ALFRED's OPENABLE_CLASS_LIST (Fridge, Cabinet, Microwave, Drawer, Safe, Box): while closed,
@@ -57,21 +35,6 @@ FOOD_COOKABLE: frozenset[str] = frozenset(
     }
 )
 """Food that becomes isCooked when heated."""
-
-FILLABLE: frozenset[str] = frozenset(
-    {
-        "Bowl",
-        "Cup",
-        "Glassbottle",
-        "HousePlant",
-        "Kettle",
-        "Mug",
-        "Pot",
-        "WateringCan",
-        "WineBottle",
-    }
-)
-"""Vessels that fill with water under a running faucet (AI2-THOR's canFillWithLiquid types)."""
 
 STOVE_VESSELS: frozenset[str] = frozenset({"Pot", "Pan", "Kettle"})
 """What a StoveBurner heats (ALFRED's table lets only these stand on a burner)."""

@@ -23,12 +23,11 @@ from luminous_sim.states.effects import (
 from luminous_sim.states.model import StateError, WorldState
 from luminous_sim.states.tables import (
     DEFAULT_SLICE_COUNTS,
-    FILLABLE,
     FOOD_COOKABLE,
-    NAVIGATION,
     OFF_WHEN_OPENED,
     SLICE_OF,
 )
+from luminous_sim.vocab import FILLABLE, STATE_NEUTRAL_ACTIONS
 
 
 def _set(state: WorldState, object_id: str, field: str, value: Any) -> list[Effect]:
@@ -152,7 +151,7 @@ def effects(
     why = check(action, state, target, receptacle)
     if why is not None:
         raise StateError(f"{action} is not allowed: {why}")
-    if action in NAVIGATION:
+    if action in STATE_NEUTRAL_ACTIONS:
         return []
     if action == "PutObject":
         held, recep = state.held, receptacle

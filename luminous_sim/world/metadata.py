@@ -5,8 +5,7 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING, Any
 
-from luminous_sim.states.tables import FILLABLE
-from luminous_sim.vocab import abilities
+from luminous_sim.vocab import FILLABLE, abilities
 
 if TYPE_CHECKING:
     from luminous_sim.world.world import World

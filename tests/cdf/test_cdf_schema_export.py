@@ -33,6 +33,16 @@ def test_schema_shape() -> None:
     assert "cdf-expression" not in json.dumps(schema)
 
 
+def test_schema_names_are_the_documents_not_the_classes() -> None:
+    """`$defs` are keyed by title: the classes are `SceneSpec`, ... (the runtime owns `Scene`, ...)."""
+    from luminous_sim.cdf import AgentPoseSpec, ObjectStateSpec, SceneSpec
+
+    defs = schema_dict()["$defs"]
+    for cls, name in ((SceneSpec, "Scene"), (AgentPoseSpec, "AgentPose"), (ObjectStateSpec, "ObjectState")):
+        assert defs[name]["title"] == name and cls.__name__ not in defs
+    assert '"#/$defs/SceneSpec"' not in schema_text()
+
+
 @pytest.mark.parametrize("path", [p for p in EXAMPLES if "v1" not in p.stem], ids=lambda p: p.stem)
 def test_current_examples_satisfy_the_json_schema(path: Path) -> None:
     jsonschema = pytest.importorskip("jsonschema")

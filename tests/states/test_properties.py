@@ -6,11 +6,11 @@ from hypothesis import HealthCheck, event, given, settings
 from hypothesis import strategies as st
 
 from luminous_sim.states import WorldState, apply, check, rules
-from luminous_sim.states.tables import HIGH_LEVEL_ONLY, INTERACTIONS
-from luminous_sim.vocab import abilities
+from luminous_sim.states.tables import HIGH_LEVEL_ONLY
+from luminous_sim.vocab import INTERACTION_ACTIONS, abilities
 from tests.states.kitchen import LAYOUT, kitchen
 
-ACTIONS = (*INTERACTIONS, *INTERACTIONS, *HIGH_LEVEL_ONLY, "MoveAhead", "Jump")
+ACTIONS = (*INTERACTION_ACTIONS, *INTERACTION_ACTIONS, *HIGH_LEVEL_ONLY, "MoveAhead", "Jump")
 OPENABLE = [k for k, (t, _) in LAYOUT.items() if t in ("Fridge", "Microwave", "Cabinet", "Drawer", "Box", "Laptop")]
 TOGGLEABLE = [k for k, (t, _) in LAYOUT.items() if t in ("Microwave", "Faucet", "StoveKnob", "StoveBurner", "Laptop")]
 DIRTYABLE = ["Mug|1", "Bowl|1", "Plate|1", "Cup|1", "Pot|1", "Pan|1"]
@@ -79,7 +79,7 @@ def test_random_sequences_keep_invariants(state: WorldState, data: st.DataObject
 
 
 @settings(max_examples=100, deadline=None)
-@given(initial(), st.sampled_from(sorted(LAYOUT)), st.sampled_from(INTERACTIONS))
+@given(initial(), st.sampled_from(sorted(LAYOUT)), st.sampled_from(INTERACTION_ACTIONS))
 def test_allowed_interactions_change_something(state: WorldState, target: str, action: str) -> None:
     if action == "PutObject":
         state = kitchen(held="Apple|1")

@@ -16,11 +16,11 @@ import numpy as np
 from luminous_sim.language.speaker.errors import SpeakerError
 from luminous_sim.language.speaker.records import LowAction, Subgoal, Trajectory, load_trajectory
 from luminous_sim.language.speaker.text import tokenize
+from luminous_sim.vocab import DISCRETE_NAVIGATION
 
 STEP, GOAL, SEP = "<step>", "<goal>", "<sep>"
-NAV_ACTIONS = frozenset(
-    {"MoveAhead_25", "RotateLeft_90", "RotateRight_90", "LookUp_15", "LookDown_15"}
-)
+NAV_ACTIONS = frozenset(DISCRETE_NAVIGATION.values())
+"""ALFRED's discrete navigation tokens (`MoveAhead_25`, ...): runs of one are merged into a count."""
 MAX_COUNT = 10
 
 

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import json
-import re
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -11,8 +10,7 @@ from typing import Any
 import numpy as np
 
 from luminous_sim.language.speaker.errors import SpeakerError
-
-_SLICE_SUFFIX = re.compile(r"_\d+$")
+from luminous_sim.scene.ids import type_of_id
 
 
 def object_type(object_id: str) -> str:
@@ -21,9 +19,7 @@ def object_type(object_id: str) -> str:
     ``Apple|+00.1|+00.9|-01.2`` -> ``apple``; ``Sink|...|SinkBasin`` -> ``sinkbasin``;
     ``Apple|...|AppleSliced_1`` -> ``applesliced``.
     """
-    parts = object_id.split("|")
-    name = parts[-1] if len(parts) > 4 else parts[0]
-    return _SLICE_SUFFIX.sub("", name).lower()
+    return type_of_id(object_id).lower()
 
 
 @dataclass(frozen=True)

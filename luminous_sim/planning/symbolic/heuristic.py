@@ -27,8 +27,8 @@ from luminous_sim.planning.symbolic.semantics import (
     signature,
 )
 from luminous_sim.states import WorldState
-from luminous_sim.states.tables import FILLABLE, GATING_OPENABLE, SLICE_OF, SLICING_TOOLS
-from luminous_sim.vocab import SLICED_TYPES, abilities, can_contain
+from luminous_sim.states.tables import GATING_OPENABLE, SLICE_OF
+from luminous_sim.vocab import FILLABLE, SLICED_TYPES, SLICING_TOOLS, abilities, can_contain
 
 INF = math.inf
 MACRO = 5.0

@@ -30,13 +30,12 @@ from luminous_sim.planning.symbolic.semantics import (
 from luminous_sim.states import WorldState
 from luminous_sim.states.tables import (
     DEFAULT_SLICE_COUNTS,
-    FILLABLE,
     GATING_OPENABLE,
     SLICE_OF,
     slice_id,
 )
 from luminous_sim.tasks.expressions import parents
-from luminous_sim.vocab import abilities, can_contain
+from luminous_sim.vocab import FILLABLE, abilities, can_contain
 
 ESCAPES: tuple[tuple[str, str], ...] = (
     ("-", "_minus_"),

@@ -27,8 +27,8 @@ from luminous_sim.cdf.predicates import (
 )
 from luminous_sim.planning.symbolic.semantics import AT_LOCATION, constants, resolve
 from luminous_sim.states import WorldState
-from luminous_sim.states.tables import FILLABLE, GATING_OPENABLE, SLICING_TOOLS
-from luminous_sim.vocab import SLICED_TYPES, abilities, can_contain
+from luminous_sim.states.tables import GATING_OPENABLE
+from luminous_sim.vocab import FILLABLE, SLICED_TYPES, SLICING_TOOLS, abilities, can_contain
 
 DEVICE_TYPES: dict[str, str] = {"isHot": "Microwave", "isCool": "Fridge"}
 WASHING = frozenset({"isClean", "isDirty", "isFilled"})

@@ -20,8 +20,7 @@ from luminous_sim.planning.symbolic.macros import try_action
 from luminous_sim.planning.symbolic.relevance import Relevance
 from luminous_sim.planning.symbolic.semantics import anchor, signature
 from luminous_sim.states import WorldState, enclosing_closed
-from luminous_sim.states.tables import SLICING_TOOLS
-from luminous_sim.vocab import abilities, can_contain
+from luminous_sim.vocab import SLICING_TOOLS, abilities, can_contain
 
 _MACROS = (("HeatObject", "isHot"), ("CoolObject", "isCool"), ("CleanObject", "isClean"))
 
