@@ -15,7 +15,6 @@ from luminous_sim.cssg.requests import Request
 from luminous_sim.cssg.tables import supports_for
 from luminous_sim.cssg.walls import clashes
 from luminous_sim.scene import (
-    HANGERS,
     RegionSpot,
     Shade,
     View,
@@ -27,7 +26,7 @@ from luminous_sim.scene import (
     sample_in_region,
     shades,
 )
-from luminous_sim.vocab import abilities
+from luminous_sim.vocab import HANGERS, abilities
 
 MAX_FILL = 0.85
 """Share of a region that footprints may cover before the region counts as full."""

@@ -11,7 +11,8 @@ from collections.abc import Iterable
 
 import numpy as np
 
-from luminous_sim.scene import HANGERS, Scene
+from luminous_sim.scene import Scene
+from luminous_sim.vocab import HANGERS
 from luminous_sim.tasks.model import PddlParams, TaskInstance
 from luminous_sim.tasks.sample import sample_task
 from luminous_sim.vocab import parent_type

@@ -22,7 +22,6 @@ from luminous_sim.scene.pose import (
 )
 from luminous_sim.scene.reach import REACH, horizontal_reach, reach_of
 from luminous_sim.scene.regions import (
-    HANGERS,
     RegionSpot,
     fits,
     hang_pose,
@@ -34,7 +33,6 @@ from luminous_sim.scene.sight import Shade, View, in_sight, shades
 
 __all__ = [
     "AGENT_HEIGHT",
-    "HANGERS",
     "Layer",
     "REACH",
     "STEP",

@@ -176,7 +176,6 @@ def _square(ring: list) -> bool:
                                   for a, b in pairwise(ring))
 
 
-HANGERS = frozenset({"TowelHolder", "HandTowelHolder", "ToiletPaperHanger"})
 """Receptacles that things hang on (a bar, a ring, a spindle) rather than stand in."""
 
 
