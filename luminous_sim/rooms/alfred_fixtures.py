@@ -86,19 +86,11 @@ def _slot_near(
     return best
 
 
-def kitchen_plan_from_layout(
+def _kitchen_plan(
     layout: AlfredLayout, walls: Sequence[Wall], floor: Polygon
 ) -> FixturePlan | None:
-    """Counter runs, sink, stove and fridge for a converted kitchen.
-
-    Args:
-        layout: the scene's ALFRED data (receptacle positions give the hints).
-        walls: the converted room's walls.
-        floor: its floor polygon.
-
-    Returns:
-        The plan, or None when the hints give no counter run or no room for the appliances.
-    """
+    """Counter runs, sink, stove and fridge; None when the hints give no counter run or no room
+    for the appliances."""
     d = KITCHEN
     fridge_hint = next(iter(layout.positions("Fridge")), None)
     fw = FRIDGE_WIDTH
@@ -135,7 +127,8 @@ def kitchen_plan_from_layout(
     # The sink goes in the run nearest to ALFRED's sink.
     sink_hint = next(iter(layout.positions("Sink")), None)
     sink = None
-    run_order = sorted(range(len(runs)), key=lambda i: (-(runs[i].end - runs[i].start), i))
+    longest_first = sorted(range(len(runs)), key=lambda i: (-(runs[i].end - runs[i].start), i))
+    run_order = longest_first
     if sink_hint is not None:
 
         def run_dist(i: int) -> float:
@@ -174,9 +167,9 @@ def kitchen_plan_from_layout(
     for sw in d.stove_widths[::-1]:
         for i, r in enumerate(runs):
             wall = by_id[r.wall]
-            near = sink if r.wall == sink.wall else None
+            same_wall = sink if r.wall == sink.wall else None
             lo, hi = r.start + RUN_END_GAP, r.end - RUN_END_GAP
-            for u in offsets_clear_of(lo, hi, sw, near, STOVE_SINK_GAP):
+            for u in offsets_clear_of(lo, hi, sw, same_wall, STOVE_SINK_GAP):
                 c = footprint(wall, u, sw, d.counter_depth).centroid
                 key = (round(abs(c.distance(sink_c) - STOVE_SINK_DISTANCE), 6), i, u)
                 if best_key is None or key < best_key:
@@ -189,7 +182,7 @@ def kitchen_plan_from_layout(
 
     if fridge is None:
         # No position: the fridge takes a free end of the longest run.
-        for i in sorted(range(len(runs)), key=lambda i: (-(runs[i].end - runs[i].start), i)):
+        for i in longest_first:
             wall = by_id[runs[i].wall]
             for end in ("end", "start"):
                 u_f, rest = cut_run_end(runs[i], end, fw)
@@ -211,19 +204,11 @@ def kitchen_plan_from_layout(
     return kitchen_plan(name, runs, sink, stove, Place(fridge[0].id, fridge[1], fw), d)
 
 
-def bathroom_plan_from_layout(
+def _bathroom_plan(
     layout: AlfredLayout, walls: Sequence[Wall], floor: Polygon
 ) -> FixturePlan | None:
-    """Bathtub (or shower stall), toilet and sink (with a vanity counter) for a converted bathroom.
-
-    Args:
-        layout: the scene's ALFRED data (receptacle positions give the hints).
-        walls: the converted room's walls.
-        floor: its floor polygon.
-
-    Returns:
-        The plan, or None when a fixture does not fit.
-    """
+    """Bathtub (or shower stall), toilet and sink (with a vanity counter); None when one of them
+    does not fit."""
     d = BATHROOM
     pts = layout.points
     obstacles: list[Polygon] = []
@@ -263,7 +248,7 @@ def bathroom_plan_from_layout(
             if placed is not None:
                 wall, u = placed
                 vanity = Place(wall.id, u, vw)
-                sink = Place(wall.id, centred(u, vw, d.sink_width), d.sink_width)
+                sink = Place(wall.id, centred(u, vw, d.sink_width), d.sink_width, run=0)
                 break
     if sink is None:
         placed = _slot_near(
@@ -273,3 +258,25 @@ def bathroom_plan_from_layout(
             return None
         sink = Place(placed[0].id, placed[1], d.sink_width)
     return bathroom_plan(bath, toilet, sink, vanity, shower=shower, dims=d)
+
+
+def plan_from_layout(
+    room_type: str, layout: AlfredLayout, walls: Sequence[Wall], floor: Polygon
+) -> FixturePlan | None:
+    """The fixtures of a converted room, where ALFRED's objects are: a kitchen's or a bathroom's
+    plan, other rooms an empty one.
+
+    Args:
+        room_type: the room's type.
+        layout: the scene's ALFRED data (receptacle positions give the hints).
+        walls: the converted room's walls.
+        floor: its floor polygon.
+
+    Returns:
+        The plan, or None when the hints give none (the procedural planner then draws one).
+    """
+    if room_type == "Kitchen":
+        return _kitchen_plan(layout, walls, floor)
+    if room_type == "Bathroom":
+        return _bathroom_plan(layout, walls, floor)
+    return FixturePlan()

@@ -1,4 +1,4 @@
-"""The one fixture-plan builder: chosen places along walls become a kitchen's or bathroom's FixturePlan.
+"""The fixture-plan builder: places chosen along walls become a kitchen's or bathroom's FixturePlan.
 
 Two sources propose the places: `fixtures` (procedural rooms: drawn from the free wall stretches
 with the rng) and `alfred_fixtures` (converted AI2-THOR rooms: where ALFRED's objects are). A source
@@ -13,13 +13,12 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
-from typing import Literal
 
 import numpy as np
 
 from luminous_sim.rooms.geometry import r4
 from luminous_sim.rooms.placement import STEP, corner_convex
-from luminous_sim.rooms.shell import CounterRun, FixturePlan, FixtureSlot, Wall
+from luminous_sim.rooms.shell import CounterRun, FixturePlan, FixtureSlot, SlotType, Wall
 
 
 @dataclass(frozen=True)
@@ -118,8 +117,9 @@ def offsets_clear_of(
     return out
 
 
-def cut_run_end(span: Span, end: Literal["start", "end"], width: float) -> tuple[float, Span]:
-    """A fixture `width` wide at one end of a counter run: its offset, and the run that is left."""
+def cut_run_end(span: Span, end: str, width: float) -> tuple[float, Span]:
+    """A fixture `width` wide at the `end` ("start" or "end") of a counter run: its offset, and the
+    run that is left."""
     if end == "start":
         return span.start, Span(span.wall, r4(span.start + width), span.end)
     offset = r4(span.end - width)
@@ -156,6 +156,20 @@ def _counter_id(i: int) -> str:
     return f"CounterTop_{i}"
 
 
+def _slot(kind: SlotType, place: Place, depth: float, height: float) -> FixtureSlot:
+    """The slot `<kind>_0` at `place`, held by counter run `place.run` if given."""
+    return FixtureSlot(
+        id=f"{kind}_0",
+        type=kind,
+        wall=place.wall,
+        offset=place.offset,
+        width=place.width,
+        depth=depth,
+        height=height,
+        counter=None if place.run is None else _counter_id(place.run),
+    )
+
+
 def kitchen_plan(
     layout: str,
     runs: Sequence[Span],
@@ -186,29 +200,11 @@ def kitchen_plan(
         )
         for i, r in enumerate(runs)
     )
-    in_counter = [
-        FixtureSlot(
-            id=f"{kind}_0",
-            type=kind,
-            wall=p.wall,
-            offset=p.offset,
-            width=p.width,
-            depth=d.counter_depth,
-            height=d.counter_height,
-            counter=None if p.run is None else _counter_id(p.run),
-        )
-        for kind, p in (("Sink", sink), ("StoveBurner", stove))
-    ]
-    fridge_slot = FixtureSlot(
-        id="Fridge_0",
-        type="Fridge",
-        wall=fridge.wall,
-        offset=fridge.offset,
-        width=fridge.width,
-        depth=d.fridge_depth,
-        height=d.fridge_height,
+    slots = (
+        _slot("Sink", sink, d.counter_depth, d.counter_height),
+        _slot("StoveBurner", stove, d.counter_depth, d.counter_height),
+        _slot("Fridge", fridge, d.fridge_depth, d.fridge_height),
     )
-    slots = (*in_counter, fridge_slot)
     return FixturePlan(layout=layout, counters=counters, slots=slots)  # type: ignore[arg-type]
 
 
@@ -221,12 +217,12 @@ def bathroom_plan(
     sink_first: bool = False,
     dims: BathroomDims = BATHROOM,
 ) -> FixturePlan:
-    """The bathroom plan: a bathtub (or shower stall), a toilet, a sink (in a vanity counter if any).
+    """The bathroom plan: a bathtub (or shower stall), a toilet, a sink (in a vanity, if any).
 
     Args:
         bath: the bathtub's place (or the stall's, with `shower`).
         toilet: the toilet's place.
-        sink: the sink's place (inside `vanity`, if given).
+        sink: the sink's place; `run=0` when it stands in `vanity`.
         vanity: the vanity counter `CounterTop_0`, or None for a free-standing sink.
         shower: a square shower stall instead of a bathtub.
         sink_first: list the sink slot first (the procedural rooms' order; converted rooms list it
@@ -246,35 +242,12 @@ def bathroom_plan(
                 height=d.vanity_height,
             ),
         )
-    kind = "Shower" if shower else "Bathtub"
-    bath_slot = FixtureSlot(
-        id=f"{kind}_0",
-        type=kind,
-        wall=bath.wall,
-        offset=bath.offset,
-        width=bath.width,
-        depth=d.shower_size if shower else d.tub_depth,
-        height=d.shower_height if shower else d.tub_height,
-    )
-    toilet_slot = FixtureSlot(
-        id="Toilet_0",
-        type="Toilet",
-        wall=toilet.wall,
-        offset=toilet.offset,
-        width=toilet.width,
-        depth=d.toilet_depth,
-        height=d.toilet_height,
-    )
-    sink_slot = FixtureSlot(
-        id="Sink_0",
-        type="Sink",
-        wall=sink.wall,
-        offset=sink.offset,
-        width=sink.width,
-        depth=d.sink_depth,
-        height=d.vanity_height,
-        counter=counters[0].id if counters else None,
-    )
+    if shower:
+        bath_slot = _slot("Shower", bath, d.shower_size, d.shower_height)
+    else:
+        bath_slot = _slot("Bathtub", bath, d.tub_depth, d.tub_height)
+    toilet_slot = _slot("Toilet", toilet, d.toilet_depth, d.toilet_height)
+    sink_slot = _slot("Sink", sink, d.sink_depth, d.vanity_height)
     slots = (
         (sink_slot, bath_slot, toilet_slot) if sink_first else (bath_slot, toilet_slot, sink_slot)
     )

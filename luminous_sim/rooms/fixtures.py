@@ -1,9 +1,9 @@
-"""Procedural fixture slots: kitchens (counter runs in I, L or U layouts, sink, stove, fridge), bathrooms.
+"""Procedural fixture places: kitchen counter runs (I, L or U), sink, stove, fridge; bathrooms.
 
 One of the two sources of the plan builder `fixture_plan`: the planners here choose where each
 fixture goes among the free wall stretches, drawing every random choice from the Generator they are
 given, and return None when the room cannot take a plan (the caller then redraws the room or its
-doors). Dimensions are data (`KITCHEN`, `BATHROOM`); offsets are multiples of 5 cm.
+doors). Dimensions are data (`fixture_plan.KITCHEN`, `BATHROOM`); offsets are multiples of 5 cm.
 """
 
 from __future__ import annotations
@@ -129,27 +129,15 @@ def _usable(run: _Run, d: KitchenDims) -> tuple[float, float]:
     return a, b
 
 
-def plan_kitchen(
+def _plan_kitchen(
     walls: Sequence[Wall],
     floor: Polygon,
     rng: np.random.Generator,
-    region: BaseGeometry | None = None,
-    keepouts: Sequence[BaseGeometry] = (),
+    region: BaseGeometry | None,
+    keepouts: Sequence[BaseGeometry],
     dims: KitchenDims = KITCHEN,
 ) -> FixturePlan | None:
-    """Draw a kitchen plan: counter runs in an I, L or U layout, a sink, a stove and a fridge.
-
-    Args:
-        walls: the room's walls.
-        floor: the floor polygon.
-        rng: source of every random choice.
-        region: where fixtures may go (a kitchen's work zone); default the whole floor.
-        keepouts: areas fixtures must not touch (door clearance zones).
-        dims: fixture sizes.
-
-    Returns:
-        The plan, or None if no layout fits.
-    """
+    """Counter runs in an I, L or U layout, a sink, a stove and a fridge; None if no layout fits."""
     d = dims
     region = floor if region is None else region.intersection(floor)
     avail = [
@@ -271,29 +259,16 @@ def _wall_offsets(
     ]
 
 
-def plan_bathroom(
+def _plan_bathroom(
     walls: Sequence[Wall],
     floor: Polygon,
     rng: np.random.Generator,
-    keepouts: Sequence[BaseGeometry] = (),
-    bath_region: BaseGeometry | None = None,
-    vanity_region: BaseGeometry | None = None,
+    keepouts: Sequence[BaseGeometry],
+    bath_region: BaseGeometry | None,
+    vanity_region: BaseGeometry | None,
     dims: BathroomDims = BATHROOM,
 ) -> FixturePlan | None:
-    """Draw a bathroom plan: a bathtub in a corner, a toilet, a sink (often in a vanity counter).
-
-    Args:
-        walls: the room's walls.
-        floor: the floor polygon.
-        rng: source of every random choice.
-        keepouts: areas fixtures must not touch (door clearance zones).
-        bath_region: where the tub and toilet go (a two-zone bathroom's `bath` zone).
-        vanity_region: where the sink goes (its `vanity` zone).
-        dims: fixture sizes.
-
-    Returns:
-        The plan, or None if the fixtures do not fit.
-    """
+    """A bathtub in a corner, a toilet, a sink (often in a vanity); None if they do not fit."""
     d = dims
     bath = floor if bath_region is None else bath_region.intersection(floor)
     vanity_zone = floor if vanity_region is None else vanity_region.intersection(floor)
@@ -345,7 +320,7 @@ def plan_bathroom(
             if opts:
                 w, u = _pick(rng, opts)
                 vanity = Place(w.id, u, vw)
-                sink = Place(w.id, _sink_offset(rng, u, vw, d), d.sink_width)
+                sink = Place(w.id, _sink_offset(rng, u, vw, d), d.sink_width, run=0)
                 break
     if sink is None:
         opts = _wall_offsets(
@@ -357,3 +332,33 @@ def plan_bathroom(
         sink = Place(w.id, u, d.sink_width)
     tub, toilet = Place(tw.id, tu, tl), Place(ow.id, ou, d.toilet_width)
     return bathroom_plan(tub, toilet, sink, vanity, sink_first=True, dims=d)
+
+
+def plan_fixtures(
+    room_type: str,
+    walls: Sequence[Wall],
+    floor: Polygon,
+    rng: np.random.Generator,
+    keepouts: Sequence[BaseGeometry] = (),
+    zones: Sequence[BaseGeometry | None] = (None, None),
+) -> FixturePlan | None:
+    """Draw the fixtures a room keeps: a kitchen's or a bathroom's plan, other rooms an empty one.
+
+    Args:
+        room_type: the room's type.
+        walls: the room's walls.
+        floor: the floor polygon.
+        rng: source of every random choice.
+        keepouts: areas fixtures must not touch (door clearance zones).
+        zones: the room's two zones in its spec's order, None for none (the whole floor): a
+            kitchen's fixtures go in the first (`work`); a bathroom's bathtub and toilet go in the
+            first (`bath`), its sink in the second (`vanity`).
+
+    Returns:
+        The plan, or None if the fixtures do not fit (the caller redraws the room or its doors).
+    """
+    if room_type == "Kitchen":
+        return _plan_kitchen(walls, floor, rng, zones[0], keepouts)
+    if room_type == "Bathroom":
+        return _plan_bathroom(walls, floor, rng, keepouts, zones[0], zones[1])
+    return FixturePlan()
