@@ -11,8 +11,8 @@ object types present, and (in `-openable.json`) receptacle objectIds, which enco
    than 1 m closed, holes (furniture islands) filled, vertices snapped to 5 cm, and steps and
    notches removed greedily (each removal changing at most 1 square metre or 3% of the area) while
    every reachable point keeps 0.25 m from the walls, so `grid_points()` recovers it.
-2. Fixtures (`alfred_fixtures`): kitchens get counter runs, sink, stove and fridge; bathrooms a
-   toilet, sink and bathtub (or shower stall), where ALFRED's objects are.
+2. Fixtures (`alfred_fixtures`, built by `fixture_plan`): kitchens get counter runs, sink, stove
+   and fridge; bathrooms a toilet, sink and bathtub (or shower stall), where ALFRED's objects are.
 3. One door where the reachable area comes closest to a wall (no furniture there), free of
    fixtures; a window on the longest other wall when the scene lists a Window.
 
@@ -42,8 +42,8 @@ from luminous_sim.rooms.alfred_data import (
     scene_split,
     splits_document,
 )
-from luminous_sim.rooms.alfred_fixtures import bathroom_plan_from_layout, kitchen_plan_from_layout
-from luminous_sim.rooms.fixtures import plan_bathroom, plan_kitchen
+from luminous_sim.rooms.alfred_fixtures import plan_from_layout
+from luminous_sim.rooms.fixtures import plan_fixtures
 from luminous_sim.rooms.geometry import (
     canonical_ring,
     merge_intervals,
@@ -56,7 +56,6 @@ from luminous_sim.rooms.placement import STEP, free_offsets
 from luminous_sim.rooms.rectilinear import rectilinear_outline
 from luminous_sim.rooms.shell import (
     Door,
-    FixturePlan,
     RoomShell,
     Wall,
     Window,
@@ -241,11 +240,9 @@ def convert_layout(layout: AlfredLayout) -> RoomShell:
     walls = walls_from_outline(ring)
     floor = Polygon(ring)
     rng = np.random.default_rng(layout.scene)
-    plan: FixturePlan | None = FixturePlan()
-    if room_type == "Kitchen":
-        plan = kitchen_plan_from_layout(layout, walls, floor) or plan_kitchen(walls, floor, rng)
-    elif room_type == "Bathroom":
-        plan = bathroom_plan_from_layout(layout, walls, floor) or plan_bathroom(walls, floor, rng)
+    plan = plan_from_layout(room_type, layout, walls, floor) or plan_fixtures(
+        room_type, walls, floor, rng
+    )
     if plan is None:
         raise RoomError(f"{name}: no {room_type.lower()} fixture plan fits the converted outline")
     n = len(ring)

@@ -1,8 +1,9 @@
-"""Fixture plans for kitchens (counter runs in I, L or U layouts, sink, stove, fridge), bathrooms.
+"""Procedural fixture places: kitchen counter runs (I, L or U), sink, stove, fridge; bathrooms.
 
-The planners draw every random choice from the Generator they are given, and return None when the
-room cannot take a plan (the caller then redraws the room or its doors). Dimensions are data
-(`KITCHEN`, `BATHROOM`); offsets are multiples of 5 cm.
+One of the two sources of the plan builder `fixture_plan`: the planners here choose where each
+fixture goes among the free wall stretches, drawing every random choice from the Generator they are
+given, and return None when the room cannot take a plan (the caller then redraws the room or its
+doors). Dimensions are data (`fixture_plan.KITCHEN`, `BATHROOM`); offsets are multiples of 5 cm.
 """
 
 from __future__ import annotations
@@ -14,63 +15,29 @@ import numpy as np
 from shapely.geometry import Polygon
 from shapely.geometry.base import BaseGeometry
 
-from luminous_sim.rooms.geometry import is_convex_vertex, r4
-from luminous_sim.rooms.placement import STEP, footprint, free_intervals, free_offsets
-from luminous_sim.rooms.shell import CounterRun, FixturePlan, FixtureSlot, Wall
-
-
-@dataclass(frozen=True)
-class KitchenDims:
-    """Kitchen fixture sizes, metres."""
-
-    counter_depth: float = 0.6
-    counter_height: float = 0.9
-    aisle: float = 1.0
-    sink_widths: tuple[float, ...] = (0.6, 0.8, 0.9)
-    stove_widths: tuple[float, ...] = (0.6, 0.75)
-    fridge_widths: tuple[float, ...] = (0.75, 0.8, 0.9)
-    fridge_depth: float = 0.7
-    fridge_height: float = 1.8
-    fridge_front: float = 0.9
-    end_gap: float = 0.1
-    stove_side: float = 0.3
-    sink_stove_gap: float = 0.4
-    min_run: float = 1.2
-
-
-@dataclass(frozen=True)
-class BathroomDims:
-    """Bathroom fixture sizes, metres."""
-
-    tub_lengths: tuple[float, ...] = (1.5, 1.6, 1.7)
-    tub_alcove_max: float = 1.85
-    tub_depth: float = 0.75
-    tub_height: float = 0.55
-    tub_front: float = 0.6
-    tub_slack: float = 0.05
-    """How far (m) a bathtub may stick out of its slot: our tubs are a few cm longer and deeper."""
-    toilet_width: float = 0.75
-    toilet_depth: float = 0.7
-    toilet_height: float = 0.8
-    toilet_front: float = 0.55
-    toilet_beside_tub: float = 0.75
-    """Probability that the toilet stands right beside the bathtub, on its wall, given room."""
-    beside_gap: float = 0.1
-    """Most floor (m) left between a toilet and the bathtub it stands beside."""
-    sink_width: float = 0.6
-    sink_depth: float = 0.5
-    vanity_widths: tuple[float, ...] = (0.8, 1.0, 1.2, 1.35)
-    vanity_counter: float = 0.7
-    """Least vanity length (m) beside the sink for a counter segment: a vanity this much wider
-    than the sink has its sink at one end and a counter top along the rest."""
-    vanity_depth: float = 0.55
-    vanity_height: float = 0.85
-    vanity_probability: float = 0.7
-    sink_front: float = 0.6
-
-
-KITCHEN = KitchenDims()
-BATHROOM = BathroomDims()
+from luminous_sim.rooms.fixture_plan import (
+    BATHROOM,
+    KITCHEN,
+    BathroomDims,
+    KitchenDims,
+    Place,
+    Span,
+    bathroom_plan,
+    centred,
+    cut_run_end,
+    kitchen_plan,
+    offset_grid,
+    offsets_clear_of,
+)
+from luminous_sim.rooms.geometry import r4
+from luminous_sim.rooms.placement import (
+    STEP,
+    corner_convex,
+    footprint,
+    free_intervals,
+    free_offsets,
+)
+from luminous_sim.rooms.shell import FixturePlan, Wall
 
 
 @dataclass(frozen=True)
@@ -80,12 +47,6 @@ class _Run:
     end: float
     corner_start: bool  # the run starts against the corner square of the previous run
     corner_end: bool  # the run ends with a corner square (the next run starts against it)
-
-
-def corner_convex(walls: Sequence[Wall], i: int) -> bool:
-    """Whether the corner between wall i and wall i+1 is convex (turns left)."""
-    a, b = walls[i], walls[(i + 1) % len(walls)]
-    return is_convex_vertex(a.start, a.end, b.end)
 
 
 def _pick(rng: np.random.Generator, items: Sequence, p: Sequence[float] | None = None):
@@ -168,32 +129,15 @@ def _usable(run: _Run, d: KitchenDims) -> tuple[float, float]:
     return a, b
 
 
-def _grid(a: float, b: float, width: float) -> np.ndarray:
-    lo, hi = np.ceil(a / STEP - 1e-9), np.floor((b - width) / STEP + 1e-9)
-    return np.round(np.arange(lo, hi + 1) * STEP, 4) if hi >= lo else np.zeros(0)
-
-
-def plan_kitchen(
+def _plan_kitchen(
     walls: Sequence[Wall],
     floor: Polygon,
     rng: np.random.Generator,
-    region: BaseGeometry | None = None,
-    keepouts: Sequence[BaseGeometry] = (),
+    region: BaseGeometry | None,
+    keepouts: Sequence[BaseGeometry],
     dims: KitchenDims = KITCHEN,
 ) -> FixturePlan | None:
-    """Draw a kitchen plan: counter runs in an I, L or U layout, a sink, a stove and a fridge.
-
-    Args:
-        walls: the room's walls.
-        floor: the floor polygon.
-        rng: source of every random choice.
-        region: where fixtures may go (a kitchen's work zone); default the whole floor.
-        keepouts: areas fixtures must not touch (door clearance zones).
-        dims: fixture sizes.
-
-    Returns:
-        The plan, or None if no layout fits.
-    """
+    """Counter runs in an I, L or U layout, a sink, a stove and a fridge; None if no layout fits."""
     d = dims
     region = floor if region is None else region.intersection(floor)
     avail = [
@@ -222,28 +166,14 @@ def plan_kitchen(
         r = runs[i]
         if r.end - r.start - fw < d.min_run - 1e-6:
             continue
-        u = r.start if e == "start" else r4(r.end - fw)
+        u, rest = cut_run_end(Span(r.wall.id, r.start, r.end), e, fw)
         ok = free_offsets(
             r.wall, fw, d.fridge_depth, region, keepouts, front=d.fridge_front, front_allowed=floor
         )
         if not np.any(np.isclose(ok, u)):
             continue
-        fridge = FixtureSlot(
-            id="Fridge_0",
-            type="Fridge",
-            wall=r.wall.id,
-            offset=u,
-            width=fw,
-            depth=d.fridge_depth,
-            height=d.fridge_height,
-        )
-        runs[i] = _Run(
-            r.wall,
-            r4(r.start + fw) if e == "start" else r.start,
-            u if e == "end" else r.end,
-            r.corner_start,
-            r.corner_end,
-        )
+        fridge = Place(r.wall.id, u, fw)
+        runs[i] = _Run(r.wall, rest.start, rest.end, r.corner_start, r.corner_end)
         break
     if fridge is None:
         return None
@@ -255,70 +185,32 @@ def plan_kitchen(
         if a.distance(c) < d.aisle - 1e-6:
             return None
 
-    counters = tuple(
-        CounterRun(
-            id=f"CounterTop_{i}",
-            wall=r.wall.id,
-            start=r.start,
-            end=r.end,
-            depth=d.counter_depth,
-            height=d.counter_height,
-        )
-        for i, r in enumerate(runs)
-    )
     sink_w = float(_pick(rng, d.sink_widths))
     stove_w = float(_pick(rng, d.stove_widths))
     order = list(range(len(runs)))
     rng.shuffle(order)
     sink = None
     for i in order:
-        us = _grid(*_usable(runs[i], d), sink_w)
+        us = offset_grid(*_usable(runs[i], d), sink_w)
         if len(us):
-            sink = (i, float(_pick(rng, list(us))))
+            sink = Place(runs[i].wall.id, float(_pick(rng, list(us))), sink_w, run=i)
             break
     if sink is None:
         return None
-    si, su = sink
     stove_opts: list[tuple[int, float]] = []
     for i, r in enumerate(runs):
         a, b = _usable(r, d)
         a, b = max(a, r.start + d.stove_side), min(b, r.end - d.stove_side)
-        for u in _grid(a, b, stove_w):
-            if i == si and not (
-                u + stove_w <= su - d.sink_stove_gap + 1e-6
-                or u >= su + sink_w + d.sink_stove_gap - 1e-6
-            ):
-                continue
-            stove_opts.append((i, float(u)))
+        near = sink if i == sink.run else None
+        stove_opts += [(i, u) for u in offsets_clear_of(a, b, stove_w, near, d.sink_stove_gap)]
     if not stove_opts:
         return None
-    other = [o for o in stove_opts if o[0] != si]
+    other = [o for o in stove_opts if o[0] != sink.run]
     pool = other if other and rng.random() < 0.7 else stove_opts
     ti, tu = _pick(rng, pool)
-    slots = (
-        FixtureSlot(
-            id="Sink_0",
-            type="Sink",
-            wall=runs[si].wall.id,
-            offset=su,
-            width=sink_w,
-            depth=d.counter_depth,
-            height=d.counter_height,
-            counter=counters[si].id,
-        ),
-        FixtureSlot(
-            id="StoveBurner_0",
-            type="StoveBurner",
-            wall=runs[ti].wall.id,
-            offset=tu,
-            width=stove_w,
-            depth=d.counter_depth,
-            height=d.counter_height,
-            counter=counters[ti].id,
-        ),
-        fridge,
-    )
-    return FixturePlan(layout=kind, counters=counters, slots=slots)
+    stove = Place(runs[ti].wall.id, tu, stove_w, run=ti)
+    spans = [Span(r.wall.id, r.start, r.end) for r in runs]
+    return kitchen_plan(kind, spans, sink, stove, fridge, d)
 
 
 def _beside(
@@ -337,35 +229,49 @@ def _sink_offset(rng: np.random.Generator, u: float, width: float, d: BathroomDi
     takes a counter segment; else in the middle."""
     if width - d.sink_width >= d.vanity_counter - 1e-6:
         return r4(u if rng.random() < 0.5 else u + width - d.sink_width)
-    return r4(u + (width - d.sink_width) / 2)
+    return centred(u, width, d.sink_width)
 
 
-def plan_bathroom(
+def _wall_offsets(
+    walls: Sequence[Wall],
+    width: float,
+    depth: float,
+    allowed: BaseGeometry,
+    obstacles: Sequence[BaseGeometry],
+    front: float,
+    floor: Polygon,
+    front_obstacles: Sequence[BaseGeometry],
+) -> list[tuple[Wall, float]]:
+    """Every (wall, offset) where a wall-backed slot fits in `allowed`, its front on the floor."""
+    return [
+        (w, float(u))
+        for w in walls
+        for u in free_offsets(
+            w,
+            width,
+            depth,
+            allowed,
+            obstacles,
+            front=front,
+            front_allowed=floor,
+            front_obstacles=front_obstacles,
+        )
+    ]
+
+
+def _plan_bathroom(
     walls: Sequence[Wall],
     floor: Polygon,
     rng: np.random.Generator,
-    keepouts: Sequence[BaseGeometry] = (),
-    bath_region: BaseGeometry | None = None,
-    vanity_region: BaseGeometry | None = None,
+    keepouts: Sequence[BaseGeometry],
+    bath_region: BaseGeometry | None,
+    vanity_region: BaseGeometry | None,
     dims: BathroomDims = BATHROOM,
 ) -> FixturePlan | None:
-    """Draw a bathroom plan: a bathtub in a corner, a toilet, a sink (often in a vanity counter).
-
-    Args:
-        walls: the room's walls.
-        floor: the floor polygon.
-        rng: source of every random choice.
-        keepouts: areas fixtures must not touch (door clearance zones).
-        bath_region: where the tub and toilet go (a two-zone bathroom's `bath` zone).
-        vanity_region: where the sink goes (its `vanity` zone).
-        dims: fixture sizes.
-
-    Returns:
-        The plan, or None if the fixtures do not fit.
-    """
+    """A bathtub in a corner, a toilet, a sink (often in a vanity); None if they do not fit."""
     d = dims
     bath = floor if bath_region is None else bath_region.intersection(floor)
-    vanity = floor if vanity_region is None else vanity_region.intersection(floor)
+    vanity_zone = floor if vanity_region is None else vanity_region.intersection(floor)
     n = len(walls)
     tub_opts: list[tuple[Wall, float, float]] = []
     for i, w in enumerate(walls):
@@ -388,117 +294,71 @@ def plan_bathroom(
     if not tub_opts:
         return None
     tw, tu, tl = _pick(rng, tub_opts)
-    tub = FixtureSlot(
-        id="Bathtub_0",
-        type="Bathtub",
-        wall=tw.id,
-        offset=tu,
-        width=tl,
-        depth=d.tub_depth,
-        height=d.tub_height,
-    )
     # other fixtures keep clear of the tub as built (a little longer and deeper than its slot)
     tub_foot = footprint(tw, tu - d.tub_slack, tl + 2 * d.tub_slack, d.tub_depth + d.tub_slack)
     obstacles = list(keepouts) + [tub_foot]
 
-    toilet_opts = [
-        (w, float(u))
-        for w in walls
-        for u in free_offsets(
-            w,
-            d.toilet_width,
-            d.toilet_depth,
-            bath,
-            obstacles,
-            front=d.toilet_front,
-            front_allowed=floor,
-            front_obstacles=[tub_foot],
-        )
-    ]
+    toilet_opts = _wall_offsets(
+        walls, d.toilet_width, d.toilet_depth, bath, obstacles, d.toilet_front, floor, [tub_foot]
+    )
     if not toilet_opts:
         return None
     beside = [o for o in toilet_opts if _beside(o, tw, tu, tl, d)]
     if beside and rng.random() < d.toilet_beside_tub:
         toilet_opts = beside
     ow, ou = _pick(rng, toilet_opts)
-    toilet = FixtureSlot(
-        id="Toilet_0",
-        type="Toilet",
-        wall=ow.id,
-        offset=ou,
-        width=d.toilet_width,
-        depth=d.toilet_depth,
-        height=d.toilet_height,
-    )
     toilet_foot = footprint(ow, ou, d.toilet_width, d.toilet_depth)
     obstacles.append(toilet_foot)
     fixed = [tub_foot, toilet_foot]
 
-    counters: tuple[CounterRun, ...] = ()
+    vanity = sink = None
     if rng.random() < d.vanity_probability:
         for vw in sorted(d.vanity_widths, reverse=True):
-            opts = [
-                (w, float(u))
-                for w in walls
-                for u in free_offsets(
-                    w,
-                    vw,
-                    d.vanity_depth,
-                    vanity,
-                    obstacles,
-                    front=d.sink_front,
-                    front_allowed=floor,
-                    front_obstacles=fixed,
-                )
-            ]
+            opts = _wall_offsets(
+                walls, vw, d.vanity_depth, vanity_zone, obstacles, d.sink_front, floor, fixed
+            )
             if opts:
                 w, u = _pick(rng, opts)
-                counters = (
-                    CounterRun(
-                        id="CounterTop_0",
-                        wall=w.id,
-                        start=u,
-                        end=r4(u + vw),
-                        depth=d.vanity_depth,
-                        height=d.vanity_height,
-                    ),
-                )
-                sink = FixtureSlot(
-                    id="Sink_0",
-                    type="Sink",
-                    wall=w.id,
-                    offset=_sink_offset(rng, u, vw, d),
-                    width=d.sink_width,
-                    depth=d.sink_depth,
-                    height=d.vanity_height,
-                    counter="CounterTop_0",
-                )
+                vanity = Place(w.id, u, vw)
+                sink = Place(w.id, _sink_offset(rng, u, vw, d), d.sink_width, run=0)
                 break
-    if not counters:
-        opts = [
-            (w, float(u))
-            for w in walls
-            for u in free_offsets(
-                w,
-                d.sink_width,
-                d.sink_depth,
-                vanity,
-                obstacles,
-                front=d.sink_front,
-                front_allowed=floor,
-                front_obstacles=fixed,
-            )
-        ]
+    if sink is None:
+        opts = _wall_offsets(
+            walls, d.sink_width, d.sink_depth, vanity_zone, obstacles, d.sink_front, floor, fixed
+        )
         if not opts:
             return None
         w, u = _pick(rng, opts)
-        sink = FixtureSlot(
-            id="Sink_0",
-            type="Sink",
-            wall=w.id,
-            offset=u,
-            width=d.sink_width,
-            depth=d.sink_depth,
-            height=d.vanity_height,
-        )
-    return FixturePlan(layout="none", counters=counters, slots=(sink, tub, toilet))
+        sink = Place(w.id, u, d.sink_width)
+    tub, toilet = Place(tw.id, tu, tl), Place(ow.id, ou, d.toilet_width)
+    return bathroom_plan(tub, toilet, sink, vanity, sink_first=True, dims=d)
+
+
+def plan_fixtures(
+    room_type: str,
+    walls: Sequence[Wall],
+    floor: Polygon,
+    rng: np.random.Generator,
+    keepouts: Sequence[BaseGeometry] = (),
+    zones: Sequence[BaseGeometry | None] = (None, None),
+) -> FixturePlan | None:
+    """Draw the fixtures a room keeps: a kitchen's or a bathroom's plan, other rooms an empty one.
+
+    Args:
+        room_type: the room's type.
+        walls: the room's walls.
+        floor: the floor polygon.
+        rng: source of every random choice.
+        keepouts: areas fixtures must not touch (door clearance zones).
+        zones: the room's two zones in its spec's order, None for none (the whole floor): a
+            kitchen's fixtures go in the first (`work`); a bathroom's bathtub and toilet go in the
+            first (`bath`), its sink in the second (`vanity`).
+
+    Returns:
+        The plan, or None if the fixtures do not fit (the caller redraws the room or its doors).
+    """
+    if room_type == "Kitchen":
+        return _plan_kitchen(walls, floor, rng, zones[0], keepouts)
+    if room_type == "Bathroom":
+        return _plan_bathroom(walls, floor, rng, keepouts, zones[0], zones[1])
+    return FixturePlan()

@@ -17,12 +17,11 @@ from shapely.geometry import Polygon
 
 from luminous_sim.errors import RoomError
 from luminous_sim.rooms.checks import shell_problems
-from luminous_sim.rooms.fixtures import plan_bathroom, plan_kitchen
+from luminous_sim.rooms.fixtures import plan_fixtures
 from luminous_sim.rooms.geometry import canonical_ring, r4, rect_polygon, snap
 from luminous_sim.rooms.placement import STEP, free_offsets
 from luminous_sim.rooms.shell import (
     Door,
-    FixturePlan,
     RoomShell,
     Wall,
     Window,
@@ -336,18 +335,7 @@ def generate_shell(
             walls_by_id(walls)[d.wall].rect(d.offset, d.offset + d.width, 0.0, d.swing_clearance)
             for d in doors
         ]
-        plan: FixturePlan | None = FixturePlan()
-        if room_type == "Kitchen":
-            plan = plan_kitchen(walls, floor, rng, region=zones.get(spec.zones[0]), keepouts=keep)
-        elif room_type == "Bathroom":
-            plan = plan_bathroom(
-                walls,
-                floor,
-                rng,
-                keepouts=keep,
-                bath_region=zones.get(spec.zones[0]),
-                vanity_region=zones.get(spec.zones[1]),
-            )
+        plan = plan_fixtures(room_type, walls, floor, rng, keep, [zones.get(z) for z in spec.zones])
         if plan is None:
             last = "no fixture plan fitted"
             continue

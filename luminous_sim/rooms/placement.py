@@ -9,7 +9,7 @@ import shapely
 from shapely.geometry import Polygon
 from shapely.geometry.base import BaseGeometry
 
-from luminous_sim.rooms.geometry import mask_to_intervals, polygon_parts, r4
+from luminous_sim.rooms.geometry import is_convex_vertex, mask_to_intervals, polygon_parts, r4
 from luminous_sim.rooms.shell import Wall
 
 STEP = 0.05
@@ -122,6 +122,12 @@ def nearest_wall(
         if faces and (best is None or v < best[2] - 1e-9):
             best = (w, float(u), float(v))
     return best
+
+
+def corner_convex(walls: Sequence[Wall], i: int) -> bool:
+    """Whether the corner between wall i and wall i+1 is convex (turns left)."""
+    a, b = walls[i], walls[(i + 1) % len(walls)]
+    return is_convex_vertex(a.start, a.end, b.end)
 
 
 def footprint(wall: Wall, offset: float, width: float, depth: float) -> Polygon:
