@@ -35,7 +35,7 @@ from luminous_sim.states.tables import (
     SLICE_OF,
     slice_id,
 )
-from luminous_sim.tasks.expressions import parents
+from luminous_sim.tasks.meanings import parents
 from luminous_sim.vocab import abilities, can_contain
 
 ESCAPES: tuple[tuple[str, str], ...] = (
