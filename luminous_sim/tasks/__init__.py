@@ -19,7 +19,13 @@ from luminous_sim.tasks.cdf_bridge import (
     required_objects,
     task_from_cdf,
 )
-from luminous_sim.tasks.conditions import PLAN_ORDER, Condition, GoalConditions, compile_goal, task_conditions
+from luminous_sim.tasks.conditions import (
+    PLAN_ORDER,
+    Condition,
+    GoalConditions,
+    compile_goal,
+    task_conditions,
+)
 from luminous_sim.tasks.constraints import params_problems
 from luminous_sim.tasks.errors import TaskError, TaskSamplingError
 from luminous_sim.tasks.evaluate import (
@@ -52,20 +58,19 @@ from luminous_sim.tasks.types import (
 __all__ = [
     "MEANINGS",
     "PLAN_ORDER",
-    "Condition",
-    "GoalConditions",
-    "PredicateMeaning",
-    "compile_goal",
-    "task_conditions",
     "TASK_TYPES",
     "TEMPLATES",
+    "Condition",
+    "GoalConditions",
     "PddlParams",
+    "PredicateMeaning",
     "TaskError",
     "TaskInstance",
     "TaskSamplingError",
     "TaskType",
     "cdf_for_task",
     "closed_receptacles_goal",
+    "compile_goal",
     "conjunct_progress",
     "draw_params",
     "feasible_params",
@@ -82,6 +87,7 @@ __all__ = [
     "required_objects",
     "sample_task",
     "state_from_scene",
+    "task_conditions",
     "task_description",
     "task_from_cdf",
     "task_info",

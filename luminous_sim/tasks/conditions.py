@@ -27,7 +27,17 @@ import itertools
 from collections.abc import Callable, Collection, Iterator, Mapping
 from dataclasses import dataclass
 
-from luminous_sim.cdf.predicates import And, Atom, Exists, Expr, Not, Or, Param, is_variable, to_sexpr
+from luminous_sim.cdf.predicates import (
+    And,
+    Atom,
+    Exists,
+    Expr,
+    Not,
+    Or,
+    Param,
+    is_variable,
+    to_sexpr,
+)
 from luminous_sim.states import WorldState
 from luminous_sim.tasks.errors import TaskError
 from luminous_sim.tasks.expressions import Evaluator
@@ -135,7 +145,9 @@ class GoalConditions:
         return f"GoalConditions({', '.join(c.name for c in self.conditions)})"
 
 
-def compile_goal(goal: Expr, names: Mapping[str, str] | None = None, alfred: bool = False) -> GoalConditions:
+def compile_goal(
+    goal: Expr, names: Mapping[str, str] | None = None, alfred: bool = False
+) -> GoalConditions:
     """Compile a goal expression into named conditions.
 
     Args:
@@ -276,7 +288,9 @@ def _alfred_groups(goal: Expr) -> list[_Group]:
                 twins[b] = twins.get(a, a)
                 continue
         if not isinstance(e, Atom) or not all(is_variable(a) for a in e.args):
-            raise TaskError(f"not an ALFRED goal-library goal (exists over atoms): {to_sexpr(goal)}")
+            raise TaskError(
+                f"not an ALFRED goal-library goal (exists over atoms): {to_sexpr(goal)}"
+            )
         canon = Atom(e.pred, tuple(twins.get(a, a) for a in e.args))
         atoms[canon] = atoms.get(canon, 0) + 1
     reps = set(twins.values())
@@ -302,7 +316,8 @@ def _alfred_groups(goal: Expr) -> list[_Group]:
 
     conds = [
         _condition(
-            " & ".join(_render(a, types) for a in c.atoms) + (f" x{c.weight}" if c.weight > 1 else ""),
+            " & ".join(_render(a, types) for a in c.atoms)
+            + (f" x{c.weight}" if c.weight > 1 else ""),
             Exists(_params(c.variables, types), c.atoms[0] if len(c.atoms) == 1 else And(c.atoms)),
             c.weight,
         )
@@ -363,13 +378,21 @@ def _custom_groups(goal: Expr, names: dict[str, str]) -> list[_Group]:
             body = tuple(_conjuncts(part.body))
             types = {p.var: p.type for p in part.params}
             conds = [_condition(_render(e, types), Exists(part.params, e)) for e in body]
-            groups.append(_Group(_unique_names(conds, taken), _best_binding(part.params, body, names)))
+            groups.append(
+                _Group(_unique_names(conds, taken), _best_binding(part.params, body, names))
+            )
         else:
-            groups.append(_Group(_unique_names([_condition(_render(part, {}), part)], taken), _whole(part, names)))
+            groups.append(
+                _Group(
+                    _unique_names([_condition(_render(part, {}), part)], taken), _whole(part, names)
+                )
+            )
     return groups
 
 
-def _best_binding(params: tuple[Param, ...], body: tuple[Expr, ...], names: dict[str, str]) -> _Scores:
+def _best_binding(
+    params: tuple[Param, ...], body: tuple[Expr, ...], names: dict[str, str]
+) -> _Scores:
     def scores(state: WorldState, visible: Visible) -> tuple[int, ...]:
         ev = Evaluator(state, names)
         best = (0,) * len(body)
@@ -386,4 +409,3 @@ def _best_binding(params: tuple[Param, ...], body: tuple[Expr, ...], names: dict
 
 def _whole(part: Expr, names: dict[str, str]) -> _Scores:
     return lambda state, visible: (int(Evaluator(state, names).holds(part, {})),)
-

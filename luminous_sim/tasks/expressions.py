@@ -80,4 +80,3 @@ def goal_satisfied(expr: Expr, state: WorldState, names: Mapping[str, str] | Non
         TaskError: the goal names something that is neither a mapped name nor an object id.
     """
     return Evaluator(state, names).holds(expr, {})
-

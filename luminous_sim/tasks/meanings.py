@@ -87,14 +87,17 @@ class PredicateMeaning:
         return (self.evaluator or self.holds)(state, ids)
 
 
-_TOGGLE = dict(
-    holds=lambda s, a: s[a[0]].isToggled,
-    pddl="isToggled",
-    achieved_by="ToggleObject",
-    undone_by="ToggleObject",
-    seen=frozenset(LAMPS),
-    alfred_match=("toggleable",),
-)
+def _toggled(name: str) -> PredicateMeaning:
+    return PredicateMeaning(
+        name,
+        lambda s, a: s[a[0]].isToggled,
+        "isToggled",
+        "ToggleObject",
+        "ToggleObject",
+        seen=frozenset(LAMPS),
+        alfred_match=("toggleable",),
+    )
+
 
 _TABLE: tuple[PredicateMeaning, ...] = (
     PredicateMeaning(
@@ -115,8 +118,12 @@ _TABLE: tuple[PredicateMeaning, ...] = (
     ),
     # ALFRED's bookkeeping, as its evaluator counts: heated/cooled by the agent, so the slices of a
     # heated apple (new objects) are not "hot" however warm they are.
-    PredicateMeaning("isHot", lambda s, a: a[0] in s.heated, "isHot", "HeatObject", None, device="Microwave"),
-    PredicateMeaning("isCool", lambda s, a: a[0] in s.cooled, "isCool", "CoolObject", None, device="Fridge"),
+    PredicateMeaning(
+        "isHot", lambda s, a: a[0] in s.heated, "isHot", "HeatObject", None, device="Microwave"
+    ),
+    PredicateMeaning(
+        "isCool", lambda s, a: a[0] in s.cooled, "isCool", "CoolObject", None, device="Fridge"
+    ),
     PredicateMeaning(
         "isClean",
         lambda s, a: is_clean(s, a[0]),
@@ -136,11 +143,13 @@ _TABLE: tuple[PredicateMeaning, ...] = (
         evaluator=lambda s, a: s[a[0]].object_type in SLICED_TYPES,  # "a slice exists"
         joint=False,
     ),
-    PredicateMeaning("isOn", **_TOGGLE),  # type: ignore[arg-type]
-    PredicateMeaning("isToggled", **_TOGGLE),  # type: ignore[arg-type]
+    _toggled("isOn"),
+    _toggled("isToggled"),
     PredicateMeaning("isOpen", lambda s, a: s[a[0]].isOpen, "opened", "OpenObject", "CloseObject"),
     # filled under the faucet, as washing is
-    PredicateMeaning("isFilled", lambda s, a: s[a[0]].isFilledWithLiquid, "isFilled", "CleanObject", None),
+    PredicateMeaning(
+        "isFilled", lambda s, a: s[a[0]].isFilledWithLiquid, "isFilled", "CleanObject", None
+    ),
     PredicateMeaning("holds", lambda s, a: s.held == a[0], "holds", "PickupObject", "PutObject"),
     PredicateMeaning("=", lambda s, a: a[0] == a[1], "=", None, None, alfred_match=(None, None)),
 )
@@ -148,7 +157,13 @@ _TABLE: tuple[PredicateMeaning, ...] = (
 MEANINGS: dict[str, PredicateMeaning] = {m.name: m for m in _TABLE}
 """Goal predicate name -> its meaning (every predicate of `luminous_sim.cdf.PREDICATES`)."""
 
-MACRO_PREDICATES: tuple[str, ...] = tuple(m.name for m in _TABLE if m.device)
+MACRO_ACTIONS: dict[str, str] = {
+    m.name: m.achieved_by for m in _TABLE if m.device is not None and m.achieved_by is not None
+}
+"""Predicate -> the device macro that makes it true (isHot: HeatObject), in table order."""
+DEVICES: dict[str, str] = {m.name: m.device for m in _TABLE if m.device is not None}
+"""Predicate -> the type of the device its macro runs (isHot: Microwave, isClean: SinkBasin)."""
+MACRO_PREDICATES: tuple[str, ...] = tuple(MACRO_ACTIONS)
 """The predicates a device macro makes true (isHot, isCool, isClean), in table order."""
 
 WASHING: frozenset[str] = frozenset(

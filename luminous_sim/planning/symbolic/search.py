@@ -21,9 +21,11 @@ from luminous_sim.planning.symbolic.relevance import Relevance
 from luminous_sim.planning.symbolic.semantics import anchor, signature
 from luminous_sim.states import WorldState, enclosing_closed
 from luminous_sim.states.tables import SLICING_TOOLS
+from luminous_sim.tasks.meanings import MACRO_ACTIONS
 from luminous_sim.vocab import abilities, can_contain
 
-_MACROS = (("HeatObject", "isHot"), ("CoolObject", "isCool"), ("CleanObject", "isClean"))
+_MACROS = tuple((action, pred) for pred, action in MACRO_ACTIONS.items())
+"""(device macro, the predicate it makes true), from the predicate table."""
 
 
 @dataclass(frozen=True)
