@@ -6,6 +6,7 @@ Typical use::
     state = tasks.state_from_scene(scene)
     task = tasks.sample_task(scene, state, "pick_heat_then_place_in_recep", rng)
     done, total = tasks.goal_conditions(task, state_after)
+    goal = task.conditions()        # named conditions: .success, .alfred_counts, .progress, .subgoals
 
 Pure: no PyBullet. Goals are `luminous_sim.cdf` expressions, so a CDF's own goal and ALFRED's
 goal library are evaluated by the same code.
@@ -18,6 +19,13 @@ from luminous_sim.tasks.cdf_bridge import (
     required_objects,
     task_from_cdf,
 )
+from luminous_sim.tasks.conditions import (
+    PLAN_ORDER,
+    Condition,
+    GoalConditions,
+    compile_goal,
+    task_conditions,
+)
 from luminous_sim.tasks.constraints import params_problems
 from luminous_sim.tasks.errors import TaskError, TaskSamplingError
 from luminous_sim.tasks.evaluate import (
@@ -29,6 +37,7 @@ from luminous_sim.tasks.evaluate import (
     parents,
     task_satisfied,
 )
+from luminous_sim.tasks.meanings import MEANINGS, PredicateMeaning
 from luminous_sim.tasks.model import PddlParams, TaskInstance
 from luminous_sim.tasks.sample import (
     draw_params,
@@ -47,15 +56,21 @@ from luminous_sim.tasks.types import (
 )
 
 __all__ = [
+    "MEANINGS",
+    "PLAN_ORDER",
     "TASK_TYPES",
     "TEMPLATES",
+    "Condition",
+    "GoalConditions",
     "PddlParams",
+    "PredicateMeaning",
     "TaskError",
     "TaskInstance",
     "TaskSamplingError",
     "TaskType",
     "cdf_for_task",
     "closed_receptacles_goal",
+    "compile_goal",
     "conjunct_progress",
     "draw_params",
     "feasible_params",
@@ -72,6 +87,7 @@ __all__ = [
     "required_objects",
     "sample_task",
     "state_from_scene",
+    "task_conditions",
     "task_description",
     "task_from_cdf",
     "task_info",

@@ -1,74 +1,25 @@
 """Any goal expression evaluated on a pure `WorldState` (and/or/not, exists/forall, named objects).
 
-Containment follows AI2-THOR's `parentReceptacles`: an object is in every receptacle of its chain
-of ancestors up to and including the first one that is not a movable receptacle, so an apple on a
-plate on the counter is in the plate and in the counter. The chain stops there because our scenes
-nest fixtures (a microwave stands on a counter top, a basin belongs to a sink): an apple inside
-the microwave is not on the counter.
+Atoms are judged by the predicate table (`tasks.meanings`); containment follows AI2-THOR's
+`parentReceptacles` (see `meanings.parents`).
 """
 
 from __future__ import annotations
 
 import itertools
-from collections.abc import Callable, Iterator, Mapping
+from collections.abc import Iterator, Mapping
 
 from luminous_sim.cdf.predicates import And, Atom, Exists, Expr, ForAll, Not, Or, Param, is_variable
 from luminous_sim.states import WorldState
 from luminous_sim.tasks.errors import TaskError
-from luminous_sim.tasks.types import MOVABLE_RECEPTACLES
-from luminous_sim.vocab import abilities
+from luminous_sim.tasks.meanings import MEANINGS, in_receptacle, is_clean, parents
 
-_MOVABLE = frozenset(MOVABLE_RECEPTACLES)
-
-
-def parents(state: WorldState, object_id: str) -> list[str]:
-    """The receptacles an object counts as in, innermost first (AI2-THOR's `parentReceptacles`).
-
-    The chain of ancestors, cut after the first one that is not a movable receptacle.
-    """
-    out: list[str] = []
-    for anc in state.ancestors(object_id):
-        out.append(anc)
-        if state[anc].object_type not in _MOVABLE:
-            break
-    return out
+__all__ = ["Evaluator", "goal_satisfied", "in_receptacle", "is_clean", "parents"]
 
 
-def in_receptacle(state: WorldState, object_id: str, receptacle_id: str) -> bool:
-    """`inReceptacle(o, r)`: r is among o's parent receptacles."""
-    return receptacle_id in parents(state, object_id)
+class Evaluator:
+    """Truth of goal expressions on one state, with named objects (see `goal_satisfied`)."""
 
-
-def is_clean(state: WorldState, object_id: str) -> bool:
-    """`isClean`: washed in a sink basin, or a dirtyable object that is not dirty."""
-    o = state[object_id]
-    return object_id in state.cleaned or (abilities(o.object_type).dirtyable and not o.isDirty)
-
-
-_Pred = Callable[[WorldState, tuple[str, ...]], bool]
-PREDICATE_FUNCTIONS: dict[str, _Pred] = {
-    "inReceptacle": lambda s, a: in_receptacle(s, a[0], a[1]),
-    "inReceptacleObject": lambda s, a: (
-        s[a[1]].object_type in _MOVABLE and in_receptacle(s, a[0], a[1])
-    ),
-    # ALFRED's bookkeeping, as its evaluator counts: heated/cooled by the agent, so the slices of a
-    # heated apple (new objects) are not "hot" however warm they are.
-    "isHot": lambda s, a: a[0] in s.heated,
-    "isCool": lambda s, a: a[0] in s.cooled,
-    "isClean": lambda s, a: is_clean(s, a[0]),
-    "isDirty": lambda s, a: s[a[0]].isDirty,
-    "isSliced": lambda s, a: s[a[0]].isSliced,
-    "isOn": lambda s, a: s[a[0]].isToggled,
-    "isToggled": lambda s, a: s[a[0]].isToggled,
-    "isOpen": lambda s, a: s[a[0]].isOpen,
-    "isFilled": lambda s, a: s[a[0]].isFilledWithLiquid,
-    "holds": lambda s, a: s.held == a[0],
-    "=": lambda s, a: a[0] == a[1],
-}
-"""Predicate name -> its truth on a state, given object ids (the CDF's PREDICATES, all of them)."""
-
-
-class _Evaluator:
     def __init__(self, state: WorldState, names: Mapping[str, str] | None):
         self.state = state
         self.names = dict(names or {})
@@ -96,7 +47,7 @@ class _Evaluator:
             yield env | {p.var: oid for p, oid in zip(params, combo)}
 
     def atom(self, atom: Atom, env: dict[str, str]) -> bool:
-        fn = PREDICATE_FUNCTIONS[atom.pred]
+        fn = MEANINGS[atom.pred].holds
         choices = [[env[a]] if is_variable(a) else self.objects(a) for a in atom.args]
         return any(fn(self.state, combo) for combo in itertools.product(*choices))
 
@@ -115,30 +66,6 @@ class _Evaluator:
             return all(self.holds(expr.body, b) for b in self.bindings(expr.params, env))
         raise TaskError(f"not a goal expression: {expr!r}")
 
-    def progress(self, expr: Expr) -> tuple[int, int]:
-        """Satisfied and total conjuncts; an `exists` over a conjunction scores its best binding."""
-        done = total = 0
-        for part in _conjuncts(expr):
-            if isinstance(part, Exists) and isinstance(part.body, And) and part.body.args:
-                body = list(_conjuncts(part.body))
-                best = 0
-                for b in self.bindings(part.params, {}):
-                    best = max(best, sum(self.holds(e, b) for e in body))
-                    if best == len(body):
-                        break
-                done, total = done + best, total + len(body)
-            else:
-                done, total = done + self.holds(part, {}), total + 1
-        return (done, total) if total else (1, 1)
-
-
-def _conjuncts(expr: Expr) -> Iterator[Expr]:
-    if isinstance(expr, And):
-        for e in expr.args:
-            yield from _conjuncts(e)
-    else:
-        yield expr
-
 
 def goal_satisfied(expr: Expr, state: WorldState, names: Mapping[str, str] | None = None) -> bool:
     """Whether a goal expression holds in a state.
@@ -152,15 +79,4 @@ def goal_satisfied(expr: Expr, state: WorldState, names: Mapping[str, str] | Non
     Raises:
         TaskError: the goal names something that is neither a mapped name nor an object id.
     """
-    return _Evaluator(state, names).holds(expr, {})
-
-
-def conjunct_progress(
-    expr: Expr, state: WorldState, names: Mapping[str, str] | None = None
-) -> tuple[int, int]:
-    """Goal-condition counts of a custom goal: (satisfied, total) over its top-level conjuncts.
-
-    An `exists` over a conjunction counts each of its conjuncts, scored by the binding that
-    satisfies the most of them; an empty goal counts as one satisfied condition.
-    """
-    return _Evaluator(state, names).progress(expr)
+    return Evaluator(state, names).holds(expr, {})

@@ -5,11 +5,14 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from types import MappingProxyType
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from luminous_sim.cdf.predicates import Expr, ExprError, parse_expr, to_sexpr
 from luminous_sim.tasks.errors import TaskError
 from luminous_sim.vocab import SLICED_TYPES
+
+if TYPE_CHECKING:
+    from luminous_sim.tasks.conditions import GoalConditions
 
 PDDL_KEYS: tuple[str, ...] = (
     "mrecep_target",
@@ -104,6 +107,16 @@ class TaskInstance:
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "names", MappingProxyType(dict(self.names)))
+
+    def conditions(self) -> GoalConditions:
+        """The goal compiled into named conditions: success, ALFRED's counts, progress, subgoals.
+
+        Raises:
+            TaskError: an unknown task type.
+        """
+        from luminous_sim.tasks.conditions import task_conditions  # it builds on this module
+
+        return task_conditions(self)
 
     @property
     def goal_key(self) -> str:

@@ -6,6 +6,7 @@ import json
 
 import numpy as np
 
+from luminous_sim.states import WorldState
 from luminous_sim.tasks import (
     TEMPLATES,
     PddlParams,
@@ -40,3 +41,28 @@ def test_every_alfred_task_round_trips_and_meets_our_constraints(shared_alfred):
         assert params.object_target.lower() in desc
         seen.add(task.goal_key)
     assert len(seen) >= 12  # all seven types, and sliced variants of most
+
+
+SPEC_TOTALS = {  # spec/alfred.md section 1.2: total conditions `ts`, and what a sliced task adds
+    "pick_and_place_simple": (1, 1),
+    "pick_two_obj_and_place": (2, 2),
+    "look_at_obj_in_light": (2, 1),
+    "pick_clean_then_place_in_recep": (3, 1),
+    "pick_heat_then_place_in_recep": (3, 1),
+    "pick_cool_then_place_in_recep": (3, 1),
+    "pick_and_place_with_movable_recep": (3, 1),
+}
+
+
+def test_every_alfred_task_compiles_to_alfreds_number_of_goal_conditions(shared_alfred):
+    """The counts come from each real task's goal conjuncts and give ALFRED's totals."""
+    empty = WorldState.of([])
+    n = 0
+    for task_dir, traj in _trajectories(shared_alfred):
+        params = PddlParams.from_json(traj["pddl_params"])
+        task = TaskInstance(traj["task_type"], params, goal_for(params, traj["task_type"]), 0)
+        base, sliced = SPEC_TOTALS[task.task_type]
+        expected = base + (sliced if params.object_sliced else 0)
+        assert task.conditions().alfred_counts(empty) == (0, expected), task_dir
+        n += 1
+    assert n == 251

@@ -8,7 +8,7 @@ from luminous_sim.cdf import Atom, parse_expr
 from luminous_sim.cdf.predicates import PREDICATES
 from luminous_sim.states import Slice, apply
 from luminous_sim.tasks import TaskError, conjunct_progress, goal_satisfied, parents
-from luminous_sim.tasks.expressions import PREDICATE_FUNCTIONS
+from luminous_sim.tasks.meanings import MEANINGS
 from tests.tasks.helpers import KITCHEN, state_of
 
 K = state_of(KITCHEN)
@@ -26,7 +26,7 @@ def sat(text: str, state=K, names=NAMES) -> bool:
 
 
 def test_every_cdf_predicate_has_an_evaluator():
-    assert set(PREDICATE_FUNCTIONS) == set(PREDICATES)
+    assert set(MEANINGS) == set(PREDICATES)
 
 
 @pytest.mark.parametrize(

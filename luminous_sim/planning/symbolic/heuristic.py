@@ -28,15 +28,28 @@ from luminous_sim.planning.symbolic.semantics import (
 )
 from luminous_sim.states import WorldState
 from luminous_sim.states.tables import GATING_OPENABLE, SLICE_OF
+from luminous_sim.tasks import MEANINGS
+from luminous_sim.tasks.meanings import DEVICES, MACRO_ACTIONS
 from luminous_sim.vocab import FILLABLE, SLICED_TYPES, SLICING_TOOLS, abilities, can_contain
 
 INF = math.inf
 MACRO = 5.0
-_DEVICE_NAME = {
-    "isHot": ("Microwave", "hot"),
-    "isCool": ("Fridge", "cool"),
-    "isClean": ("SinkBasin", "clean"),
+_MACRO_OF = {action: pred for pred, action in MACRO_ACTIONS.items()}
+"""Device macro -> the predicate it is named for (HeatObject -> isHot), from the predicate table."""
+_CANNOT_MAKE = {
+    "isDirty": "nothing makes {o} dirty",
+    "=": "{o} and {r} are different objects",
 }
+"""Why a predicate no action makes true cannot be made true."""
+_CANNOT_UNDO = {
+    "isHot": "{o} was heated; that cannot be undone",
+    "isCool": "{o} was cooled; that cannot be undone",
+    "isClean": "nothing makes {o} dirty again",
+    "isSliced": "{o} is sliced; that cannot be undone",
+    "isFilled": "nothing empties {o}",
+    "=": "two different objects are needed where there is only {o}",
+}
+"""Why a predicate no action makes false cannot be made false."""
 
 
 def _mentions_sliced(expr: Expr, var: str) -> bool:
@@ -212,37 +225,41 @@ class _Node:
         return INF
 
     def _positive(self, pred: str, ids: tuple[str, ...]) -> float:
+        """Cost by the action the predicate table says makes the atom true."""
         o = ids[0]
-        if pred in ("inReceptacle", "inReceptacleObject"):
+        m = MEANINGS.get(pred)
+        if m is None:
+            return 1.0  # atLocation
+        act = m.achieved_by
+        if act == "PutObject":
             r = ids[1]
             if pred == "inReceptacleObject" and self.s[r].object_type not in self.est.movable_types:
                 return self._fail(f"{r} is not a movable receptacle")
             return self.put_in(o, r)
-        if pred in ("isHot", "isCool", "isClean", "isFilled"):
-            return self.device(
-                o, "isClean" if pred == "isFilled" else pred, fill=pred == "isFilled"
-            )
-        if pred == "isSliced":
+        if act in _MACRO_OF:
+            return self.device(o, _MACRO_OF[act], fill=pred == "isFilled")
+        if act == "SliceObject":
             return self.slice_cost(o)
-        if pred in ("isToggled", "isOn"):
+        if act == "ToggleObject":
             if not abilities(self.s[o].object_type).toggleable:
                 return self._fail(f"{o} cannot be switched on")
             return self.goto(self.anchor(o)) + MACRO
-        if pred == "isOpen":
+        if act == "OpenObject":
             if not abilities(self.s[o].object_type).openable:
                 return self._fail(f"{o} cannot be opened")
             return self.goto(self.anchor(o)) + 1
-        if pred == "holds":
+        if act == "PickupObject":
             return self.reach(o)
-        if pred == "isDirty":
-            return self._fail(f"nothing makes {o} dirty")
-        if pred == "=":
-            return self._fail(f"{o} and {ids[1]} are different objects")
-        return 1.0  # atLocation
+        return self._fail(_CANNOT_MAKE[pred].format(o=o, r=ids[-1]))
 
     def _negative(self, pred: str, ids: tuple[str, ...]) -> float:
+        """Cost by the action the predicate table says makes the atom false."""
         o = ids[0]
-        if pred in ("inReceptacle", "inReceptacleObject"):
+        m = MEANINGS.get(pred)
+        act = None if m is None else m.undone_by
+        if m is None or act == "PutObject":
+            return 1.0  # atLocation; holds: set it down
+        if act == "PickupObject":  # take it out: pick up it or a movable receptacle holding it
             chain = [o, *self.s.ancestors(o)]
             movers = (
                 [x for x in chain[: chain.index(ids[1])] if self.pickupable(x)]
@@ -252,26 +269,13 @@ class _Node:
             if not movers:
                 return self._fail(f"nothing can take {o} out of {ids[1]}")
             return min(self.reach(x) for x in movers) + 2
-        if pred in ("isHot", "isCool"):
-            kind = {"isHot": "heated", "isCool": "cooled"}[pred]
-            if o in getattr(self.s, kind):
-                return self._fail(f"{o} was {kind}; that cannot be undone")
-            return self.device(o, "isCool" if pred == "isHot" else "isHot")
-        if pred == "isClean":
-            return self._fail(f"nothing makes {o} dirty again")
-        if pred == "isDirty":
-            return self.device(o, "isClean")
-        if pred == "isSliced":
-            return self._fail(f"{o} is sliced; that cannot be undone")
-        if pred == "isFilled":
-            return self._fail(f"nothing empties {o}")
-        if pred in ("isToggled", "isOn"):
+        if act in _MACRO_OF:
+            return self.device(o, _MACRO_OF[act])
+        if act == "ToggleObject":
             return self.goto(self.anchor(o)) + MACRO
-        if pred == "isOpen":
+        if act == "CloseObject":
             return self.goto(self.anchor(o)) + 1
-        if pred == "=":
-            return self._fail(f"two different objects are needed where there is only {o}")
-        return 1.0  # holds, atLocation
+        return self._fail(_CANNOT_UNDO[pred].format(o=o))
 
     # -- action estimates ---------------------------------------------------------------------
 
@@ -352,7 +356,7 @@ class _Node:
 
     def device(self, o: str, pred: str, fill: bool = False) -> float:
         """Cost to heat/cool/wash `o` with its device macro."""
-        dtype, word = _DEVICE_NAME[pred]
+        dtype, word = DEVICES[pred], pred.removeprefix("is").lower()
         otype = self.s[o].object_type
         if fill and otype not in FILLABLE:
             return self._fail(f"{o} ({otype}) cannot hold water")

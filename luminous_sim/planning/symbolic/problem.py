@@ -34,7 +34,8 @@ from luminous_sim.states.tables import (
     SLICE_OF,
     slice_id,
 )
-from luminous_sim.tasks.expressions import parents
+from luminous_sim.tasks import MEANINGS
+from luminous_sim.tasks.meanings import MACRO_PREDICATES, parents
 from luminous_sim.vocab import FILLABLE, abilities, can_contain
 
 ESCAPES: tuple[tuple[str, str], ...] = (
@@ -269,7 +270,7 @@ class _Builder:
             "isReceptacleObject": ab.movable_receptacle and ab.receptacle,
         }
         out += [f"({f} {n})" for f, v in flags.items() if v]
-        for pred in ("isHot", "isCool", "isClean"):
+        for pred in MACRO_PREDICATES:  # the bookkeeping the macros keep
             if atom_true(s, None, pred, (k,)):
                 out.append(f"({pred} {n})")
         out += [
@@ -347,14 +348,8 @@ class _Builder:
             if movable is None:
                 return f"(or (inReceptacle {args[0]} {args[1]}) (inReceptacleObject {args[0]} {args[1]}))"
             return f"(inReceptacle {args[0]} {args[1]})"
-        if pred in ("isOn", "isToggled"):
-            return f"(isToggled {args[0]})"
-        if pred == "isOpen":
-            return f"(opened {args[0]})"
         if pred == "holds":
             return f"(holds {AGENT} {args[0]})"
-        if pred == "=":
-            return f"(= {args[0]} {args[1]})"
         if pred == AT_LOCATION:
             self.fresh += 1
             lv = f"?l{self.fresh}"
@@ -362,7 +357,7 @@ class _Builder:
                 f"(exists ({lv} - location) (and (atLocation {AGENT} {lv}) "
                 f"(or (objectAtLocation {args[0]} {lv}) (receptacleAtLocation {args[0]} {lv}))))"
             )
-        return f"({pred} {' '.join(args)})"
+        return f"({MEANINGS[pred].pddl} {' '.join(args)})"
 
 
 def _param_types(e: Expr) -> set[str]:

@@ -28,11 +28,13 @@ from luminous_sim.cdf.predicates import (
 from luminous_sim.planning.symbolic.semantics import AT_LOCATION, constants, resolve
 from luminous_sim.states import WorldState
 from luminous_sim.states.tables import GATING_OPENABLE
+from luminous_sim.tasks import MEANINGS
+from luminous_sim.tasks.meanings import DEVICES, MACRO_PREDICATES, WASHING
 from luminous_sim.vocab import FILLABLE, SLICED_TYPES, SLICING_TOOLS, abilities, can_contain
 
-DEVICE_TYPES: dict[str, str] = {"isHot": "Microwave", "isCool": "Fridge"}
-WASHING = frozenset({"isClean", "isDirty", "isFilled"})
-RECEPTACLE_PREDICATES = frozenset({"inReceptacle", "inReceptacleObject"})
+DEVICE_TYPES: dict[str, str] = {p: t for p, t in DEVICES.items() if p not in WASHING}
+"""Predicate -> the device type whose macro makes it true (isHot: Microwave), washing apart."""
+RECEPTACLE_PREDICATES = frozenset(p for p, m in MEANINGS.items() if m.achieved_by == "PutObject")
 
 
 @dataclass(frozen=True)
@@ -101,9 +103,10 @@ def basins_with_faucets(state: WorldState) -> list[str]:
 def devices_of(state: WorldState) -> dict[str, tuple[str, ...]]:
     """Macro devices in a state: isHot -> microwaves, isCool -> fridges, isClean -> basins with a faucet."""
     return {
-        "isHot": tuple(state.of_type("Microwave")),
-        "isCool": tuple(state.of_type("Fridge")),
-        "isClean": tuple(basins_with_faucets(state)),
+        p: tuple(basins_with_faucets(state))
+        if p in WASHING
+        else tuple(state.of_type(DEVICE_TYPES[p]))
+        for p in MACRO_PREDICATES
     }
 
 
@@ -149,9 +152,10 @@ def relevance(
         if pred in DEVICE_TYPES:
             used_devices[pred] = devices[pred]
         if pred in WASHING:
-            used_devices["isClean"] = devices["isClean"]
+            wash = next(p for p in MACRO_PREDICATES if p in WASHING)  # isClean
+            used_devices[wash] = devices[wash]
             keep.update(
-                f for f, b in state.faucet_basin.items() if b in devices["isClean"] and f in state
+                f for f, b in state.faucet_basin.items() if b in devices[wash] and f in state
             )
         if pred == "isSliced" or any(
             types.get(a) in SLICED_TYPES for a in atom.args if is_variable(a)

@@ -20,9 +20,11 @@ from luminous_sim.planning.symbolic.macros import try_action
 from luminous_sim.planning.symbolic.relevance import Relevance
 from luminous_sim.planning.symbolic.semantics import anchor, signature
 from luminous_sim.states import WorldState, enclosing_closed
+from luminous_sim.tasks.meanings import MACRO_ACTIONS
 from luminous_sim.vocab import SLICING_TOOLS, abilities, can_contain
 
-_MACROS = (("HeatObject", "isHot"), ("CoolObject", "isCool"), ("CleanObject", "isClean"))
+_MACROS = tuple((action, pred) for pred, action in MACRO_ACTIONS.items())
+"""(device macro, the predicate it makes true), from the predicate table."""
 
 
 @dataclass(frozen=True)

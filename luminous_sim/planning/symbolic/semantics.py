@@ -1,14 +1,15 @@
 """What a goal means to the planner: the task layer's predicates, plus where the agent stands.
 
-Atoms are judged by `luminous_sim.tasks.expressions.PREDICATE_FUNCTIONS`, the one definition of
-the goal predicates (the success check uses the same), so a plan that reaches the planner's goal
-satisfies `goal_satisfied`. Quantified variables range over objects of exactly their type (all
+Atoms are judged by the predicate table `luminous_sim.tasks.MEANINGS`, the one definition of the
+goal predicates (the success check and ALFRED's counts use the same), so a plan that reaches the
+planner's goal satisfies `goal_satisfied`. Quantified variables range over objects of exactly their type (all
 objects when untyped); a name stands for its object, or for its slices once it was sliced.
 
 The planner adds one predicate of ALFRED's PDDL, `atLocation(x)`: the agent stands at x's
-interaction location (`anchor`). `prepare_goal` uses it for lamps: a positive `isToggled`/`isOn` of
-a DeskLamp or FloorLamp also asks the agent to end beside the lamp, as ALFRED's
-look_at_obj_in_light goal does (the evaluator checks that the lamp is lit and visible).
+interaction location (`anchor`). `prepare_goal` uses it for what must be seen (a predicate's
+`seen` types in the table: lamps): a positive `isToggled`/`isOn` of a DeskLamp or FloorLamp also
+asks the agent to end beside the lamp, as ALFRED's look_at_obj_in_light goal does (the evaluator
+checks that the lamp is lit and visible).
 """
 
 from __future__ import annotations
@@ -19,11 +20,8 @@ from collections.abc import Iterator, Mapping
 from luminous_sim.cdf.predicates import And, Atom, Exists, Expr, ForAll, Not, Or, Param, is_variable
 from luminous_sim.errors import PlanningError
 from luminous_sim.states import WorldState
-from luminous_sim.tasks.expressions import PREDICATE_FUNCTIONS
+from luminous_sim.tasks import MEANINGS
 from luminous_sim.vocab import abilities
-
-LAMPS: frozenset[str] = frozenset({"DeskLamp", "FloorLamp"})
-"""Toggleables whose lit state a task checks from beside them (look_at_obj_in_light)."""
 
 AT_LOCATION = "atLocation"
 """The planner's extra predicate: the agent is at the argument's interaction location."""
@@ -99,7 +97,7 @@ def atom_true(state: WorldState, at: str | None, pred: str, ids: tuple[str, ...]
     """Whether a ground atom holds (the task layer's predicates, plus `atLocation`)."""
     if pred == AT_LOCATION:
         return ids[0] in state and at == anchor(state, ids[0])
-    return PREDICATE_FUNCTIONS[pred](state, ids)
+    return MEANINGS[pred].holds(state, ids)
 
 
 def ground_choices(
@@ -152,21 +150,26 @@ def nnf(expr: Expr, negate: bool = False) -> Expr:
     raise PlanningError(f"not a goal expression: {expr!r}")
 
 
-def _lamp_typed(
-    arg: str, types: Mapping[str, str | None], state: WorldState, names: Mapping[str, str]
+def _seen_typed(
+    arg: str,
+    seen: frozenset[str],
+    types: Mapping[str, str | None],
+    state: WorldState,
+    names: Mapping[str, str],
 ) -> bool:
     if is_variable(arg):
-        return types.get(arg) in LAMPS
+        return types.get(arg) in seen
     oid = names.get(arg, arg)
-    return oid in state and state[oid].object_type in LAMPS
+    return oid in state and state[oid].object_type in seen
 
 
 def prepare_goal(expr: Expr, state: WorldState, names: Mapping[str, str]) -> Expr:
-    """The goal the search pursues: NNF, with "end beside the lamp" after each lit-lamp atom."""
+    """The goal the search pursues: NNF, with "end beside it" after each atom about what must be seen."""
 
     def walk(e: Expr, types: dict[str, str | None]) -> Expr:
         if isinstance(e, Atom):
-            if e.pred in ("isToggled", "isOn") and _lamp_typed(e.args[0], types, state, names):
+            m = MEANINGS.get(e.pred)
+            if m is not None and m.seen and _seen_typed(e.args[0], m.seen, types, state, names):
                 return And((e, Atom(AT_LOCATION, e.args)))
             return e
         if isinstance(e, Not):
