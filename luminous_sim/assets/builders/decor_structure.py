@@ -15,13 +15,12 @@ from collections.abc import Sequence
 from itertools import pairwise
 
 import numpy as np
-import trimesh
 
 from luminous_sim.assets import geometry as g
-from luminous_sim.assets.builders.common import pick
+from luminous_sim.assets.builders.common import fixed, pick, recenter
 from luminous_sim.assets.materials import add_palettes, hex_colours
 from luminous_sim.assets.registry import register
-from luminous_sim.assets.spec import AssetSpec, Joint, Link, Part
+from luminous_sim.assets.spec import AssetSpec, Link, Part
 
 add_palettes(
     lampshade=hex_colours("f3ead3", "e8dcc4", "d9cbb0", "fbf6ec", "c9b79c"),
@@ -55,152 +54,6 @@ Pt = Sequence[float]
 # shape helpers (also used by bathroom.py)
 
 
-def hull(points: Sequence[Pt]) -> trimesh.Trimesh:
-    """The convex hull of a few 3D points (wedges, slanted slabs, ring segments)."""
-    return trimesh.convex.convex_hull(np.asarray(points, dtype=float))
-
-
-def rrect(a: float, b: float, r: float, m: int = 3) -> np.ndarray:
-    """A rounded rectangle of half sizes a x b and corner radius r as a CCW loop of 4 (m + 1) points.
-
-    Loops of the same m match point for point, so two of them bound a ring of convex segments; r = 0
-    gives a sharp rectangle with the same point count.
-    """
-    r = min(r, a, b)
-    pts = []
-    for k, (sx, sy) in enumerate(((1, 1), (-1, 1), (-1, -1), (1, -1))):
-        cx, cy = sx * (a - r), sy * (b - r)
-        for t in np.linspace(k * np.pi / 2, (k + 1) * np.pi / 2, m + 1):
-            pts.append((cx + r * np.cos(t), cy + r * np.sin(t)))
-    return np.array(pts)
-
-
-def oval(rx: float, ry_front: float, ry_back: float, n: int = 20, cy: float = 0.0) -> np.ndarray:
-    """An egg-shaped CCW loop: half-ellipses of depth ry_front towards +y and ry_back towards -y."""
-    t = np.linspace(0, 2 * np.pi, n, endpoint=False)
-    s = np.sin(t)
-    return np.stack([rx * np.cos(t), cy + s * np.where(s >= 0, ry_front, ry_back)], axis=1)
-
-
-def ring(
-    top_out: np.ndarray,
-    top_in: np.ndarray,
-    z_top: float,
-    z_bot: float,
-    bot_out: np.ndarray | None = None,
-    bot_in: np.ndarray | None = None,
-) -> list[trimesh.Trimesh]:
-    """A wall between two matching loops as convex segments (vessel walls, frames with a hole, rims).
-
-    The top loops sit at z_top and the bottom loops (the top ones when not given) at z_bot.
-    """
-    bot_out = top_out if bot_out is None else bot_out
-    bot_in = top_in if bot_in is None else bot_in
-    n = len(top_out)
-    out = []
-    for i in range(n):
-        j = (i + 1) % n
-        if np.allclose(top_out[i], top_out[j]) and np.allclose(top_in[i], top_in[j]):
-            continue
-        pts = [
-            (p[0], p[1], z)
-            for lo, li, z in ((top_out, top_in, z_top), (bot_out, bot_in, z_bot))
-            for p in (lo[i], lo[j], li[i], li[j])
-        ]
-        out.append(hull(pts))
-    return out
-
-
-def slab(loop: np.ndarray, z0: float, z1: float) -> trimesh.Trimesh:
-    """A flat prism over a convex loop, from z0 to z1."""
-    return hull([(x, y, z) for x, y in loop for z in (z0, z1)])
-
-
-def lathe_shell(profile: Sequence[tuple[float, float]], wall: float, sections: int = 24) -> trimesh.Trimesh:
-    """A thin lathe shell open at both ends (lamp shades) from its outer (radius, z) profile."""
-    outer = [(float(r), float(z)) for r, z in profile]
-    inner = [(r - wall, z) for r, z in reversed(outer)]
-    return g.revolve(outer + inner + [outer[0]], sections=sections)
-
-
-def flat_poly(pts_xz: Sequence[tuple[float, float]], y_back: float, t: float = 0.002) -> trimesh.Trimesh:
-    """A flat shape drawn in the x-z plane (a picture's hill, a roof), t thick from y_back towards +y."""
-    mesh = g.extrude(pts_xz, t)
-    mesh.apply_transform(trimesh.transformations.rotation_matrix(np.pi / 2, [1, 0, 0]))
-    mesh.apply_translation((0.0, y_back + t, 0.0))
-    return mesh
-
-
-def disc_y(r: float, center: Pt, t: float = 0.002, sections: int = 20) -> trimesh.Trimesh:
-    """A thin disc facing +y (a sun in a picture, an LED, a screw head)."""
-    return g.cylinder(r, t, center, axis="y", sections=sections)
-
-
-def drape(
-    xs_top: Sequence[float],
-    xs_bot: Sequence[float],
-    z_top: float,
-    z_bot: float,
-    y0: float,
-    amp: float,
-    t: float = 0.003,
-) -> list[trimesh.Trimesh]:
-    """A pleated fabric panel: thin slanted strips zig-zagging in y between matching x positions.
-
-    xs_top and xs_bot list the fold lines at the top and bottom (same length); the folds alternate between
-    y0 - amp/2 and y0 + amp/2.
-    """
-    out = []
-    for k in range(len(xs_top) - 1):
-        ya = y0 + amp * (0.5 if k % 2 else -0.5)
-        yb = y0 + amp * (-0.5 if k % 2 else 0.5)
-        corners = [
-            (xs_bot[k], ya, z_bot),
-            (xs_bot[k + 1], yb, z_bot),
-            (xs_top[k], ya, z_top),
-            (xs_top[k + 1], yb, z_top),
-        ]
-        out.append(hull([(x, y + s * t / 2, z) for x, y, z in corners for s in (-1, 1)]))
-    return out
-
-
-def fixed(name: str, parts: list[Part], mass: float, parent: str = "base") -> tuple[Link, Joint]:
-    """A light link rigidly joined to `parent` (its frame coincides with the parent's)."""
-    return Link(name, parts, mass), Joint(f"{name}_mount", "fixed", parent, name, (0.0, 0.0, 0.0))
-
-
-def strut(p0: Pt, p1: Pt, wx: float, wy: float) -> trimesh.Trimesh:
-    """A slanted bar of rectangular section wx x wy from p0 to p1 (horizontal end faces): legs, feet."""
-    return hull([(p[0] + sx * wx / 2, p[1] + sy * wy / 2, p[2]) for p in (p0, p1) for sx in (-1, 1) for sy in (-1, 1)])
-
-
-def recenter(spec: AssetSpec) -> AssetSpec:
-    """Move the asset so the centre of its footprint (x-y bounds of all its parts) is the origin.
-
-    Shifts the base link's parts, the joints hung on the base, base regions and anchors.
-    """
-    from luminous_sim.assets.urdf_writer import link_origins
-
-    origins = link_origins(spec)
-    lo = np.min([p.mesh.bounds[0] + origins[ln.name] for ln in spec.links for p in ln.parts], axis=0)
-    hi = np.max([p.mesh.bounds[1] + origins[ln.name] for ln in spec.links for p in ln.parts], axis=0)
-    shift = np.array([-(lo[0] + hi[0]) / 2, -(lo[1] + hi[1]) / 2, -lo[2]])
-    shift = np.round(shift, 5)
-    if np.allclose(shift, 0, atol=1e-6):
-        return spec
-    for p in spec.links[0].parts:
-        p.mesh = g.transformed(p.mesh, offset=shift)
-    for j in spec.joints:
-        if j.parent == "base":
-            j.origin = tuple(float(x) for x in np.asarray(j.origin) + shift)
-    for r in spec.regions:
-        if r.link == "base":
-            r.center = tuple(float(x) for x in np.asarray(r.center) + shift)
-    for a in spec.anchors:
-        a.pose = (a.pose[0] + float(shift[0]), a.pose[1] + float(shift[1]), a.pose[2] + float(shift[2]), a.pose[3])
-    return spec
-
-
 def _moved(
     parts: list[Part], yaw: float = 0.0, offset: Pt = (0.0, 0.0, 0.0), roll: float = 0.0, pitch: float = 0.0
 ) -> list[Part]:
@@ -227,8 +80,8 @@ def _lamp_head(
 
     Coordinates along the lamp's own axis (z up); the lining sits just inside the shade wall.
     """
-    shade = lathe_shell(profile, wall, sections)
-    lining = lathe_shell([(r - wall - 0.002, z) for r, z in profile], 0.002, sections)
+    shade = g.lathe_shell(profile, wall, sections)
+    lining = g.lathe_shell([(r - wall - 0.002, z) for r, z in profile], 0.002, sections)
     parts = [
         Part(shade, slot, convex=True),
         Part(g.sphere(bulb_r, (0, 0, bulb_z), subdivisions=1), "porcelain", state="off"),
@@ -506,14 +359,14 @@ def _tv_picture(w: float, h: float, y: float, z0: float, x0: float = 0.0) -> lis
         (x0 - w / 2 + w * u, z0 + h * (0.3 + 0.16 * np.sin(np.pi * (u - 0.35) / 0.5)))
         for u in np.linspace(0.35, 0.85, 8)
     ]
-    parts.append(Part(flat_poly(hill, y + 0.001), "tv_land", state="on"))
-    parts.append(Part(disc_y(0.09 * h, (x0 - w / 2 + 0.75 * w, y + 0.004, z0 + 0.78 * h)), "tv_sun", state="on"))
+    parts.append(Part(g.flat_poly(hill, y + 0.001), "tv_land", state="on"))
+    parts.append(Part(g.disc_y(0.09 * h, (x0 - w / 2 + 0.75 * w, y + 0.004, z0 + 0.78 * h)), "tv_sun", state="on"))
     hx, hz = x0 - w / 2 + 0.2 * w, z0 + 0.3 * h
     parts.append(
         Part(g.box_at((hx, y + 0.003, hz), (hx + 0.12 * w, y + 0.005, hz + 0.14 * h)), "tv_accent", state="on")
     )
     roof = [(hx - 0.01 * w, hz + 0.14 * h), (hx + 0.13 * w, hz + 0.14 * h), (hx + 0.06 * w, hz + 0.24 * h)]
-    parts.append(Part(flat_poly(roof, y + 0.003), "art_dark", state="on"))
+    parts.append(Part(g.flat_poly(roof, y + 0.003), "art_dark", state="on"))
     return parts
 
 
@@ -551,9 +404,10 @@ def television(v: int, rng: np.random.Generator) -> AssetSpec:
         parts.append(Part(g.box((sw, 0.002, sh), (0, d / 2 + 0.001, z0 + bezel + sh / 2)), "screen", collide=False))
         parts += _tv_picture(sw, sh, d / 2 + 0.002, z0 + bezel)
         parts.append(
-            Part(disc_y(0.003, (w / 2 - 0.03, d / 2 + 0.001, z0 + bezel / 2), 0.002, 8), "led_off", state="off")
+            Part(g.disc_y(0.003, (w / 2 - 0.03, d / 2 + 0.001, z0 + bezel / 2), 0.002, 8), "led_off", state="off")
         )
-        parts.append(Part(disc_y(0.003, (w / 2 - 0.03, d / 2 + 0.001, z0 + bezel / 2), 0.002, 8), "led_on", state="on"))
+        parts.append(Part(g.disc_y(0.003, (w / 2 - 0.03, d / 2 + 0.001, z0 + bezel / 2), 0.002, 8), "led_on",
+                          state="on"))
     if v in (0, 3):  # pedestal: neck and an oval foot
         fw, fd = [0.34, 0.0, 0.0, 0.5][v], [0.2, 0.0, 0.0, 0.26][v]
         foot = g.cylinder(0.5, 0.016, (0, 0, 0.008), sections=24)
@@ -567,7 +421,7 @@ def television(v: int, rng: np.random.Generator) -> AssetSpec:
                 pad = np.array([x + sx * 0.03, sy * 0.12, 0.0])
                 parts.append(Part(g.box((0.04, 0.03, 0.01), tuple(pad + [0, 0, 0.005])), "rubber", convex=True))
                 parts.append(
-                    Part(strut(pad + [0, 0, 0.01], (x, 0.0, z0 + 0.04), 0.024, 0.016), "dark_metal", convex=True)
+                    Part(g.strut(pad + [0, 0, 0.01], (x, 0.0, z0 + 0.04), 0.024, 0.016), "dark_metal", convex=True)
                 )
     else:  # back housing and a bar stand
         parts.append(
@@ -599,7 +453,7 @@ def _tv_band_pictures(a0: float, a1: float, half: float, chord: float, y: float,
     land = 0.3 + 0.12 * np.sin(2 * np.pi * u)
     parts.append(Part(g.box((chord, 0.002, h * land), (0, y + 0.002, z0 + h * land / 2)), "tv_land", state="on"))
     if abs(u - 0.75) < 0.06:
-        parts.append(Part(disc_y(0.09 * h, (0, y + 0.003, z0 + 0.78 * h)), "tv_sun", state="on"))
+        parts.append(Part(g.disc_y(0.09 * h, (0, y + 0.003, z0 + 0.78 * h)), "tv_sun", state="on"))
     if abs(u - 0.25) < 0.06:
         parts.append(
             Part(g.box((chord * 0.8, 0.002, h * 0.14), (0, y + 0.003, z0 + h * (land + 0.07))), "tv_accent", state="on")
@@ -617,7 +471,7 @@ def light_switch(v: int, rng: np.random.Generator) -> AssetSpec:
     parts = [Part(g.box((w, t, h), (0, 0, h / 2)), "porcelain", convex=True)]
     parts.append(Part(g.box((w - 0.008, 0.002, h - 0.008), (0, t / 2 + 0.001, h / 2)), "porcelain", collide=False))
     for sz in (-1, 1):  # screws
-        parts.append(Part(disc_y(0.0035, (0, t / 2 + 0.002, zc + sz * 0.0415), 0.002, 8), "metal", collide=False))
+        parts.append(Part(g.disc_y(0.0035, (0, t / 2 + 0.002, zc + sz * 0.0415), 0.002, 8), "metal", collide=False))
     if v in (0, 2):
         xs = [0.0] if v == 0 else [-0.026, 0.026]
         for x in xs:
@@ -626,10 +480,11 @@ def light_switch(v: int, rng: np.random.Generator) -> AssetSpec:
                 rocker = g.box((0.033, 0.008, 0.066))
                 rocker = g.transformed(rocker, roll=sign * 0.12, offset=(x, t / 2 + 0.006, zc))
                 parts.append(Part(rocker, "rocker", state=state))
-        parts.append(Part(disc_y(0.0025, (xs[-1] + 0.012, t / 2 + 0.0085, zc - 0.027), 0.002, 8), "led_on", state="on"))
+        parts.append(Part(g.disc_y(0.0025, (xs[-1] + 0.012, t / 2 + 0.0085, zc - 0.027), 0.002, 8), "led_on",
+                          state="on"))
     else:  # toggle lever in a bushing
         parts.append(Part(g.box((0.012, 0.003, 0.024), (0, t / 2 + 0.0025, zc)), "porcelain", collide=False))
-        parts.append(Part(disc_y(0.005, (0, t / 2 + 0.004, zc), 0.004, 12), "metal", collide=False))
+        parts.append(Part(g.disc_y(0.005, (0, t / 2 + 0.004, zc), 0.004, 12), "metal", collide=False))
         for state, sign in (("on", 1.0), ("off", -1.0)):
             p0 = np.array([0.0, t / 2 + 0.004, zc])
             p1 = p0 + [0.0, 0.016, sign * 0.011]
@@ -815,13 +670,13 @@ def curtains(v: int, rng: np.random.Generator) -> AssetSpec:
             gather = 0.16
             xs_tie = list(np.linspace(x_out, x_out - sx * gather, n + 1))
             xs_bot = list(np.linspace(x_out, x_out - sx * gather * 1.9, n + 1))
-            drapes += [Part(m, "drape", convex=True) for m in drape(xs_top, xs_tie, z_top, z_tie, 0.0, amp)]
-            drapes += [Part(m, "drape", convex=True) for m in drape(xs_tie, xs_bot, z_tie, z_bot, 0.0, amp)]
+            drapes += [Part(m, "drape", convex=True) for m in g.drape(xs_top, xs_tie, z_top, z_tie, 0.0, amp)]
+            drapes += [Part(m, "drape", convex=True) for m in g.drape(xs_tie, xs_bot, z_tie, z_bot, 0.0, amp)]
             xt = x_out - sx * gather / 2
             drapes.append(Part(g.box((gather + 0.03, amp + 0.03, 0.05), (xt, 0.0, z_tie)), "drape", collide=False))
             foot_x = sorted((x_out, xs_bot[-1]))
         else:
-            drapes += [Part(m, "drape", convex=True) for m in drape(xs_top, xs_top, z_top, z_bot, 0.0, amp)]
+            drapes += [Part(m, "drape", convex=True) for m in g.drape(xs_top, xs_top, z_top, z_bot, 0.0, amp)]
             foot_x = sorted((x_out, x_in))
         for x in xs_top[::2]:  # rings on the rod
             drapes.append(
@@ -894,8 +749,9 @@ def _picture(kind: int, x0: float, x1: float, z0: float, z1: float, y: float) ->
     if kind == 0:  # landscape: sky, fields, a hill, a sun, a tree
         parts += [rect(0, 1, 0.4, 1, "art_sky"), rect(0, 1, 0, 0.4, "art_land")]
         hill = [at(u, 0.38 + 0.25 * np.sin(np.pi * u / 0.7)) for u in np.linspace(0, 0.7, 9)] + [at(0.7, 0.38)]
-        parts.append(Part(flat_poly(hill, y + 0.001), "art_land", collide=False))
-        parts.append(Part(disc_y(0.08 * min(w, h), (x0 + 0.8 * w, y + 0.003, z0 + 0.78 * h)), "art_sun", collide=False))
+        parts.append(Part(g.flat_poly(hill, y + 0.001), "art_land", collide=False))
+        parts.append(Part(g.disc_y(0.08 * min(w, h), (x0 + 0.8 * w, y + 0.003, z0 + 0.78 * h)), "art_sun",
+                          collide=False))
         parts.append(rect(0.84, 0.855, 0.34, 0.5, "art_dark", 0.003))
         parts.append(
             Part(
@@ -922,7 +778,7 @@ def _picture(kind: int, x0: float, x1: float, z0: float, z1: float, y: float) ->
         ):
             parts.append(
                 Part(
-                    disc_y(r * min(w, h), (x0 + u * w, y + 0.003 + 0.0005 * r, z0 + s * h), 0.002, 20),
+                    g.disc_y(r * min(w, h), (x0 + u * w, y + 0.003 + 0.0005 * r, z0 + s * h), 0.002, 20),
                     slot,
                     collide=False,
                 )
@@ -931,13 +787,14 @@ def _picture(kind: int, x0: float, x1: float, z0: float, z1: float, y: float) ->
         parts += [rect(0, 1, 0.3, 1, "art_sky"), rect(0, 1, 0, 0.3, "art_blue")]
         peaks = [(0.0, 0.35, 0.25, 0.78), (0.35, 0.68, 0.55, 0.88), (0.6, 1.0, 0.8, 0.7)]
         for ua, ub, um, top in peaks:
-            parts.append(Part(flat_poly([at(ua, 0.3), at(ub, 0.3), at(um, top)], y + 0.001), "art_dark", collide=False))
+            parts.append(Part(g.flat_poly([at(ua, 0.3), at(ub, 0.3), at(um, top)], y + 0.001), "art_dark",
+                              collide=False))
             cap = [
                 at(um - (um - ua) * 0.22, top - (top - 0.3) * 0.22),
                 at(um + (ub - um) * 0.22, top - (top - 0.3) * 0.22),
                 at(um, top),
             ]
-            parts.append(Part(flat_poly(cap, y + 0.002), "canvas", collide=False))
+            parts.append(Part(g.flat_poly(cap, y + 0.002), "canvas", collide=False))
     return parts
 
 
