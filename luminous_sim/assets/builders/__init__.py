@@ -2,12 +2,13 @@
 
 from luminous_sim.assets.builders import (  # noqa: F401
     bathroom,
-    decor_structure,
+    decor,
     food,
     household,
     kitchen,
     kitchenware,
     seating,
     storage,
+    structure,
     tables,
 )

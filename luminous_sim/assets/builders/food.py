@@ -9,7 +9,6 @@ from a function seeded with `variant_rng(parent, v)`.
 
 from __future__ import annotations
 
-
 import numpy as np
 import trimesh
 from shapely.geometry import Polygon

@@ -12,7 +12,14 @@ from itertools import pairwise
 import numpy as np
 
 from luminous_sim.assets import geometry as g
-from luminous_sim.assets.builders.common import carcass, drawer, hinged_door, pick, shift_footprint, surface
+from luminous_sim.assets.builders.common import (
+    carcass,
+    drawer,
+    hinged_door,
+    pick,
+    shift_footprint,
+    surface,
+)
 from luminous_sim.assets.registry import register
 from luminous_sim.assets.spec import AssetSpec, Joint, Link, Part, Region
 
