@@ -3,6 +3,7 @@
 from luminous_sim.assets.builders import (  # noqa: F401
     bathroom,
     decor,
+    electronics,
     food,
     household,
     kitchen,
@@ -11,4 +12,6 @@ from luminous_sim.assets.builders import (  # noqa: F401
     storage,
     structure,
     tables,
+    textiles,
+    toiletries,
 )
