@@ -656,22 +656,12 @@ def round_wall_wedges(r_bot: float, r_top: float, wall: float, z0: float, z1: fl
 def tapered_walls(wb: float, db: float, wt: float, dt: float, z0: float, z1: float, t: float
                   ) -> list[trimesh.Trimesh]:
     """Four walls of a rectangular open vessel whose outer size goes from wb x db (at z0) to wt x dt (at z1)."""
-    walls = []
-    for s in (-1, 1):  # front/back walls span the full width
-        pts = []
-        for w, d, z in ((wb, db, z0), (wt, dt, z1)):
-            for y in (s * d / 2, s * (d / 2 - t)):
-                for x in (-w / 2, w / 2):
-                    pts.append((x, y, z))
-        walls.append(hull(pts))
-    for s in (-1, 1):  # side walls
-        pts = []
-        for w, d, z in ((wb, db, z0), (wt, dt, z1)):
-            for x in (s * w / 2, s * (w / 2 - t)):
-                for y in (-d / 2, d / 2):
-                    pts.append((x, y, z))
-        walls.append(hull(pts))
-    return walls
+    ends = ((wb, db, z0), (wt, dt, z1))
+    front_back = [hull([(x, y, z) for w, d, z in ends for y in (s * d / 2, s * (d / 2 - t)) for x in (-w / 2, w / 2)])
+                  for s in (-1, 1)]  # these span the full width
+    sides = [hull([(x, y, z) for w, d, z in ends for x in (s * w / 2, s * (w / 2 - t)) for y in (-d / 2, d / 2)])
+             for s in (-1, 1)]
+    return front_back + sides
 
 
 def rect_rim(w: float, d: float, z0: float, z1: float, out: float, inn: float) -> list[trimesh.Trimesh]:

@@ -682,6 +682,14 @@ def vase(v: int, rng: np.random.Generator) -> AssetSpec:
 
 # ------------------------------------------------------------------------------------------------ garden
 
+def _spout(p0: np.ndarray, p1: np.ndarray, r: float, rose: tuple[float, float, float, int], slot: str) -> list[Part]:
+    """A watering can's spout from p0 to p1 (radius r) with a rose (frustum r_bottom, r_top, length, sections)."""
+    d = p1 - p0
+    r0, r1, length, sections = rose
+    head = g.point_along(g.frustum(r0, r1, length, sections=sections), d, p1 - d / np.linalg.norm(d) * 0.01)
+    return [solid(g.rod(p0, p1, r, sections=10), slot), solid(head, slot)]
+
+
 @register("WateringCan", variants=3, category="small")
 def watering_can(v: int, rng: np.random.Generator) -> AssetSpec:
     """A watering can (spout towards +y): classic metal can with a rose, plastic can, small indoor can."""
@@ -693,11 +701,7 @@ def watering_can(v: int, rng: np.random.Generator) -> AssetSpec:
         parts.append(solid(g.cylinder(0.035, 0.018, (0, -0.035, h + 0.018), sections=16), "hh_can"))
         parts.append(visual(g.flat_disc(0.029, h + 0.027, 0, -0.035, n=16), "hh_dark"))
         p0, p1 = np.array([0, r * 0.75, 0.035]), np.array([0, r + 0.24, h + 0.07])
-        parts.append(solid(g.rod(p0, p1, 0.011, sections=10), "hh_can"))
-        d = p1 - p0
-        parts.append(solid(g.point_along(g.frustum(0.012, 0.03, 0.035, sections=14), d,
-                                         p1 - d / np.linalg.norm(d) * 0.01),
-                           "hh_can"))
+        parts += _spout(p0, p1, 0.011, (0.012, 0.03, 0.035, 14), "hh_can")
         handle = g.torus_arc(0.082, 0.009, (0, -0.012, h + 0.006), plane="yz", start=0.0, end=PI, sections=14,
                              minor_sections=8)
         parts.append(Part(handle, "hh_can", convex=False))
@@ -708,11 +712,7 @@ def watering_can(v: int, rng: np.random.Generator) -> AssetSpec:
         parts.append(solid(body, "plastic"))
         top = float(body.bounds[1][2])
         p0, p1 = np.array([0, b * 0.8, 0.04]), np.array([0, b + 0.2, top + 0.05])
-        parts.append(solid(g.rod(p0, p1, 0.012, sections=10), "plastic"))
-        d = p1 - p0
-        parts.append(solid(g.point_along(g.frustum(0.013, 0.024, 0.03, sections=12), d,
-                                         p1 - d / np.linalg.norm(d) * 0.01),
-                           "plastic"))
+        parts += _spout(p0, p1, 0.012, (0.013, 0.024, 0.03, 12), "plastic")
         handle = g.torus_arc(0.085, 0.011, (0, -0.02, top - 0.045), plane="yz", start=0.35, end=PI - 0.1, sections=14,
                              minor_sections=8)
         parts.append(Part(handle, "plastic", convex=False))
