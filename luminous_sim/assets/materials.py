@@ -60,6 +60,15 @@ PALETTES: dict[str, tuple[RGBA, ...]] = {
     "tomato_flesh": _hex("e5383b", "f25c54"),
     "stem": _hex("5a3d1e", "3f6b22"),
     "imported": _hex("b4b4b4", "8c9aa8", "c8b496", "a0a0a0"),
+    # shared by the small-object families (household, electronics, textiles, toiletries)
+    "hh_art": _hex("e76f51", "2a9d8f", "264653", "e9c46a", "6d597a"),
+    "hh_button": _hex("5a5a5a", "7d7d7d", "9a9a9a"),
+    "hh_dark": _hex("141414"),
+    "hh_face": _hex("fbfbf8", "f5f1e6", "fafafa"),
+    "hh_ink": _hex("1b1b1b", "262626"),
+    "hh_print": _hex("9a978f", "8c8980"),
+    "hh_red": _hex("d62828", "c1121f"),
+    "hh_remote": _hex("1e1e1e", "2d2d2d", "e6e6e6", "3a3a3a"),
 }
 
 

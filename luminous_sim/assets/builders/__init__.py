@@ -2,12 +2,16 @@
 
 from luminous_sim.assets.builders import (  # noqa: F401
     bathroom,
-    decor_structure,
+    decor,
+    electronics,
     food,
     household,
     kitchen,
     kitchenware,
     seating,
     storage,
+    structure,
     tables,
+    textiles,
+    toiletries,
 )

@@ -14,19 +14,7 @@ import numpy as np
 import trimesh
 
 from luminous_sim.assets import geometry as g
-from luminous_sim.assets.builders.common import pick
-from luminous_sim.assets.builders.decor_structure import (
-    disc_y,
-    drape,
-    fixed,
-    flat_poly,
-    hull,
-    oval,
-    recenter,
-    ring,
-    rrect,
-    slab,
-)
+from luminous_sim.assets.builders.common import fixed, pick, recenter
 from luminous_sim.assets.materials import add_palettes, hex_colours
 from luminous_sim.assets.registry import register, variant_rng
 from luminous_sim.assets.spec import Anchor, AssetSpec, Joint, Link, Part, Region
@@ -38,31 +26,6 @@ add_palettes(
 )
 
 SHOWER_DOOR_OPEN = float(np.radians(90))
-
-
-def _xz(mesh: trimesh.Trimesh) -> trimesh.Trimesh:
-    """Stand a mesh drawn in the x-y plane up into the x-z plane.
-
-    Rotating +90 degrees about x maps (x, y, z) to (x, -z, y): plane y becomes the height and a
-    thickness spanning z in [-y1, -y0] ends up spanning y0..y1.
-    """
-    out = mesh.copy()
-    out.apply_transform(trimesh.transformations.rotation_matrix(np.pi / 2, [1, 0, 0]))
-    return out
-
-
-def _ring_xz(outer: np.ndarray, inner: np.ndarray, y0: float, y1: float) -> list[trimesh.Trimesh]:
-    """A flat frame in the x-z plane between two matching (x, z) loops, y0..y1 deep."""
-    return [_xz(m) for m in ring(outer, inner, -y0, -y1)]
-
-
-def _arch(w: float, h: float, n: int = 10) -> np.ndarray:
-    """A round-topped outline (x, z): straight sides up to h - w/2, a half circle on top; CCW."""
-    r = w / 2
-    pts = [(r, 0.0), (r, h - r)]
-    pts += [(r * np.cos(t), h - r + r * np.sin(t)) for t in np.linspace(0, np.pi, n + 1)[1:-1]]
-    pts += [(-r, h - r), (-r, 0.0), (0.0, 0.0)]
-    return np.array(pts)
 
 
 def _bar_region(name: str, length: float, y: float, z_top: float, clearance: float = 0.25) -> Region:
@@ -102,9 +65,9 @@ def toilet(v: int, rng: np.random.Generator) -> AssetSpec:
     def outline(d: float, s: float = 1.0, dy: float = 0.0) -> np.ndarray:
         """The bowl's plan outline grown by d (negative: shrunk), scaled by s about its centre."""
         if square:
-            loop = rrect(rx * s + d, (ryf + ryb) / 2 * s + d, 0.07 * s + max(d, -0.06), m=4)
+            loop = g.rrect_loop(rx * s + d, (ryf + ryb) / 2 * s + d, 0.07 * s + max(d, -0.06), m=4)
             return loop + [0.0, yc + (ryf - ryb) / 2 * s + dy]
-        return oval(rx * s + d, ryf * s + d, ryb * s + d, n=20, cy=yc + dy)
+        return g.oval(rx * s + d, ryf * s + d, ryb * s + d, n=20, cy=yc + dy)
 
     porcelain = "porcelain"
     parts: list[Part] = []
@@ -114,54 +77,58 @@ def toilet(v: int, rng: np.random.Generator) -> AssetSpec:
     outer_bot = outline(-0.01, 0.92, -0.02) if square else outline(0, s_bot, dy_bot)
     parts += [
         Part(m, porcelain, convex=True)
-        for m in ring(outline(0), outline(-wall), z_rim, z_trap, outer_bot, outline(-wall, s_bot, dy_bot))
+        for m in g.ring_wall(outline(0), outline(-wall), z_rim, z_trap, outer_bot, outline(-wall, s_bot, dy_bot))
     ]
-    parts.append(Part(slab(outline(-0.01, s_bot, dy_bot), z_trap - 0.03, z_trap + 0.01), porcelain, convex=True))
+    parts.append(Part(g.loop_slab(outline(-0.01, s_bot, dy_bot), z_trap - 0.03, z_trap + 0.01), porcelain, convex=True))
     zw = z_trap + 0.09
     sw = s_bot + (1 - s_bot) * (zw - z_trap) / (z_rim - z_trap)
     parts.append(
-        Part(slab(outline(-wall - 0.002, sw, dy_bot * (1 - sw) / (1 - s_bot)), zw - 0.004, zw), "water", collide=False)
+        Part(g.loop_slab(outline(-wall - 0.002, sw, dy_bot * (1 - sw) / (1 - s_bot)), zw - 0.004, zw), "water",
+             collide=False)
     )
     # pedestal down to the floor (skirted straight sides on the square model)
     if square:
         foot = outline(-0.01, 0.92, -0.02)
     else:
-        foot = oval(0.12, 0.2, 0.18, n=20, cy=yc - 0.04)
+        foot = g.oval(0.12, 0.2, 0.18, n=20, cy=yc - 0.04)
     parts.append(
         Part(
-            hull([(x, y, 0.0) for x, y in foot] + [(x, y, z_trap) for x, y in (foot if square else outer_bot)]),
+            g.hull([(x, y, 0.0) for x, y in foot] + [(x, y, z_trap) for x, y in (foot if square else outer_bot)]),
             porcelain,
             convex=True,
         )
     )
     # rear deck joining the bowl to the tank
-    deck = rrect(tw / 2 - 0.06, 0.07, 0.02) + [0.0, y_tank[1] - 0.05]
-    parts.append(Part(slab(deck, z_rim - 0.12, z_rim + 0.005), porcelain, convex=True))
+    deck = g.rrect_loop(tw / 2 - 0.06, 0.07, 0.02) + [0.0, y_tank[1] - 0.05]
+    parts.append(Part(g.loop_slab(deck, z_rim - 0.12, z_rim + 0.005), porcelain, convex=True))
     # tank (its own light link: a hollow tank keeps the toilet's mass over the pedestal)
     tank: list[Part] = []
     tcy = (y_tank[0] + y_tank[1]) / 2
     if v == 1:  # one-piece: tank flows down into the deck, rounded, push button on top
-        low = rrect(tw / 2 - 0.04, td / 2 - 0.01, 0.05) + [0.0, tcy]
-        high = rrect(tw / 2, td / 2, 0.07) + [0.0, tcy]
+        low = g.rrect_loop(tw / 2 - 0.04, td / 2 - 0.01, 0.05) + [0.0, tcy]
+        high = g.rrect_loop(tw / 2, td / 2, 0.07) + [0.0, tcy]
         tank.append(
             Part(
-                hull([(x, y, z_rim - 0.1) for x, y in low] + [(x, y, th - 0.025) for x, y in high]),
+                g.hull([(x, y, z_rim - 0.1) for x, y in low] + [(x, y, th - 0.025) for x, y in high]),
                 porcelain,
                 convex=True,
             )
         )
         tank.append(
             Part(
-                slab(rrect(tw / 2 + 0.004, td / 2 + 0.004, 0.072) + [0.0, tcy], th - 0.025, th), porcelain, convex=True
+                g.loop_slab(g.rrect_loop(tw / 2 + 0.004, td / 2 + 0.004, 0.072) + [0.0, tcy], th - 0.025, th),
+                    porcelain, convex=True
             )
         )
         tank.append(Part(g.cylinder(0.022, 0.008, (0.0, tcy, th + 0.004), sections=14), "metal", collide=False))
     else:
         r_t = 0.005 if square else 0.03
         z_t0 = z_rim + 0.01 if v != 2 else z_rim + 0.04
-        tank.append(Part(slab(rrect(tw / 2, td / 2, r_t) + [0.0, tcy], z_t0, th - 0.025), porcelain, convex=True))
+        tank.append(Part(g.loop_slab(g.rrect_loop(tw / 2, td / 2, r_t) + [0.0, tcy], z_t0, th - 0.025), porcelain,
+                         convex=True))
         tank.append(
-            Part(slab(rrect(tw / 2 + 0.008, td / 2 + 0.008, r_t) + [0.0, tcy], th - 0.025, th), porcelain, convex=True)
+            Part(g.loop_slab(g.rrect_loop(tw / 2 + 0.008, td / 2 + 0.008, r_t) + [0.0, tcy], th - 0.025, th),
+                 porcelain, convex=True)
         )
         if v == 2:  # a narrow neck between deck and tank
             tank.append(Part(g.box((tw * 0.6, td * 0.7, 0.05), (0.0, tcy, z_rim + 0.02)), porcelain, convex=True))
@@ -170,12 +137,12 @@ def toilet(v: int, rng: np.random.Generator) -> AssetSpec:
                 tank.append(Part(g.box((0.035, 0.05, 0.006), (sx * 0.02, tcy, th + 0.003)), "metal", collide=False))
         else:  # flush lever on the front left
             hx, hz = -tw / 2 + 0.06, th - 0.07
-            tank.append(Part(disc_y(0.016, (hx, y_tank[1] + 0.004, hz), 0.008, 12), "metal", collide=False))
+            tank.append(Part(g.disc_y(0.016, (hx, y_tank[1] + 0.004, hz), 0.008, 12), "metal", collide=False))
             tank.append(Part(g.box((0.07, 0.012, 0.012), (hx + 0.035, y_tank[1] + 0.014, hz)), "metal", collide=False))
     tank_link, tank_joint = fixed("tank", tank, 5.0)
     # seat ring on the rim, hinge blocks behind it
     seat_slot = ["porcelain", "appliance", "appliance", "wood"][v]
-    parts += [Part(m, seat_slot, convex=True) for m in ring(outline(0.006), outline(-0.06), seat_top, z_rim)]
+    parts += [Part(m, seat_slot, convex=True) for m in g.ring_wall(outline(0.006), outline(-0.06), seat_top, z_rim)]
     for sx in (-1, 1):
         parts.append(
             Part(
@@ -187,7 +154,7 @@ def toilet(v: int, rng: np.random.Generator) -> AssetSpec:
     # lid: from the hinge forward over the seat, in the lid frame (origin at the hinge axis)
     lid_loop = outline(0.008) - [0.0, y_hinge]
     lid_loop[:, 1] = np.maximum(lid_loop[:, 1], 0.005)
-    lid_mesh = hull([(x, y, z) for x, y in lid_loop for z in (0.002, 0.022)])
+    lid_mesh = g.hull([(x, y, z) for x, y in lid_loop for z in (0.002, 0.022)])
     lid = Link("lid", [Part(lid_mesh, seat_slot, convex=True)], 1.5)
     joint = Joint("lid_hinge", "revolute", "base", "lid", (0.0, y_hinge, seat_top), (1.0, 0.0, 0.0), 0.0, 1.55, "lid")
     lid_lo, lid_hi = lid_loop.min(axis=0), lid_loop.max(axis=0)
@@ -250,8 +217,8 @@ def _tub_dims(v: int) -> dict[str, float]:
 def _basin_loops(d: dict[str, float], grow: float = 0.0) -> tuple[np.ndarray, np.ndarray]:
     """The basin's outer outline at its rim and at its bottom, grown by `grow`."""
     a, b, r, sx, sy = d["a"], d["b"], d["r"], d["sx"], d["sy"]
-    top = rrect(a + grow, b + grow, r + grow, m=4)
-    bot = rrect(a - sx + grow, b - sy + grow, max(r - min(sx, sy), 0.03) + grow, m=4)
+    top = g.rrect_loop(a + grow, b + grow, r + grow, m=4)
+    bot = g.rrect_loop(a - sx + grow, b - sy + grow, max(r - min(sx, sy), 0.03) + grow, m=4)
     return top, bot
 
 
@@ -263,8 +230,8 @@ def bathtub_basin(v: int, rng: np.random.Generator) -> AssetSpec:
     w, tf = d["wall"], d["floor"]
     top_o, bot_o = _basin_loops(d)
     top_i, bot_i = _basin_loops(d, -w)
-    parts = [Part(m, "porcelain", convex=True) for m in ring(top_o, top_i, hb, 0.0, bot_o, bot_i)]
-    parts.append(Part(slab(bot_o, 0.0, tf), "porcelain", convex=True))
+    parts = [Part(m, "porcelain", convex=True) for m in g.ring_wall(top_o, top_i, hb, 0.0, bot_o, bot_i)]
+    parts.append(Part(g.loop_slab(bot_o, 0.0, tf), "porcelain", convex=True))
     drain_x = -(d["a"] - d["sx"] - w - 0.08)
     parts.append(Part(g.cylinder(0.035, 0.003, (drain_x, 0.0, tf + 0.0015), sections=16), "metal", collide=False))
     parts.append(Part(g.cylinder(0.022, 0.004, (drain_x, 0.0, tf + 0.002), sections=12), "dark_metal", collide=False))
@@ -293,8 +260,8 @@ def bathtub(v: int, rng: np.random.Generator) -> AssetSpec:
         slot = "porcelain" if v == 0 else "tile"
         t = 0.035
         # deck with the opening, skirts all round, a bed the basin sits on, a lining round the opening
-        outer = rrect(length / 2, depth / 2, 0.0, m=4) - [cx, 0.0]
-        parts += [Part(_moved_xy(m, cx), slot, convex=True) for m in ring(outer, top_o, height, height - 0.04)]
+        outer = g.rrect_loop(length / 2, depth / 2, 0.0, m=4) - [cx, 0.0]
+        parts += [Part(_moved_xy(m, cx), slot, convex=True) for m in g.ring_wall(outer, top_o, height, height - 0.04)]
         z_sk = 0.0 if v == 0 else 0.08
         skirts = [
             g.box_at((-length / 2, depth / 2 - t, z_sk), (length / 2, depth / 2, height - 0.04)),
@@ -331,18 +298,19 @@ def bathtub(v: int, rng: np.random.Generator) -> AssetSpec:
                     convex=True,
                 )
             )
-        lining = ring(rrect(d["a"] + 0.012, d["b"] + 0.012, d["r"] + 0.012, m=4), top_o, height - 0.04, z_b)
+        lining = g.ring_wall(g.rrect_loop(d["a"] + 0.012, d["b"] + 0.012, d["r"] + 0.012, m=4), top_o, height - 0.04,
+                             z_b)
         parts += [Part(_moved_xy(m, cx), "porcelain", convex=True) for m in lining]
-        parts.append(Part(_moved_xy(slab(bot_o, z_sk if v == 1 else 0.0, z_b), cx), "porcelain", convex=True))
+        parts.append(Part(_moved_xy(g.loop_slab(bot_o, z_sk if v == 1 else 0.0, z_b), cx), "porcelain", convex=True))
         desc = "alcove bathtub with an apron" if v == 0 else "built-in bathtub with a tiled surround and a tap ledge"
     else:  # claw-foot: a rolled shell hugging the basin, standing on four feet
         sh = 0.035
         top_s, bot_s = _basin_loops(d, sh)
         z0 = z_b - sh
-        parts += [Part(m, "painted", convex=True) for m in ring(top_s, top_o, height - 0.02, z0, bot_s, bot_o)]
-        parts.append(Part(slab(bot_s, z0, z_b), "painted", convex=True))
+        parts += [Part(m, "painted", convex=True) for m in g.ring_wall(top_s, top_o, height - 0.02, z0, bot_s, bot_o)]
+        parts.append(Part(g.loop_slab(bot_s, z0, z_b), "painted", convex=True))
         lip_o, _ = _basin_loops(d, sh + 0.012)
-        parts += [Part(m, "porcelain", convex=True) for m in ring(lip_o, top_o, height, height - 0.035)]
+        parts += [Part(m, "porcelain", convex=True) for m in g.ring_wall(lip_o, top_o, height, height - 0.035)]
         fx, fy = d["a"] - d["sx"] - 0.02, d["b"] - d["sy"] - 0.04
         for sx in (-1, 1):
             for sy in (-1, 1):
@@ -397,7 +365,7 @@ def shower_curtain(v: int, rng: np.random.Generator) -> AssetSpec:
         span, n, amp = w - 0.06, [14, 18][v], [0.07, 0.06][v]
     x0 = -w / 2 + 0.03
     xs = list(np.linspace(x0, x0 + span, n + 1))
-    strips = drape(xs, xs, z_top, z_bot, 0.0, amp, t=0.002)
+    strips = g.drape(xs, xs, z_top, z_bot, 0.0, amp, t=0.002)
     for k, m in enumerate(strips):
         slot = "curtain_band" if v == 1 and k % 4 in (1, 2) else "curtain_vinyl"
         hang.append(Part(m, slot, convex=True))
@@ -519,7 +487,7 @@ def shower_glass(v: int, rng: np.random.Generator) -> AssetSpec:
             (w / 2 - rad + rad * np.cos(t), h - rad + rad * np.sin(t)) for t in np.linspace(0, np.pi / 2, 7)[1:]
         ]
         outline += [(-w / 2 + 0.02, h)]
-        parts.append(Part(flat_poly(outline, -0.004, 0.008), "glass", convex=True))
+        parts.append(Part(g.flat_poly(outline, -0.004, 0.008), "glass", convex=True))
         for z in (0.4, h - 0.3):
             parts.append(Part(g.box((0.05, 0.03, 0.08), (-w / 2 + 0.04, 0.0, z)), "metal", collide=False))
     else:
@@ -593,7 +561,7 @@ def shower_head(v: int, rng: np.random.Generator) -> AssetSpec:
             Part(face, "dark_metal", collide=False),
         ]
         parts.append(Part(g.box_at((-0.035, -0.012, 0.0), (0.035, 0.0, lift + 0.035)), "metal", convex=True))
-        parts.append(Part(disc_y(0.03, (0, 0.002, lift), 0.006, 16), "metal", collide=False))
+        parts.append(Part(g.disc_y(0.03, (0, 0.002, lift), 0.006, 16), "metal", collide=False))
         desc = "classic angled shower head on a wall arm"
     else:  # slide rail kit with a soap dish at the bottom
         rail = pick(rng, 0.6, 0.7)
@@ -649,7 +617,7 @@ def towel_holder(v: int, rng: np.random.Generator) -> AssetSpec:
         bh, reach, r = 0.055, 0.08, 0.01
         for sx in (-1, 1):
             parts.append(_block_bracket(sx * length / 2, 0.0, reach, bh))
-            parts.append(Part(disc_y(0.026, (sx * length / 2, 0.003, bh / 2), 0.006, 16), "metal", collide=False))
+            parts.append(Part(g.disc_y(0.026, (sx * length / 2, 0.003, bh / 2), 0.006, 16), "metal", collide=False))
         parts.append(
             Part(g.cylinder(r, length, (0, reach - 0.02, bh - 0.018), axis="x", sections=12), "metal", convex=True)
         )
@@ -776,7 +744,7 @@ def toilet_paper_hanger(v: int, rng: np.random.Generator) -> AssetSpec:
         for sx in (-1, 1):  # D-shaped side plates standing on their flat bottom edges
             parts.append(
                 Part(
-                    hull([(x, y, z) for y, z in side for x in (sx * w / 2 - 0.004, sx * w / 2 + 0.004)]),
+                    g.hull([(x, y, z) for y, z in side for x in (sx * w / 2 - 0.004, sx * w / 2 + 0.004)]),
                     "metal",
                     convex=True,
                 )
@@ -787,7 +755,7 @@ def toilet_paper_hanger(v: int, rng: np.random.Generator) -> AssetSpec:
             for y, z in ((y0, z0), (y1, z1)):
                 inner = c + (np.array([y, z]) - c) * (rad - 0.004) / rad
                 pts += [(x, yy, zz) for x in (-w / 2, w / 2) for yy, zz in ((y, z), tuple(inner))]
-            parts.append(Part(hull(pts), "metal", convex=True))
+            parts.append(Part(g.hull(pts), "metal", convex=True))
         parts.append(Part(g.box_at((-w / 2, 0.0, h - 0.004), (w / 2, d - rad, h)), "metal", convex=True))
         parts.append(Part(g.box_at((-w / 2, 0.0, 0.02), (w / 2, 0.005, h)), "metal", convex=True))
         ys, zs = 0.07, 0.072
@@ -876,7 +844,7 @@ def mirror(v: int, rng: np.random.Generator) -> AssetSpec:
         t = np.linspace(0, 2 * np.pi, n, endpoint=False)
         outer = np.stack([rad * np.cos(t), zc + rad * np.sin(t)], axis=1)
         inner = np.stack([(rad - fw) * np.cos(t), zc + (rad - fw) * np.sin(t)], axis=1)
-        parts += [Part(m, "dark_metal", convex=True) for m in _ring_xz(outer, inner, 0.0, depth)]
+        parts += [Part(m, "dark_metal", convex=True) for m in g.ring_wall_xz(outer, inner, 0.0, depth)]
         parts.append(
             Part(
                 g.cylinder(rad - fw + 0.005, depth - 0.01, (0, (depth - 0.01) / 2, zc), axis="y", sections=n),
@@ -893,12 +861,12 @@ def mirror(v: int, rng: np.random.Generator) -> AssetSpec:
     else:
         w, h, fw = pick(rng, 0.5, 0.6), pick(rng, 1.0, 1.2), 0.025
         rail = 0.06
-        outer = _arch(w, h)
-        inner = _arch(w - 2 * fw, h - rail - fw) + [0.0, rail]
-        parts += [Part(m, "brass", convex=True) for m in _ring_xz(outer, inner, 0.0, depth)]
+        outer = g.arch_outline(w, h)
+        inner = g.arch_outline(w - 2 * fw, h - rail - fw) + [0.0, rail]
+        parts += [Part(m, "brass", convex=True) for m in g.ring_wall_xz(outer, inner, 0.0, depth)]
         parts.append(Part(g.box_at((-w / 2, 0.0, 0.0), (w / 2, 0.075, rail)), "brass", convex=True))
-        glass = _arch(w - 2 * fw + 0.01, h - rail - fw + 0.005) + [0.0, rail - 0.005]
-        parts.append(Part(flat_poly([tuple(p) for p in glass[:-1]], 0.0, depth - 0.01), "mirror", convex=True))
+        glass = g.arch_outline(w - 2 * fw + 0.01, h - rail - fw + 0.005) + [0.0, rail - 0.005]
+        parts.append(Part(g.flat_poly([tuple(p) for p in glass[:-1]], 0.0, depth - 0.01), "mirror", convex=True))
         parts += _smudges(-w / 2 + fw, w / 2 - fw, rail, h - w / 2, depth - 0.0095)
         desc = "tall arched wall mirror"
     return recenter(AssetSpec("Mirror", v, "decor", [Link("base", parts, 5.0)], description=desc))

@@ -9,15 +9,12 @@ from a function seeded with `variant_rng(parent, v)`.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-
 import numpy as np
 import trimesh
 from shapely.geometry import Polygon
 
 from luminous_sim.assets import geometry as g
-from luminous_sim.assets.builders.common import pick
-from luminous_sim.assets.builders.kitchenware import robust_mass
+from luminous_sim.assets.builders.common import pick, robust_mass
 from luminous_sim.assets.materials import add_palettes, hex_colours
 from luminous_sim.assets.registry import register, variant_rng
 from luminous_sim.assets.spec import AssetSpec, Link, Part, SliceSpec
@@ -77,71 +74,8 @@ def apple_slice(v: int, rng: np.random.Generator) -> AssetSpec:
 # shared helpers
 
 
-def _spheroid(radii: Sequence[float], center: Sequence[float] = (0.0, 0.0, 0.0), sections: int = 14,
-              rings: int = 7) -> trimesh.Trimesh:
-    """A low-poly ellipsoid (a revolved half circle, scaled): smooth at a few dozen vertices."""
-    phis = np.linspace(0.0, np.pi, rings + 1)
-    profile = [(float(np.sin(p)), float(-np.cos(p))) for p in phis]
-    profile[0], profile[-1] = (0.0, -1.0), (0.0, 1.0)
-    mesh = g.revolve(profile, sections=sections)
-    mesh.apply_scale(np.asarray(radii, dtype=float))
-    mesh.apply_translation(np.asarray(center, dtype=float))
-    return mesh
-
-
-def _flat_bottom(mesh: trimesh.Trimesh, depth: float) -> trimesh.Trimesh:
-    """Press the lowest `depth` of a mesh flat (a resting spot) and move its bottom to z = 0."""
-    v = np.array(mesh.vertices)
-    cut = v[:, 2].min() + depth
-    v[:, 2] = np.maximum(v[:, 2], cut) - cut
-    return trimesh.Trimesh(v, np.array(mesh.faces), process=False)
-
-
-def _loft_x(outline: Sequence[tuple[float, float]], stations: Sequence[tuple[float, float, float]]) -> trimesh.Trimesh:
-    """A solid swept along x through convex (y, z) cross-sections: `outline` scaled by (sy, sz) at each x.
-
-    z is scaled about z = 0 so a flat-bottomed outline keeps its bottom on the floor.
-    """
-    ring = np.asarray(outline, dtype=float)
-    m = len(ring)
-    verts = []
-    for x, sy, sz in stations:
-        verts += [(x, sy * y, sz * z) for y, z in ring]
-    cz = float(ring[:, 1].mean())
-    verts.append((stations[0][0], 0.0, stations[0][2] * cz))
-    verts.append((stations[-1][0], 0.0, stations[-1][2] * cz))
-    faces = []
-    for i in range(len(stations) - 1):
-        for j in range(m):
-            a0, a1 = i * m + j, i * m + (j + 1) % m
-            b0, b1 = a0 + m, a1 + m
-            faces += [(a0, b0, a1), (a1, b0, b1)]
-    c0, c1 = len(verts) - 2, len(verts) - 1
-    last = (len(stations) - 1) * m
-    for j in range(m):
-        faces.append((c0, (j + 1) % m, j))
-        faces.append((c1, last + j, last + (j + 1) % m))
-    mesh = trimesh.Trimesh(np.asarray(verts), np.asarray(faces), process=True)
-    mesh.fix_normals()
-    return mesh
-
-
-def _slab(outline: Sequence[tuple[float, float]], t: float, z0: float = 0.0) -> trimesh.Trimesh:
-    """A flat piece: a 2D outline (x, y) extruded by t."""
-    return g.extrude([tuple(map(float, p)) for p in outline], t, z0)
-
-
-def _inset(outline: Sequence[tuple[float, float]], d: float) -> list[tuple[float, float]]:
-    """The outline shrunk by d (the cut face inside a crust or skin)."""
-    poly = Polygon(outline).buffer(-d, join_style=2).simplify(1e-4)
-    return [(float(x), float(y)) for x, y in list(poly.exterior.coords)[:-1]]
-
-
-def _ellipse(a: float, b: float, n: int = 16) -> list[tuple[float, float]]:
-    return [(a * np.cos(t), b * np.sin(t)) for t in np.linspace(0, 2 * np.pi, n, endpoint=False)]
-
-
-def _stack_poses(n: int, stacks: int, pitch: float, t: float, yaw: float = 0.0) -> list[tuple[float, float, float, float]]:
+def _stack_poses(n: int, stacks: int, pitch: float, t: float,
+                 yaw: float = 0.0) -> list[tuple[float, float, float, float]]:
     """n flat pieces in `stacks` stacks side by side along x, `pitch` apart, each piece t thick."""
     stacks = max(1, min(n, stacks))
     poses = []
@@ -223,20 +157,20 @@ def bread(v: int, rng: np.random.Generator) -> AssetSpec:
     """A loaf lying along x: a domed sandwich loaf, a scored baguette or an oval country loaf."""
     d = _bread_dims(v)
     length, w, h, n, t = d["L"], d["W"], d["H"], int(d["n"]), d["t"]
-    loaf = _loft_x(_bread_outline(v, w, h), _bread_stations(v, length))
+    loaf = g.loft_x(_bread_outline(v, w, h), _bread_stations(v, length))
     parts = [Part(loaf, "bread", convex=True)]
     if v == 1:  # diagonal slashes along the top
         for k in range(5):
             x = (k - 2) * 0.17 * length
             s = max(0.3, (1 - abs(x / (length / 2)) ** 4) ** 0.5)
-            cut = g.transformed(_spheroid((0.034, 0.006, 0.004), sections=10, rings=5), yaw=0.5,
+            cut = g.transformed(g.spheroid((0.034, 0.006, 0.004), sections=10, rings=5), yaw=0.5,
                                 offset=(x, 0.0, h * min(1.0, s * 1.05) - 0.0022))
             parts.append(Part(cut, "food_bread_score", collide=False))
     elif v == 2:  # one long score along the top
-        cut = _spheroid((0.36 * length, 0.009, 0.005), (0.0, 0.004, h - 0.003), sections=12, rings=5)
+        cut = g.spheroid((0.36 * length, 0.009, 0.005), (0.0, 0.004, h - 0.003), sections=12, rings=5)
         parts.append(Part(cut, "food_bread_score", collide=False))
     else:  # a split along the top crust
-        cut = _spheroid((0.4 * length, 0.006, 0.004), (0.0, 0.0, h - 0.0022), sections=10, rings=5)
+        cut = g.spheroid((0.4 * length, 0.006, 0.004), (0.0, 0.0, h - 0.0022), sections=10, rings=5)
         parts.append(Part(cut, "food_bread_score", collide=False))
     # lying slices: the cross-section's height lies along x (yaw 90 deg), stacked along the loaf
     stacks = max(1, min(n, round(length / (h * 1.04))))
@@ -252,8 +186,8 @@ def bread_slice(v: int, rng: np.random.Generator) -> AssetSpec:
     d = _bread_dims(v)
     w, h, t = d["W"], d["H"], d["t"]
     outline = [(y, z - h / 2) for y, z in _bread_outline(v, w, h)]
-    crust = _slab(outline, t)
-    crumb = _slab(_inset(outline, 0.0045 if v != 1 else 0.0035), 0.0008, t)
+    crust = g.extrude(outline, t)
+    crumb = g.extrude(g.inset_outline(outline, 0.0045 if v != 1 else 0.0035), 0.0008, t)
     parts = [Part(crust, "bread", convex=True), Part(crumb, "bread_crumb", collide=False)]
     return AssetSpec("BreadSliced", v, "small", [Link("base", parts, robust_mass(parts, 0.03))],
                      description=["slice of sandwich bread", "slice of baguette", "slice of country bread"][v])
@@ -277,7 +211,7 @@ def egg(v: int, rng: np.random.Generator) -> AssetSpec:
         profile.append((float(max(r, 0.0)), float(x)))
     profile[0], profile[-1] = (0.0, -a), (0.0, a)
     body = g.revolve(profile, axis="x", sections=16)
-    body = _flat_bottom(body, 0.0012)
+    body = g.pressed_flat(body, 0.0012)
     parts = [Part(body, "egg", convex=True)]
     return AssetSpec("Egg", v, "small", [Link("base", parts, robust_mass(parts, 0.06))],
                      description=["white egg", "large brown egg", "small round egg"][v])
@@ -307,39 +241,39 @@ def lettuce(v: int, rng: np.random.Generator) -> AssetSpec:
     hearts: list[trimesh.Trimesh] = []
     if v == 1:
         rx, ry, rz = d["rx"], d["ry"], d["rz"]
-        core = _flat_bottom(_spheroid((rx, ry, rz), sections=16, rings=8), 0.006)
+        core = g.pressed_flat(g.spheroid((rx, ry, rz), sections=16, rings=8), 0.006)
         top = 2 * rz - 0.006
         for k, (yy, zz, roll) in enumerate([(-0.7, 0.45, -0.7), (0.7, 0.45, 0.7), (-0.3, 0.85, -0.25),
                                             (0.3, 0.85, 0.25), (0.0, 0.98, 0.0)]):
-            leaf = _spheroid((rx * (0.95 - 0.05 * (k % 2)), ry * 0.62, 0.008), sections=10, rings=6)
+            leaf = g.spheroid((rx * (0.95 - 0.05 * (k % 2)), ry * 0.62, 0.008), sections=10, rings=6)
             leaf = g.transformed(leaf, roll=roll, offset=(rx * 0.06, yy * ry, zz * top))
             leaves.append(leaf)
-            rib = _spheroid((rx * 0.75, 0.0045, 0.0035), sections=8, rings=4)
+            rib = g.spheroid((rx * 0.75, 0.0045, 0.0035), sections=8, rings=4)
             hearts.append(g.transformed(rib, roll=roll, offset=(rx * 0.02, yy * ry * 1.02, zz * top + 0.007)))
-        frill = _spheroid((0.03, ry * 1.15, rz * 0.9), (rx * 0.86, 0.0, rz * 0.95), sections=12, rings=6)
+        frill = g.spheroid((0.03, ry * 1.15, rz * 0.9), (rx * 0.86, 0.0, rz * 0.95), sections=12, rings=6)
         leaves.append(frill)
         stump = g.cylinder(ry * 0.4, 0.012, (-rx + 0.004, 0.0, rz * 0.9), axis="x", sections=10)
         hearts.append(stump)
     else:
         r, rz = d["rx"], d["rz"]
-        core = _flat_bottom(_spheroid((r * 0.92, r * 0.92, rz), sections=16, rings=8), d["flat"])
+        core = g.pressed_flat(g.spheroid((r * 0.92, r * 0.92, rz), sections=16, rings=8), d["flat"])
         top = float(core.vertices[:, 2].max())
         n_out = 7 if v == 0 else 8
         splay = 0.35 if v == 0 else 0.8
         for k in range(n_out):
             a = 2 * np.pi * k / n_out + 0.2
-            leaf = _spheroid((0.011, r * 0.72, top * (0.5 if v == 0 else 0.42)), sections=10, rings=5)
+            leaf = g.spheroid((0.011, r * 0.72, top * (0.5 if v == 0 else 0.42)), sections=10, rings=5)
             leaf = g.transformed(leaf, pitch=splay, yaw=a)
             rho = r * (0.76 if v == 0 else 0.82)
             leaf.apply_translation((rho * np.cos(a), rho * np.sin(a), top * (0.48 if v == 0 else 0.46)))
             leaves.append(leaf)
         for k in range(3):
             a = 2 * np.pi * k / 3 + 1.0
-            leaf = _spheroid((0.01, r * 0.55, top * 0.33), sections=10, rings=5)
+            leaf = g.spheroid((0.01, r * 0.55, top * 0.33), sections=10, rings=5)
             leaf = g.transformed(leaf, pitch=-0.9, yaw=a)
             leaf.apply_translation((0.35 * r * np.cos(a), 0.35 * r * np.sin(a), top * 0.82))
             leaves.append(leaf)
-        hearts.append(_spheroid((r * 0.3, r * 0.3, 0.012), (0.0, 0.0, top - 0.008), sections=12, rings=5))
+        hearts.append(g.spheroid((r * 0.3, r * 0.3, 0.012), (0.0, 0.0, top - 0.008), sections=12, rings=5))
     parts = [Part(core, "lettuce", convex=True)]
     parts += [Part(m, "lettuce", collide=False) for m in leaves]
     parts += [Part(m, "food_lettuce_heart", collide=False) for m in hearts]
@@ -362,7 +296,7 @@ def _lettuce_piece_t(v: int) -> float:
 
 def _band(outline: list[tuple[float, float]], width: float, t: float, z0: float) -> trimesh.Trimesh:
     """A thin ring following an outline (a leaf layer seen on a cut face), `width` wide and `t` thick."""
-    ring = Polygon(outline).difference(Polygon(_inset(outline, width)))
+    ring = Polygon(outline).difference(Polygon(g.inset_outline(outline, width)))
     mesh = trimesh.creation.extrude_polygon(ring, t)
     mesh.apply_translation((0.0, 0.0, z0))
     return mesh
@@ -374,18 +308,19 @@ def lettuce_slice(v: int, rng: np.random.Generator) -> AssetSpec:
     d = _lettuce_dims(v)
     t = _lettuce_piece_t(v)
     if v == 1:
-        outline = _ellipse(d["ry"] * 0.95, d["rz"] * 0.95, 18)
+        outline = g.ellipse_points(d["ry"] * 0.95, d["rz"] * 0.95, 18)
         layers = [(0.72, 0.0, 0.0), (0.45, 0.0, 0.002)]
     else:
         rr = 0.86 * d["rx"] * 0.92
-        outline = _ellipse(rr, rr * 0.97, 20)
+        outline = g.ellipse_points(rr, rr * 0.97, 20)
         layers = [(0.78, 0.004, 0.0), (0.56, -0.003, 0.004), (0.33, 0.002, -0.002)]
-    parts = [Part(_slab(outline, t), "lettuce", convex=True),
-             Part(_slab(_inset(outline, 0.003), 0.0006, t), "food_lettuce_heart", collide=False)]
+    parts = [Part(g.extrude(outline, t), "lettuce", convex=True),
+             Part(g.extrude(g.inset_outline(outline, 0.003), 0.0006, t), "food_lettuce_heart", collide=False)]
     for s, ox, oy in layers:
         ring = [(x * s + ox, y * s + oy) for x, y in outline]
         parts.append(Part(_band(ring, 0.0025, 0.0008, t), "lettuce", collide=False))
-    return AssetSpec("LettuceSliced", v, "small", [Link("base", parts, robust_mass(parts, round(0.5 / LETTUCE_PIECES, 4)))],
+    mass = robust_mass(parts, round(0.5 / LETTUCE_PIECES, 4))
+    return AssetSpec("LettuceSliced", v, "small", [Link("base", parts, mass)],
                      description="cross-cut slab of lettuce" if v != 1 else "cross-cut piece of romaine")
 
 
@@ -413,14 +348,14 @@ def _potato_dims(v: int) -> dict:
 def potato(v: int, rng: np.random.Generator) -> AssetSpec:
     """A lumpy potato lying along x, with a few dark eyes."""
     d = _potato_dims(v)
-    body = _spheroid((1.0, 1.0, 1.0), sections=16, rings=9)
+    body = g.spheroid((1.0, 1.0, 1.0), sections=16, rings=9)
     vv = np.array(body.vertices)
     dirs = vv / np.linalg.norm(vv, axis=1, keepdims=True)
     factor = np.ones(len(vv))
     for dvec, amp in d["bumps"]:
         factor += amp * np.maximum(0.0, dirs @ np.asarray(dvec)) ** 3
     vv = vv * factor[:, None] * np.array([d["rx"], d["ry"], d["rz"]])
-    body = _flat_bottom(trimesh.Trimesh(vv, body.faces, process=False), 0.004)
+    body = g.pressed_flat(trimesh.Trimesh(vv, body.faces, process=False), 0.004)
     parts = [Part(body, "potato", convex=True)]
     # eyes on the upper surface: small dark dimples at fixed vertices
     top = body.vertices[:, 2].max()
@@ -428,7 +363,7 @@ def potato(v: int, rng: np.random.Generator) -> AssetSpec:
     for k in range(4):
         i = cand[(k * 7 + 3) % len(cand)]
         p = body.vertices[i]
-        parts.append(Part(_spheroid((0.0035, 0.0035, 0.0035), p, sections=6, rings=3), "food_potato_eye",
+        parts.append(Part(g.spheroid((0.0035, 0.0035, 0.0035), p, sections=6, rings=3), "food_potato_eye",
                           collide=False))
     pitch = 2 * d["r_slice"] * 1.05
     poses = _stack_poses(d["n"], max(1, round(2 * d["rx"] / pitch)), pitch, d["t"])
@@ -442,9 +377,9 @@ def potato_slice(v: int, rng: np.random.Generator) -> AssetSpec:
     """A round slice of the matching potato lying flat: brown skin rim, pale cut face."""
     d = _potato_dims(v)
     r, t = d["r_slice"], d["t"]
-    outline = _ellipse(r * 1.08, r * 0.93, 18)
-    disc = _slab(outline, t)
-    face = _slab(_inset(outline, 0.0018), 0.0008, t)
+    outline = g.ellipse_points(r * 1.08, r * 0.93, 18)
+    disc = g.extrude(outline, t)
+    face = g.extrude(g.inset_outline(outline, 0.0018), 0.0008, t)
     parts = [Part(disc, "potato", convex=True), Part(face, "potato_flesh", collide=False)]
     return AssetSpec("PotatoSliced", v, "small", [Link("base", parts, robust_mass(parts, round(0.2 / d["n"], 4)))],
                      description="potato slice")
@@ -470,18 +405,18 @@ def tomato(v: int, rng: np.random.Generator) -> AssetSpec:
     """A round, slightly flattened tomato with shallow ribs, a green star-shaped calyx and a stem."""
     d = _tomato_dims(v)
     r, squash = d["r"], d["squash"]
-    body = _spheroid((r, r, r * squash), sections=20, rings=9)
+    body = g.spheroid((r, r, r * squash), sections=20, rings=9)
     vv = np.array(body.vertices)
     theta = np.arctan2(vv[:, 1], vv[:, 0])
     lat = np.sqrt(np.maximum(0.0, 1 - (vv[:, 2] / (r * squash)) ** 2))
     k = 1 + d["ribs"] * np.cos(5 * theta) * lat - 0.06 * np.clip(vv[:, 2] / (r * squash) - 0.75, 0, None) * 4
     vv[:, :2] *= k[:, None]
-    body = _flat_bottom(trimesh.Trimesh(vv, body.faces, process=False), 0.003)
+    body = g.pressed_flat(trimesh.Trimesh(vv, body.faces, process=False), 0.003)
     top = float(body.vertices[:, 2].max())
     parts = [Part(body, "tomato", convex=True)]
     for i in range(5):
         a = 2 * np.pi * i / 5 + 0.3
-        sepal = _spheroid((0.5 * r * 0.42, 0.0045, 0.0015), sections=8, rings=4)
+        sepal = g.spheroid((0.5 * r * 0.42, 0.0045, 0.0015), sections=8, rings=4)
         sepal = g.transformed(sepal, yaw=a, pitch=-0.15,
                               offset=(0.2 * r * np.cos(a), 0.2 * r * np.sin(a), top - 0.0005))
         parts.append(Part(sepal, "plant", collide=False))
@@ -501,7 +436,7 @@ def tomato_slice(v: int, rng: np.random.Generator) -> AssetSpec:
     pockets = [3, 5, 4][v]
     for i in range(pockets):
         a = 2 * np.pi * i / pockets
-        seed = _spheroid((0.28 * r, 0.16 * r, 0.0008), sections=8, rings=3)
+        seed = g.spheroid((0.28 * r, 0.16 * r, 0.0008), sections=8, rings=3)
         seed = g.transformed(seed, yaw=a, offset=(0.5 * r * np.cos(a), 0.5 * r * np.sin(a), t + 0.0008))
         parts.append(Part(seed, "food_seed", collide=False))
     return AssetSpec("TomatoSliced", v, "small", [Link("base", parts, robust_mass(parts, round(0.15 / d["n"], 4)))],

@@ -58,32 +58,6 @@ def _ring(radius: float, minor: float, center: Sequence[float], slot: str, plane
     return Part(mesh, slot, collide=False, state=state)
 
 
-def _clip(mesh: trimesh.Trimesh, lo: Sequence[float], hi: Sequence[float]) -> trimesh.Trimesh:
-    """The part of a (convex) mesh inside the box lo..hi; convex again."""
-    return trimesh.boolean.intersection([mesh, g.box_at(lo, hi)], engine="manifold")
-
-
-def _rounded_box(w: float, d: float, h: float, r: float, edges: str, z0: float = 0.0, sections: int = 16,
-                 cx: float = 0.0, cy: float = 0.0) -> trimesh.Trimesh:
-    """A convex box w x d x h standing at z0 with rounded edges.
-
-    edges "z": the four vertical edges rounded; "x": the two top edges running along x (a loaf);
-    "y": the two top edges running along y (domed ends).
-    """
-    if edges == "z":
-        pieces = [g.cylinder(r, h, (sx * (w / 2 - r), sy * (d / 2 - r), z0 + h / 2), sections=sections)
-                  for sx in (-1, 1) for sy in (-1, 1)]
-    elif edges == "x":
-        pieces = [g.box_at((-w / 2, -d / 2, z0), (w / 2, d / 2, z0 + h - r))]
-        pieces += [g.cylinder(r, w, (0, sy * (d / 2 - r), z0 + h - r), axis="x", sections=sections) for sy in (-1, 1)]
-    else:
-        pieces = [g.box_at((-w / 2, -d / 2, z0), (w / 2, d / 2, z0 + h - r))]
-        pieces += [g.cylinder(r, d, (sx * (w / 2 - r), 0, z0 + h - r), axis="y", sections=sections) for sx in (-1, 1)]
-    hull = trimesh.util.concatenate(pieces).convex_hull
-    hull.apply_translation((cx, cy, 0.0))
-    return hull
-
-
 def _slab_with_opening(x0: float, x1: float, y0: float, y1: float, z0: float, z1: float,
                        ox0: float, ox1: float, oy0: float, oy1: float, slot: str) -> list[Part]:
     """A worktop slab x0..x1, y0..y1 with a rectangular opening ox0..ox1, oy0..oy1, as four convex boxes."""
@@ -149,7 +123,8 @@ def _front_panels(fronts: list[tuple[float, float, float, float, str]], y: float
     return parts
 
 
-def _bay_fronts(x0: float, x1: float, z0: float, z1: float, layout: str) -> list[tuple[float, float, float, float, str]]:
+def _bay_fronts(x0: float, x1: float, z0: float, z1: float, layout: str) -> list[tuple[float, float, float, float,
+                                                                                       str]]:
     """The fronts of one cabinet bay x0..x1, z0..z1: "door" (a drawer above one door), "doors" (a drawer
     strip above two doors), "stack" (three drawers), "sink" (a false front above two doors)."""
     top = z1 - 0.16
@@ -294,7 +269,7 @@ def microwave(v: int, rng: np.random.Generator) -> AssetSpec:
     parts.append(_box((-w / 2, -d / 2, foot + t), (-w / 2 + t, y_front, top_lo), body_slot))
     parts.append(_box((-w / 2 + t, -d / 2, foot + t), (x_div, -d / 2 + t, top_lo), body_slot))
     if v == 3:
-        top = _rounded_box(w, d, r_top + t, r_top, "y", z0=h - r_top - t, sections=20)
+        top = g.rounded_box(w, d, r_top + t, r_top, "y", z0=h - r_top - t, sections=20)
         parts.append(Part(top, body_slot, convex=True))
         parts.append(_box((x_div, -d / 2, foot), (w / 2, d / 2, top_lo), panel_slot))
     else:
@@ -602,7 +577,7 @@ def faucet(v: int, rng: np.random.Generator) -> AssetSpec:
     if v == 0:
         col_h = pick(rng, 0.2, 0.26)
         reach = pick(rng, 0.085, 0.1)  # arc radius; the outlet is 2 * reach in front of the column
-        parts.append(Part(_rounded_box(0.07, 0.09, 0.014, 0.03, "z", cy=0.01), slot, convex=True))
+        parts.append(Part(g.rounded_box(0.07, 0.09, 0.014, 0.03, "z", cy=0.01), slot, convex=True))
         parts.append(_cyl(0.026, 0.07, (0, 0, 0.014 + 0.035), slot, sections=16))
         parts.append(_cyl(0.018, col_h, (0, 0, 0.012 + col_h / 2), slot, sections=16))
         top = 0.012 + col_h
@@ -649,7 +624,7 @@ def faucet(v: int, rng: np.random.Generator) -> AssetSpec:
     else:
         col_h = pick(rng, 0.3, 0.34)
         reach = pick(rng, 0.2, 0.23)
-        parts.append(Part(_rounded_box(0.075, 0.095, 0.016, 0.03, "z", cy=0.012), slot, convex=True))
+        parts.append(Part(g.rounded_box(0.075, 0.095, 0.016, 0.03, "z", cy=0.012), slot, convex=True))
         parts.append(_cyl(0.026, 0.08, (0, 0, 0.016 + 0.04), slot, sections=16))
         parts.append(_cyl(0.016, col_h, (0, 0, 0.014 + col_h / 2), slot, sections=14))
         top = 0.014 + col_h
@@ -840,18 +815,19 @@ def coffee_machine(v: int, rng: np.random.Generator) -> AssetSpec:
     parts: list[Part] = []
     if v == 1:  # rounded pod machine: a round-cornered tower and a loaf-topped head, tank behind
         tank_d = 0.06
-        tower = _rounded_box(w, tower_d - tank_d, h - plinth, 0.04, "z", z0=plinth, cy=y_back + tank_d +
-                             (tower_d - tank_d) / 2)
+        tower = g.rounded_box(w, tower_d - tank_d, h - plinth, 0.04, "z", z0=plinth, cy=y_back + tank_d +
+                              (tower_d - tank_d) / 2)
         parts.append(Part(tower, body_slot, convex=True))
-        head = _rounded_box(w, d - tower_d + 0.02, head_h, 0.03, "x", z0=head_lo, cy=y_tower - 0.01 +
-                            (d - tower_d + 0.02) / 2 - 0.005)
+        head = g.rounded_box(w, d - tower_d + 0.02, head_h, 0.03, "x", z0=head_lo, cy=y_tower - 0.01 +
+                             (d - tower_d + 0.02) / 2 - 0.005)
         parts.append(Part(head, body_slot, convex=True))
-        tank = _rounded_box(w - 0.03, tank_d - 0.005, h - plinth - 0.03, 0.02, "z", z0=plinth, cy=y_back + tank_d / 2)
+        tank = g.rounded_box(w - 0.03, tank_d - 0.005, h - plinth - 0.03, 0.02, "z", z0=plinth, cy=y_back + tank_d / 2)
         parts.append(Part(tank, "glass", convex=True))
-        parts.append(_box((-w / 2 + 0.02, y_back + 0.005, h - 0.032), (w / 2 - 0.02, y_back + tank_d - 0.005, h - 0.025),
+        parts.append(_box((-w / 2 + 0.02, y_back + 0.005, h - 0.032), (w / 2 - 0.02, y_back + tank_d - 0.005,
+                                                                       h - 0.025),
                           "dark_plastic"))
         parts.append(_cyl(0.035, 0.004, (0, y_tower + 0.05, h + 0.001), "dark_plastic", sections=20, collide=False))
-        base = _rounded_box(w, d, plinth, 0.04, "z")
+        base = g.rounded_box(w, d, plinth, 0.04, "z")
         parts.append(Part(base, "dark_plastic", convex=True))
     else:
         parts.append(_box((-w / 2, y_back, 0.0), (w / 2, d / 2, plinth), "dark_plastic" if v != 1 else body_slot))
@@ -896,7 +872,8 @@ def coffee_machine(v: int, rng: np.random.Generator) -> AssetSpec:
             parts.append(_cyl(0.005, 0.015, (sx * 0.012, spout_y, head_lo - 0.049), "metal", sections=8,
                               collide=False))
         spout_lo = head_lo - 0.056
-        wand = g.rod((w / 2 - 0.03, head_front - 0.02, head_lo), (w / 2 - 0.03, head_front + 0.01, plinth + 0.12), 0.005,
+        wand = g.rod((w / 2 - 0.03, head_front - 0.02, head_lo), (w / 2 - 0.03, head_front + 0.01, plinth + 0.12),
+                     0.005,
                      sections=8)
         parts.append(Part(wand, "metal", collide=False))
         gauge_z = head_lo + head_h / 2
@@ -964,14 +941,14 @@ def toaster(v: int, rng: np.random.Generator) -> AssetSpec:
     H = [0.19, 0.2, 0.19, 0.21][v]
     edges, r = [("z", 0.04), ("x", 0.05), ("z", 0.015), ("y", 0.08)][v]
     slot = ["metal", "appliance", "plastic", "metal"][v]
-    body = _rounded_box(L, W, H, r, edges, sections=20)
+    body = g.rounded_box(L, W, H, r, edges, sections=20)
     sw, sd = 0.034, [0.14, 0.145, 0.14, 0.15][v]
     z_s = H - sd
     sl = [L - 0.09, L - 0.08, (L - 0.09) / 2, L - 2 * r - 0.04][v]
     sy = [-(sw / 2 + 0.012), sw / 2 + 0.012]
     sx = [0.0] if v != 2 else [-(sl / 2 + 0.012), sl / 2 + 0.012]
     slots = [(x - sl / 2, x + sl / 2, y - sw / 2, y + sw / 2) for x in sx for y in sy]
-    parts: list[Part] = [Part(_clip(body, (-L, -W, -0.01), (L, W, z_s)), slot, convex=True)]
+    parts: list[Part] = [Part(g.clip_to_box(body, (-L, -W, -0.01), (L, W, z_s)), slot, convex=True)]
     # the layer with the slots: bands in y, each cut into runs in x between the slots
     ys = sorted({-W / 2 - 0.01, W / 2 + 0.01} | {s[2] for s in slots} | {s[3] for s in slots})
     for ya, yb in itertools.pairwise(ys):
@@ -979,7 +956,7 @@ def toaster(v: int, rng: np.random.Generator) -> AssetSpec:
         cuts = sorted((s[0], s[1]) for s in slots if s[2] < mid < s[3])
         xs = [-L / 2 - 0.01] + [c for cut in cuts for c in cut] + [L / 2 + 0.01]
         for xa, xb in zip(xs[0::2], xs[1::2]):
-            piece = _clip(body, (xa, ya, z_s), (xb, yb, H + 0.01))
+            piece = g.clip_to_box(body, (xa, ya, z_s), (xb, yb, H + 0.01))
             if len(piece.vertices) and piece.volume > 1e-7:
                 parts.append(Part(piece, slot, convex=True))
     regions = []

@@ -16,7 +16,7 @@ import numpy as np
 import trimesh
 
 from luminous_sim.assets import geometry as g
-from luminous_sim.assets.builders.common import pick, surface
+from luminous_sim.assets.builders.common import pick, robust_mass, surface
 from luminous_sim.assets.materials import add_palettes, hex_colours
 from luminous_sim.assets.registry import register
 from luminous_sim.assets.spec import AssetSpec, Link, Part, Region
@@ -43,88 +43,9 @@ Pt = Sequence[float]
 # helpers
 
 
-def robust_mass(parts: Sequence[Part], mass: float) -> float:
-    """`mass`, nudged by up to 16 % (usually far less) so that PyBullet keeps the link's inertia.
-
-    PyBullet zeroes the inertia of a link whose principal moments break the triangle inequality
-    (izz <= ixx + iyy, ...), after which the body can no longer rotate. Flat things (cutlery, slices,
-    towels) sit right on that limit (izz = ixx + iyy for a lamina), and the URDF's moments are rounded to
-    1e-6, which can tip them over it. This replays the writer's computation for all-convex parts (uniform
-    density over each part's hull, moments floored at 1e-6, rounded to 6 decimals) and returns the
-    nearest mass whose rounded moments keep a margin of one unit.
-    """
-    hulls = [p.mesh.convex_hull for p in parts if p.collide]
-    if not hulls or any(p.convex is not True for p in parts if p.collide):
-        return mass
-    vols = np.array([max(h.volume, 1e-12) for h in hulls])
-    com = sum(v * h.center_mass for v, h in zip(vols, hulls)) / vols.sum()
-    per_kg = np.zeros(3)
-    for v, h in zip(vols, hulls):
-        d = h.center_mass - com
-        per_kg += np.diag(h.moment_inertia) + v * (d @ d - d * d)
-    per_kg /= vols.sum()
-    for k in range(81):
-        step = (k + 1) // 2 * (1 if k % 2 else -1)
-        m = round(mass * (1 + 0.004 * step), 5)
-        diag = np.maximum(per_kg * m, 1e-6)
-        for i in range(3):
-            diag[i] = min(diag[i], diag[(i + 1) % 3] + diag[(i + 2) % 3])
-        r = np.round(diag, 6)
-        if all(r[i] <= r[(i + 1) % 3] + r[(i + 2) % 3] - 0.9e-6 for i in range(3)):
-            return m
-    return mass
-
-
 def _link(parts: list[Part], mass: float) -> list[Link]:
     """The single base link of a small object, its mass kept clear of PyBullet's inertia check."""
     return [Link("base", parts, robust_mass(parts, mass))]
-
-
-def _blob(radii: Pt, center: Pt, yaw: float = 0.0, pitch: float = 0.0) -> trimesh.Trimesh:
-    """A flat oval patch (a stain, a smear, a crumb): an octagonal disc with semi-axes radii[0], radii[1]
-    and thickness 2 * radii[2]."""
-    disc = g.cylinder(1.0, 2.0, sections=8)
-    disc.apply_scale(np.asarray(radii, dtype=float))
-    return g.transformed(disc, yaw=yaw, pitch=pitch, offset=center)
-
-
-def _tapered(p0: Pt, p1: Pt, r0: float, r1: float, sections: int = 12) -> trimesh.Trimesh:
-    """A truncated cone from p0 (radius r0) to p1 (radius r1): spouts, tapered handles."""
-    a, b = np.asarray(p0, dtype=float), np.asarray(p1, dtype=float)
-    length = float(np.linalg.norm(b - a))
-    mesh = g.revolve([(0, 0), (r0, 0), (r1, length), (0, length)], sections=sections)
-    mesh.apply_transform(trimesh.geometry.align_vectors([0, 0, 1], (b - a) / length))
-    mesh.apply_translation(a)
-    return mesh
-
-
-def _plate_xz(outline: Sequence[tuple[float, float]], t: float, start: Pt, end_x: float, end_z: float,
-              ) -> trimesh.Trimesh:
-    """A flat handle, `t` thick, from an (x, y) outline running from x = 0 to its length: stretched and
-    tilted so that its bottom face runs from `start` (x, y, z) to height `end_z` at x = `end_x` (either side)."""
-    length = max(x for x, _ in outline)
-    run, drop = abs(end_x - start[0]), start[2] - end_z
-    pitch = float(np.arctan2(drop, run))
-    scale = float(np.hypot(run, drop)) / length
-    mesh = g.transformed(g.extrude([(x * scale, y) for x, y in outline], t), pitch=pitch)
-    if end_x < start[0]:
-        mesh = g.transformed(mesh, yaw=np.pi)
-    mesh.apply_translation(np.asarray(start, dtype=float))
-    return mesh
-
-
-def _rounded_rect(w: float, d: float, r: float, n: int = 4) -> list[tuple[float, float]]:
-    """A w x d rectangle (centred) with corners rounded by r."""
-    pts = []
-    for cx, cy, a0 in ((w / 2 - r, d / 2 - r, 0.0), (-w / 2 + r, d / 2 - r, np.pi / 2),
-                       (-w / 2 + r, -d / 2 + r, np.pi), (w / 2 - r, -d / 2 + r, 1.5 * np.pi)):
-        for a in np.linspace(a0, a0 + np.pi / 2, n):
-            pts.append((float(cx + r * np.cos(a)), float(cy + r * np.sin(a))))
-    return pts
-
-
-def _ellipse(a: float, b: float, n: int = 16) -> list[tuple[float, float]]:
-    return [(float(a * np.cos(t)), float(b * np.sin(t))) for t in np.linspace(0, 2 * np.pi, n, endpoint=False)]
 
 
 def _profile_r(profile: Sequence[tuple[float, float]], z: float) -> tuple[float, float]:
@@ -142,8 +63,8 @@ def _wall_stain(profile: Sequence[tuple[float, float]], wall: float, z: float, a
     """A smear lying on a vessel wall (inside or outside) at height z and polar angle `angle`."""
     r, slope = _profile_r(profile, z)
     r = r - wall if inside else r
-    return _blob((h, w, 0.0012), (r * np.cos(angle), r * np.sin(angle), z), yaw=angle,
-                 pitch=float(np.arctan2(slope, 1.0)) - np.pi / 2)
+    return g.oval_patch((h, w, 0.0012), (r * np.cos(angle), r * np.sin(angle), z), yaw=angle,
+                        pitch=float(np.arctan2(slope, 1.0)) - np.pi / 2)
 
 
 def _floor_stains(r_in: float, z: float, seed: int, n: int = 5) -> list[trimesh.Trimesh]:
@@ -154,8 +75,9 @@ def _floor_stains(r_in: float, z: float, seed: int, n: int = 5) -> list[trimesh.
         a = 2 * np.pi * k / n + round(float(rng.uniform(0, 0.6)), 3)
         rho = round(float(rng.uniform(0.35, 0.7)), 3) * r_in
         size = round(float(rng.uniform(0.1, 0.18)), 3) * r_in
-        out.append(_blob((size, 0.6 * size, max(0.0015, 0.2 * size)), (rho * np.cos(a), rho * np.sin(a), z + 0.0008),
-                         yaw=a))
+        out.append(g.oval_patch((size, 0.6 * size, max(0.0015, 0.2 * size)), (rho * np.cos(a), rho * np.sin(a),
+                                                                              z + 0.0008),
+                                yaw=a))
     return out
 
 
@@ -225,7 +147,8 @@ def mug(v: int, rng: np.random.Generator) -> AssetSpec:
     inner = min(p[0] for p in profile) - 0.006
     return AssetSpec(
         "Mug", v, "small", [Link("base", parts, 0.3)],
-        regions=[Region("inside", "volume", (0.0, 0.0, 0.008 + (h - 0.008) / 2), (inner * 1.4, inner * 1.4, h - 0.008))],
+        regions=[Region("inside", "volume", (0.0, 0.0, 0.008 + (h - 0.008) / 2), (inner * 1.4, inner * 1.4,
+                                                                                  h - 0.008))],
         description="ceramic mug with a handle and a cavity",
     )
 
@@ -297,7 +220,7 @@ def plate(v: int, rng: np.random.Generator) -> AssetSpec:
     else:
         side = pick(rng, 0.21, 0.23)
         well, t, rise, th = 0.66 * side, 0.008, 0.014, 0.005
-        parts.append(Part(g.extrude(_rounded_rect(well, well, 0.01), t), "ceramic", convex=True))
+        parts.append(Part(g.extrude(g.rounded_outline(well, well, 0.01), t), "ceramic", convex=True))
         for k in range(4):  # four mitred rim pieces rising from the well's edges to the outer edge
             corners = []
             for dz in (0.0, th):
@@ -314,7 +237,7 @@ def plate(v: int, rng: np.random.Generator) -> AssetSpec:
         a = 2 * np.pi * k / 7 + round(float(rng_d.uniform(0, 0.5)), 3)
         rho = round(float(rng_d.uniform(0.25, 0.8)), 3) * well
         s = round(float(rng_d.uniform(0.05, 0.12)), 3) * well
-        dirt.append(_blob((s * 1.6, s, 0.002), (rho * np.cos(a), rho * np.sin(a), t + 0.0008), yaw=a))
+        dirt.append(g.oval_patch((s * 1.6, s, 0.002), (rho * np.cos(a), rho * np.sin(a), t + 0.0008), yaw=a))
     parts += [Part(m, "dirt", state="dirty") for m in dirt]
     return AssetSpec("Plate", v, "small", [Link("base", parts, 0.4)],
                      regions=[surface("top", top_w, top_w, t, 0.35, margin=0.0)],
@@ -345,7 +268,7 @@ def pot(v: int, rng: np.random.Generator) -> AssetSpec:
                                end=a0 + np.pi, sections=10)
             parts.append(Part(loop, handle_slot, convex=False))
         elif v == 1:  # cast lugs
-            lug = g.extrude(_rounded_rect(0.04, 0.07, 0.012), 0.012, h - 0.03)
+            lug = g.extrude(g.rounded_outline(0.04, 0.07, 0.012), 0.012, h - 0.03)
             lug.apply_translation((s * (r + 0.012), 0.0, 0.0))
             parts.append(Part(lug, handle_slot, convex=True))
         else:  # vertical loops, like a mug's handle
@@ -389,22 +312,22 @@ def pan(v: int, rng: np.random.Generator) -> AssetSpec:
     if v == 0:
         parts.append(Part(g.box_at((x0 - 0.004, -0.013, z0 - 0.012), (x0 + 0.03, 0.013, z0 + 0.006)), "metal",
                           convex=True))
-        parts.append(Part(_tapered((x0 + 0.02, 0, z0), (x0 + 0.2, 0, z0 + 0.03), 0.011, 0.013, 12),
+        parts.append(Part(g.tapered_rod((x0 + 0.02, 0, z0), (x0 + 0.2, 0, z0 + 0.03), 0.011, 0.013, 12),
                           "dark_plastic", convex=True))
     elif v == 1:
         grip = [(0.0, -0.011), (0.2, -0.015), (0.21, -0.01), (0.21, 0.01), (0.2, 0.015), (0.0, 0.011)]
         parts.append(Part(g.box_at((x0 - 0.004, -0.012, z0 - 0.014), (x0 + 0.025, 0.012, z0 + 0.004)), "metal",
                           convex=True))
-        parts.append(Part(_plate_xz(grip, 0.014, (x0 + 0.015, 0.0, z0 - 0.012), x0 + 0.22, z0 + 0.02),
+        parts.append(Part(g.tilted_plate(grip, 0.014, (x0 + 0.015, 0.0, z0 - 0.012), x0 + 0.22, z0 + 0.02),
                           "metal", convex=True))
         helper = g.torus_arc(0.02, 0.005, (-(rt - 0.002), 0.0, h - 0.014), plane="xy", start=np.pi / 2,
                              end=1.5 * np.pi, sections=8)
         parts.append(Part(helper, "metal", convex=False))
     else:
         parts.append(Part(g.box_at((x0 - 0.004, -0.009, 0.004), (x0 + 0.03, 0.009, 0.014)), "metal", convex=True))
-        parts.append(Part(_tapered((x0 + 0.025, 0, 0.012), (x0 + 0.045, 0, 0.016), 0.009, 0.009, 10), "metal",
+        parts.append(Part(g.tapered_rod((x0 + 0.025, 0, 0.012), (x0 + 0.045, 0, 0.016), 0.009, 0.009, 10), "metal",
                           convex=True))
-        parts.append(Part(_tapered((x0 + 0.045, 0, 0.016), (x0 + 0.21, 0, 0.036), 0.0095, 0.012, 10), "wood",
+        parts.append(Part(g.tapered_rod((x0 + 0.045, 0, 0.016), (x0 + 0.21, 0, 0.036), 0.0095, 0.012, 10), "wood",
                           convex=True))
     parts += _vessel_dirt(profile, wall, bottom, seed=50 + v, outside=False)
     return AssetSpec("Pan", v, "small", [Link("base", parts, 1.0)], regions=[_volume(rb - wall, bottom, h)],
@@ -425,8 +348,8 @@ def kettle(v: int, rng: np.random.Generator) -> AssetSpec:
         parts.append(Part(g.revolve(lid, (0, 0, h), sections=20), "metal", convex=True))
         parts.append(Part(g.sphere(0.011, (0, 0, h + 0.026), subdivisions=1), "dark_plastic", convex=True))
         spout0, spout1 = (-rb * 0.7, 0, 0.045), (-rb - 0.05, 0, h - 0.01)
-        parts.append(Part(_tapered(spout0, spout1, 0.017, 0.008), "metal", convex=True))
-        parts.append(Part(_tapered(spout1, (spout1[0] - 0.01, 0, spout1[2] + 0.006), 0.009, 0.009, 10),
+        parts.append(Part(g.tapered_rod(spout0, spout1, 0.017, 0.008), "metal", convex=True))
+        parts.append(Part(g.tapered_rod(spout1, (spout1[0] - 0.01, 0, spout1[2] + 0.006), 0.009, 0.009, 10),
                           "dark_plastic", convex=True))
         top = h + 0.085
         for s in (-1, 1):  # two posts from the shoulder and a grip across the top
@@ -462,7 +385,7 @@ def kettle(v: int, rng: np.random.Generator) -> AssetSpec:
                 (-rb - 0.09, 0, h + 0.005)]
         radii = [(0.011, 0.008), (0.008, 0.0065), (0.0065, 0.005)]
         for (a, b_), (r0, r1) in zip(itertools.pairwise(neck), radii):
-            parts.append(Part(_tapered(a, b_, r0, r1, 10), "dark_metal", convex=True))
+            parts.append(Part(g.tapered_rod(a, b_, r0, r1, 10), "dark_metal", convex=True))
             parts.append(Part(g.sphere(r1, b_, subdivisions=1), "dark_metal", convex=True))
         hx = rb + 0.04
         parts.append(Part(g.rod((rb * 0.9, 0, h - 0.015), (hx, 0, h - 0.01), 0.007, 8), "wood", convex=True))
@@ -485,7 +408,8 @@ def knife(v: int, rng: np.random.Generator) -> AssetSpec:
                  (lb, 0.25 * hb), (0.8 * lb, hb / 2), (0.0, hb / 2)]
     elif v == 1:
         lb, hb, lh = pick(rng, 0.21, 0.23), pick(rng, 0.027, 0.03), 0.125
-        blade = [(0.0, -hb / 2), (lb - 0.012, -hb / 2), (lb - 0.004, -hb / 2 + 0.004), (lb, 0.0), (lb - 0.004, hb / 2 - 0.004),
+        blade = [(0.0, -hb / 2), (lb - 0.012, -hb / 2), (lb - 0.004, -hb / 2 + 0.004), (lb, 0.0), (lb - 0.004,
+                                                                                                   hb / 2 - 0.004),
                  (lb - 0.012, hb / 2), (0.0, hb / 2)]
     elif v == 2:
         lb, hb, lh = pick(rng, 0.085, 0.095), pick(rng, 0.019, 0.022), 0.1
@@ -604,7 +528,7 @@ def spoon(v: int, rng: np.random.Generator) -> AssetSpec:
     parts = [Part(_lying_bowl(rx, ry, depth, 0.35 * ry, wall), slot, convex=True)]
     th = 0.006 if v == 3 else 0.003
     grip = _strip(lh, 0.007 if v != 3 else 0.012, [0.018, 0.013, 0.018, 0.02][v])
-    parts.append(Part(_plate_xz(grip, th, (rx - 0.004, 0.0, depth - th), rx + lh, 0.0), slot, convex=True))
+    parts.append(Part(g.tilted_plate(grip, th, (rx - 0.004, 0.0, depth - th), rx + lh, 0.0), slot, convex=True))
     return AssetSpec("Spoon", v, "small", _link(_centered_x(parts), 0.05),
                      description=["tablespoon", "teaspoon", "soup spoon", "wooden spoon"][v])
 
@@ -621,7 +545,7 @@ def ladle(v: int, rng: np.random.Generator) -> AssetSpec:
     parts = [Part(_lying_bowl(r, r, depth, 0.4 * r, wall), slot, convex=True)]
     th = 0.006 if v == 2 else 0.004
     grip = _strip(lh, 0.012, 0.022 if v != 1 else 0.016)
-    parts.append(Part(_plate_xz(grip, th, (r - 0.006, 0.0, depth - th), r + lh, 0.0), slot, convex=True))
+    parts.append(Part(g.tilted_plate(grip, th, (r - 0.006, 0.0, depth - th), r + lh, 0.0), slot, convex=True))
     return AssetSpec("Ladle", v, "small", _link(_centered_x(parts), 0.15),
                      description=["soup ladle", "sauce ladle", "nylon ladle"][v])
 
@@ -640,11 +564,11 @@ def spatula(v: int, rng: np.random.Generator) -> AssetSpec:
                               collide=False))
         parts.append(Part(g.rod((0.004, 0, 0.0012), (-0.04, 0, 0.02), 0.004, 8), "metal", convex=True))
         grip = _strip(0.17, 0.016, 0.022)
-        parts.append(Part(_plate_xz(grip, 0.01, (-0.04, 0.0, 0.014), -0.2, 0.0),
+        parts.append(Part(g.tilted_plate(grip, 0.01, (-0.04, 0.0, 0.014), -0.2, 0.0),
                           "dark_plastic", convex=True))
     elif v == 1:
         bl, bw = pick(rng, 0.09, 0.1), pick(rng, 0.05, 0.056)
-        parts.append(Part(g.extrude(_rounded_rect(bl, bw, 0.012), 0.006, 0.0), "kw_silicone", convex=True))
+        parts.append(Part(g.extrude(g.rounded_outline(bl, bw, 0.012), 0.006, 0.0), "kw_silicone", convex=True))
         parts[-1].mesh.apply_translation((bl / 2, 0, 0))
         parts.append(Part(g.cylinder(0.0075, 0.2, (-0.1 + 0.004, 0, 0.0075), axis="x", sections=12), "wood",
                           convex=True))
@@ -665,7 +589,8 @@ def spatula(v: int, rng: np.random.Generator) -> AssetSpec:
 
 def _holes(z: float, n: int, ring: float) -> list[Part]:
     """Pour holes on a shaker's top at height z."""
-    pts = [(0.0, 0.0)] + [(ring * np.cos(a), ring * np.sin(a)) for a in np.linspace(0, 2 * np.pi, n - 1, endpoint=False)]
+    pts = [(0.0, 0.0)] + [(ring * np.cos(a), ring * np.sin(a)) for a in np.linspace(0, 2 * np.pi, n - 1,
+                                                                                    endpoint=False)]
     return [Part(g.cylinder(0.0014, 0.0008, (x, y, z + 0.0003), sections=6), "dark_plastic", collide=False)
             for x, y in pts]
 
@@ -682,7 +607,7 @@ def salt_shaker(v: int, rng: np.random.Generator) -> AssetSpec:
         parts += _holes(h + 0.0175, 5, 0.006)
     elif v == 1:
         s, h = pick(rng, 0.032, 0.036), pick(rng, 0.058, 0.064)
-        parts.append(Part(g.extrude(_rounded_rect(s, s, 0.004, 3), h), "glass", convex=True))
+        parts.append(Part(g.extrude(g.rounded_outline(s, s, 0.004, 3), h), "glass", convex=True))
         parts.append(Part(g.cylinder(0.016, 0.014, (0, 0, h + 0.007), sections=18), "metal", convex=True))
         parts += _holes(h + 0.014, 7, 0.008)
     else:
@@ -739,14 +664,14 @@ def pepper_shaker(v: int, rng: np.random.Generator) -> AssetSpec:
 def dish_sponge(v: int, rng: np.random.Generator) -> AssetSpec:
     """A kitchen sponge: a soft foam block with a scouring layer on top (rectangular, oval, square)."""
     if v == 0:
-        outline = _rounded_rect(pick(rng, 0.09, 0.1), pick(rng, 0.06, 0.068), 0.006)
+        outline = g.rounded_outline(pick(rng, 0.09, 0.1), pick(rng, 0.06, 0.068), 0.006)
         t_foam, t_scour = 0.022, 0.007
     elif v == 1:
-        outline = _ellipse(pick(rng, 0.05, 0.055), pick(rng, 0.034, 0.038), 18)
+        outline = g.ellipse_points(pick(rng, 0.05, 0.055), pick(rng, 0.034, 0.038), 18)
         t_foam, t_scour = 0.026, 0.006
     else:
         s = pick(rng, 0.075, 0.082)
-        outline = _rounded_rect(s, s, 0.012)
+        outline = g.rounded_outline(s, s, 0.012)
         t_foam, t_scour = 0.03, 0.005
     foam = g.extrude(outline, t_foam)
     scour = g.extrude(outline, t_scour, t_foam)
@@ -784,10 +709,10 @@ def soap_bottle(v: int, rng: np.random.Generator) -> AssetSpec:
         parts.append(Part(label, "kw_label", collide=False))
     else:
         s, h = pick(rng, 0.058, 0.064), pick(rng, 0.12, 0.13)
-        parts.append(Part(g.extrude(_rounded_rect(s, s, 0.008), 0.85 * h), "kw_soap", convex=True))
+        parts.append(Part(g.extrude(g.rounded_outline(s, s, 0.008), 0.85 * h), "kw_soap", convex=True))
         shoulder = trimesh.convex.convex_hull(np.vstack([
-            np.array([(x, y, 0.85 * h) for x, y in _rounded_rect(s, s, 0.008)]),
-            np.array([(x, y, h) for x, y in _ellipse(0.016, 0.016, 12)])]))
+            np.array([(x, y, 0.85 * h) for x, y in g.rounded_outline(s, s, 0.008)]),
+            np.array([(x, y, h) for x, y in g.ellipse_points(0.016, 0.016, 12)])]))
         parts.append(Part(shoulder, "kw_soap", convex=True))
         parts.append(Part(g.box((s * 0.7, 0.001, 0.055), (0, s / 2 + 0.0002, 0.42 * h)), "kw_label", collide=False))
     parts += _pump(h)
@@ -820,10 +745,10 @@ def glass_bottle(v: int, rng: np.random.Generator) -> AssetSpec:
         parts.append(Part(g.cylinder(0.0145, 0.012, (0, 0, hb + 0.116), sections=14), "metal", convex=True))
     elif v == 1:
         s, hb = pick(rng, 0.06, 0.066), pick(rng, 0.14, 0.15)
-        body = g.extrude(_rounded_rect(s, s, 0.006), hb)
+        body = g.extrude(g.rounded_outline(s, s, 0.006), hb)
         shoulder = trimesh.convex.convex_hull(np.vstack([
-            np.array([(x, y, hb) for x, y in _rounded_rect(s, s, 0.006)]),
-            np.array([(x, y, hb + 0.03) for x, y in _ellipse(0.015, 0.015, 12)])]))
+            np.array([(x, y, hb) for x, y in g.rounded_outline(s, s, 0.006)]),
+            np.array([(x, y, hb + 0.03) for x, y in g.ellipse_points(0.015, 0.015, 12)])]))
         parts = [Part(body, "glass", convex=True), Part(shoulder, "glass", convex=True),
                  Part(g.cylinder(0.013, 0.05, (0, 0, hb + 0.05), sections=14), "glass", convex=True),
                  Part(g.frustum(0.011, 0.014, 0.022, (0, 0, hb + 0.07), sections=12), "wood", convex=True)]
@@ -899,8 +824,8 @@ def paper_towel(v: int, rng: np.random.Generator) -> AssetSpec:
     parts: list[Part] = []
     if v == 0:
         s = pick(rng, 0.13, 0.14)
-        parts.append(Part(g.extrude(_rounded_rect(s, s, 0.004, 3), 0.004), "paper", convex=True))
-        parts.append(Part(g.extrude(_rounded_rect(s * 0.98, s * 0.98, 0.004, 3), 0.002, 0.004), "paper",
+        parts.append(Part(g.extrude(g.rounded_outline(s, s, 0.004, 3), 0.004), "paper", convex=True))
+        parts.append(Part(g.extrude(g.rounded_outline(s * 0.98, s * 0.98, 0.004, 3), 0.002, 0.004), "paper",
                           convex=True))
         parts[-1].mesh.apply_translation((0.003, -0.003, 0.0))
         parts.append(Part(g.box((s * 0.9, 0.0012, 0.0004), (0.003, -0.003, 0.0062)), "kw_paper_shade",

@@ -14,7 +14,7 @@ import numpy as np
 import trimesh
 
 from luminous_sim.assets import geometry as g
-from luminous_sim.assets.builders.common import corner_legs, pick, surface
+from luminous_sim.assets.builders.common import corner_legs, pick, shift_footprint, surface
 from luminous_sim.assets.materials import add_palettes, hex_colours
 from luminous_sim.assets.registry import register
 from luminous_sim.assets.spec import AssetSpec, Link, Part, Region
@@ -26,52 +26,6 @@ add_palettes(
 
 
 # ----------------------------------------------------------------------------------------------- helpers
-
-def soft_box(size, center=(0.0, 0.0, 0.0), r: float = 0.02) -> trimesh.Trimesh:
-    """A box with chamfered edges (24 vertices, convex): cushions, mattresses, padded panels."""
-    sx, sy, sz = (float(s) for s in size)
-    r = min(r, sx / 3, sy / 3, sz / 3)
-    pts = []
-    for a, b, c in ((sx, sy - 2 * r, sz - 2 * r), (sx - 2 * r, sy, sz - 2 * r), (sx - 2 * r, sy - 2 * r, sz)):
-        for i in (-1, 1):
-            for j in (-1, 1):
-                for k in (-1, 1):
-                    pts.append((i * a / 2, j * b / 2, k * c / 2))
-    mesh = trimesh.convex.convex_hull(np.asarray(pts))
-    mesh.apply_translation(np.asarray(center, dtype=float))
-    return mesh
-
-
-def soft_box_at(lo, hi, r: float = 0.02) -> trimesh.Trimesh:
-    """`soft_box` spanning the corners `lo` and `hi`."""
-    lo_a, hi_a = np.asarray(lo, dtype=float), np.asarray(hi, dtype=float)
-    return soft_box(hi_a - lo_a, (lo_a + hi_a) / 2, r)
-
-
-def hull(points) -> trimesh.Trimesh:
-    """The convex hull of some points (wedges, sloped arms, wings)."""
-    return trimesh.convex.convex_hull(np.asarray(points, dtype=float))
-
-
-def splayed_leg(top, bottom, r_top: float, r_bottom: float, sections: int = 10) -> trimesh.Trimesh:
-    """A tapered round leg from `top` to `bottom`, its foot cut flat at z = bottom z."""
-    p0, p1 = np.asarray(top, dtype=float), np.asarray(bottom, dtype=float)
-    axis = p0 - p1
-    length = float(np.linalg.norm(axis))
-    leg = g.frustum(r_bottom, r_top, length + 0.04, (0, 0, -0.02), sections=sections)
-    rot = trimesh.geometry.align_vectors([0, 0, 1], axis / length)
-    leg.apply_transform(rot)
-    leg.apply_translation(p1)
-    leg = trimesh.intersections.slice_mesh_plane(leg, [0, 0, 1], [0, 0, p1[2]], cap=True)
-    return trimesh.intersections.slice_mesh_plane(leg, -axis / length, p0, cap=True)
-
-
-def turned_leg(x: float, y: float, h: float, r: float, z0: float = 0.0, sections: int = 10) -> trimesh.Trimesh:
-    """A lathe-turned furniture leg (narrow foot, bulb, collar) standing at (x, y)."""
-    prof = [(0, 0), (r * 0.6, 0), (r * 0.75, h * 0.12), (r * 0.6, h * 0.35), (r, h * 0.55), (r * 0.7, h * 0.78),
-            (r * 0.95, h * 0.88), (r * 0.95, h), (0, h)]
-    return g.revolve(prof, (x, y, z0), sections=sections)
-
 
 def _leg_parts(style: str, pts, h: float, slot: str) -> list[Part]:
     """Short legs of upholstered furniture at the footprint points `pts` (style block/taper/metal/bun/turned)."""
@@ -86,17 +40,9 @@ def _leg_parts(style: str, pts, h: float, slot: str) -> list[Part]:
         elif style == "bun":
             mesh = g.revolve([(0, 0), (0.026, 0), (0.038, h * 0.45), (0.03, h), (0, h)], (x, y, 0), sections=12)
         else:
-            mesh = turned_leg(x, y, h, 0.026)
+            mesh = g.turned_leg(x, y, h, 0.026)
         parts.append(Part(mesh, slot, convex=True))  # a turned leg collides as its hull
     return parts
-
-
-def _shift(parts: list[Part], regions: list[Region], dx: float, dy: float) -> None:
-    """Move every part and region by (dx, dy) (re-centre a non-symmetric footprint on the origin)."""
-    for p in parts:
-        p.mesh.apply_translation((dx, dy, 0.0))
-    for r in regions:
-        r.center = (r.center[0] + dx, r.center[1] + dy, r.center[2])
 
 
 def _pillow(size, center, lean: float, slot: str = "cushion") -> Part:
@@ -134,10 +80,10 @@ def chair(v: int, rng: np.random.Generator) -> AssetSpec:
                 foot = (sx * (w / 2 - 0.035), sy * (d / 2 - 0.035), 0)
                 parts.append(Part(g.frustum(0.014, 0.02, seat_h - 0.08, foot),
                                   slot, convex=True))
-        parts.append(Part(soft_box_at((-w / 2, -d / 2, seat_h - 0.09), (w / 2, d / 2, seat_h), 0.02), "fabric",
+        parts.append(Part(g.soft_box_at((-w / 2, -d / 2, seat_h - 0.09), (w / 2, d / 2, seat_h), 0.02), "fabric",
                           convex=True))
-        parts.append(Part(soft_box_at((-w / 2, -d / 2, seat_h - 0.01), (w / 2, -d / 2 + 0.07, seat_h + back_h + 0.1),
-                                      0.02), "fabric", convex=True))
+        parts.append(Part(g.soft_box_at((-w / 2, -d / 2, seat_h - 0.01), (w / 2, -d / 2 + 0.07, seat_h + back_h + 0.1),
+                                        0.02), "fabric", convex=True))
         return AssetSpec(
             "Chair", v, "furniture", [Link("base", parts, 5.0)],
             regions=[surface("seat", w, d - 0.07, seat_h, 0.4, cy=0.035)],
@@ -234,10 +180,10 @@ def _upholstered(s: _Upholstery) -> tuple[list[Part], list[Region]]:
             parts.append(Part(g.box_at((min(x_out, sx * s.w / 2), y0, 0.005), (max(x_out, sx * s.w / 2), yc, kick)),
                               cover, collide=False))
     # seat deck between the arms (and the chaise extension)
-    parts.append(Part(soft_box_at((-s.w / 2 + aw, y0 + s.back_t - 0.01, z0), (s.w / 2 - aw, y1, deck), 0.015), body,
+    parts.append(Part(g.soft_box_at((-s.w / 2 + aw, y0 + s.back_t - 0.01, z0), (s.w / 2 - aw, y1, deck), 0.015), body,
                       convex=True))
     if s.chaise:
-        parts.append(Part(soft_box_at((s.w / 2 - aw - seat_w, y1 - 0.02, z0), (s.w / 2 - aw, yc, deck), 0.015), body,
+        parts.append(Part(g.soft_box_at((s.w / 2 - aw - seat_w, y1 - 0.02, z0), (s.w / 2 - aw, yc, deck), 0.015), body,
                           convex=True))
     # back frame
     if open_arms:
@@ -249,7 +195,7 @@ def _upholstered(s: _Upholstery) -> tuple[list[Part], list[Region]]:
         parts.append(Part(g.box_at((-s.w / 2 + aw, y0 + 0.01, deck), (s.w / 2 - aw, y0 + s.back_t, s.back_h - 0.07)),
                           cover, convex=True))
     else:
-        parts.append(Part(soft_box_at((-s.w / 2, y0, z0), (s.w / 2, y0 + s.back_t, s.back_h), 0.03), cover,
+        parts.append(Part(g.soft_box_at((-s.w / 2, y0, z0), (s.w / 2, y0 + s.back_t, s.back_h), 0.03), cover,
                           convex=True))
     # arms
     for sx in (-1, 1):
@@ -261,21 +207,21 @@ def _upholstered(s: _Upholstery) -> tuple[list[Part], list[Region]]:
             xm = (xlo + xhi) / 2
             parts.append(Part(g.box_at((xm - 0.025, ya - 0.07, z0), (xm + 0.025, ya - 0.02, s.arm_h - 0.03)), body,
                               convex=True))
-            parts.append(Part(soft_box_at((xlo, yb, s.arm_h - 0.035), (xhi, ya, s.arm_h), 0.008), body, convex=True))
+            parts.append(Part(g.soft_box_at((xlo, yb, s.arm_h - 0.035), (xhi, ya, s.arm_h), 0.008), body, convex=True))
             parts.append(Part(g.box_at((xm - 0.02, yb, z0), (xm + 0.02, ya - 0.07, deck)), body, convex=True))
         elif s.arm == "roll":
             r = aw * 0.58
             xm = (xlo + xhi) / 2 + sx * aw * 0.06
-            parts.append(Part(soft_box_at((xlo, yb, z0), (xhi, ya, s.arm_h - r), 0.02), cover, convex=True))
+            parts.append(Part(g.soft_box_at((xlo, yb, z0), (xhi, ya, s.arm_h - r), 0.02), cover, convex=True))
             parts.append(Part(g.cylinder(r, ya - yb, (xm, (ya + yb) / 2, s.arm_h - r), axis="y", sections=16), cover,
                               convex=True))
         elif s.arm == "slope":  # top slopes down towards the front
             drop = 0.07
             pts = [(x, y, z) for x in (xlo, xhi) for y, z in ((yb, z0), (ya, z0), (yb, s.arm_h), (ya, s.arm_h - drop))]
             pts += [(x, ya - 0.04, s.arm_h - drop + 0.01) for x in (xlo + 0.02, xhi - 0.02)]
-            parts.append(Part(hull(pts), cover, convex=True))
+            parts.append(Part(g.hull(pts), cover, convex=True))
         else:
-            parts.append(Part(soft_box_at((xlo, yb, z0), (xhi, ya, s.arm_h), 0.025), cover, convex=True))
+            parts.append(Part(g.soft_box_at((xlo, yb, z0), (xhi, ya, s.arm_h), 0.025), cover, convex=True))
     # wings of a wingback chair: panels above the arms, wide at the top
     if s.wings:
         for sx in (-1, 1):
@@ -285,7 +231,7 @@ def _upholstered(s: _Upholstery) -> tuple[list[Part], list[Region]]:
             for x in (xo, xi):
                 pts += [(x, yb, s.arm_h - 0.02), (x, yb + 0.3, s.arm_h - 0.02), (x, yb + 0.3, s.arm_h + 0.22),
                         (x, yb + 0.22, s.back_h - 0.06), (x, yb, s.back_h)]
-            parts.append(Part(hull(pts), cover, convex=True))
+            parts.append(Part(g.hull(pts), cover, convex=True))
     # back cushions, leaning back a little
     seat_back = y0 + s.back_t
     if s.backs:
@@ -294,7 +240,7 @@ def _upholstered(s: _Upholstery) -> tuple[list[Part], list[Region]]:
         bh = s.back_h + s.back_cush_top - deck
         for k in range(s.backs):
             cx = -inner / 2 + bw * (k + 0.5)
-            mesh = g.transformed(soft_box((bw - 0.008, s.back_cush, bh), r=0.035), roll=lean)
+            mesh = g.transformed(g.soft_box((bw - 0.008, s.back_cush, bh), r=0.035), roll=lean)
             lo, hi = mesh.bounds
             mesh.apply_translation((cx, y0 + s.back_t - 0.01 - lo[1], deck - lo[2]))
             parts.append(Part(mesh, cush, convex=True))
@@ -304,7 +250,7 @@ def _upholstered(s: _Upholstery) -> tuple[list[Part], list[Region]]:
         xa = -inner / 2 + seat_w * k + 0.004
         xb = xa + seat_w - 0.008
         ya = yc if (k == s.seats - 1 and s.chaise) else y1
-        parts.append(Part(soft_box_at((xa, seat_back, deck), (xb, ya + 0.01, s.seat_h), 0.035), cush, convex=True))
+        parts.append(Part(g.soft_box_at((xa, seat_back, deck), (xb, ya + 0.01, s.seat_h), 0.035), cush, convex=True))
     # a flat board just under the cushion tops, so that things put on the seat do not sink into the seams
     parts.append(Part(g.box_at((-inner / 2 + 0.01, seat_back + 0.02, deck), (inner / 2 - 0.01, y1 - 0.03,
                                                                            s.seat_h - 0.004)), cush, convex=True))
@@ -323,7 +269,7 @@ def _upholstered(s: _Upholstery) -> tuple[list[Part], list[Region]]:
         regions.append(surface("chaise", seat_w, yc - seat_back, s.seat_h, 0.35, cx=s.w / 2 - aw - seat_w / 2,
                                cy=(yc + seat_back) / 2))
     if s.chaise:
-        _shift(parts, regions, 0.0, -s.chaise / 2)
+        shift_footprint(parts, regions, 0.0, -s.chaise / 2)
     return parts, regions
 
 
@@ -424,8 +370,9 @@ def ottoman(v: int, rng: np.random.Generator) -> AssetSpec:
         legs = 0.1
         parts += _leg_parts("taper", [(sx * (w / 2 - 0.05), sy * (d / 2 - 0.05)) for sx in (-1, 1) for sy in (-1, 1)],
                             legs, "wood")
-        parts.append(Part(soft_box_at((-w / 2, -d / 2, legs), (w / 2, d / 2, h - 0.08), 0.015), "fabric", convex=True))
-        parts.append(Part(soft_box_at((-w / 2, -d / 2, h - 0.09), (w / 2, d / 2, h), 0.04), "fabric", convex=True))
+        parts.append(Part(g.soft_box_at((-w / 2, -d / 2, legs), (w / 2, d / 2, h - 0.08), 0.015), "fabric",
+                          convex=True))
+        parts.append(Part(g.soft_box_at((-w / 2, -d / 2, h - 0.09), (w / 2, d / 2, h), 0.04), "fabric", convex=True))
         rw, rd, desc = w, d, "rectangular upholstered ottoman on tapered legs"
     elif v == 1:
         r = pick(rng, 0.24, 0.29)
@@ -437,8 +384,9 @@ def ottoman(v: int, rng: np.random.Generator) -> AssetSpec:
         desc = "round pouf"
     elif v == 2:
         w = pick(rng, 0.45, 0.55)
-        parts.append(Part(soft_box_at((-w / 2, -w / 2, 0), (w / 2, w / 2, h - 0.07), 0.012), "fabric", convex=True))
-        parts.append(Part(soft_box_at((-w / 2 - 0.01, -w / 2 - 0.01, h - 0.08), (w / 2 + 0.01, w / 2 + 0.01, h), 0.035),
+        parts.append(Part(g.soft_box_at((-w / 2, -w / 2, 0), (w / 2, w / 2, h - 0.07), 0.012), "fabric", convex=True))
+        parts.append(Part(g.soft_box_at((-w / 2 - 0.01, -w / 2 - 0.01, h - 0.08), (w / 2 + 0.01, w / 2 + 0.01, h),
+                                        0.035),
                           "fabric", convex=True))
         parts.append(Part(g.box_at((-w / 2 - 0.005, -w / 2 - 0.005, 0.0), (w / 2 + 0.005, w / 2 + 0.005, 0.1)),
                           "fabric", collide=False))
@@ -449,11 +397,13 @@ def ottoman(v: int, rng: np.random.Generator) -> AssetSpec:
         legs = 0.16
         for sx in (-1, 1):
             for sy in (-1, 1):
-                parts.append(Part(turned_leg(sx * (w / 2 - 0.05), sy * (d / 2 - 0.05), legs + 0.02, 0.025), "dark_wood",
+                parts.append(Part(g.turned_leg(sx * (w / 2 - 0.05), sy * (d / 2 - 0.05), legs + 0.02, 0.025),
+                                  "dark_wood",
                                   convex=True))
         parts.append(Part(g.box_at((-w / 2 + 0.01, -d / 2 + 0.01, legs), (w / 2 - 0.01, d / 2 - 0.01, legs + 0.08)),
                           "dark_wood", convex=True))
-        parts.append(Part(soft_box_at((-w / 2, -d / 2, legs + 0.08), (w / 2, d / 2, h), 0.045), "leather", convex=True))
+        parts.append(Part(g.soft_box_at((-w / 2, -d / 2, legs + 0.08), (w / 2, d / 2, h), 0.045), "leather",
+                          convex=True))
         for x in np.linspace(-w / 2 + 0.15, w / 2 - 0.15, 5):  # tufting buttons
             for y in (-d / 6, d / 6):
                 parts.append(Part(g.sphere(0.012, (x, y, h - 0.004), subdivisions=0), "leather", collide=False))
@@ -487,11 +437,12 @@ def footstool(v: int, rng: np.random.Generator) -> AssetSpec:
         legs = h - 0.12
         for sx in (-1, 1):
             for sy in (-1, 1):
-                leg = turned_leg(sx * (w / 2 - 0.04), sy * (d / 2 - 0.04), legs + 0.01, 0.02)
+                leg = g.turned_leg(sx * (w / 2 - 0.04), sy * (d / 2 - 0.04), legs + 0.01, 0.02)
                 parts.append(Part(leg, "wood", convex=True))
         parts.append(Part(g.box_at((-w / 2, -d / 2, legs), (w / 2, d / 2, legs + 0.04)), "wood", convex=True))
-        parts.append(Part(soft_box_at((-w / 2 + 0.005, -d / 2 + 0.005, legs + 0.04), (w / 2 - 0.005, d / 2 - 0.005, h),
-                                      0.03), "fabric", convex=True))
+        parts.append(Part(g.soft_box_at((-w / 2 + 0.005, -d / 2 + 0.005, legs + 0.04), (w / 2 - 0.005, d / 2 - 0.005,
+                                                                                        h),
+                                        0.03), "fabric", convex=True))
         mass, desc = 3.0, "padded footstool on turned wooden legs"
     elif v == 1:
         w, d, h = pick(rng, 0.38, 0.44), pick(rng, 0.36, 0.42), pick(rng, 0.42, 0.46)
@@ -502,8 +453,8 @@ def footstool(v: int, rng: np.random.Generator) -> AssetSpec:
             lower = [(x, y, z) for x in (x0, x1) for y, z in prof[:4]]
             upper = [(x, y, z) for x in (x0, x1) for y, z in ((-d / 2, step - t - 0.01), (0.02, step - t - 0.01),
                                                              (-0.03, h - t), (-d / 2, h - t))]
-            parts.append(Part(hull(lower + [(x, -d / 2, step - t) for x in (x0, x1)]), "wood", convex=True))
-            parts.append(Part(hull(upper), "wood", convex=True))
+            parts.append(Part(g.hull(lower + [(x, -d / 2, step - t) for x in (x0, x1)]), "wood", convex=True))
+            parts.append(Part(g.hull(upper), "wood", convex=True))
         parts.append(Part(g.box_at((-w / 2, -0.005, step - t), (w / 2, d / 2 - 0.01, step)), "wood", convex=True))
         parts.append(Part(g.box_at((-w / 2, -d / 2, h - t), (w / 2, 0.0, h)), "wood", convex=True))
         parts.append(Part(g.box_at((-w / 2 + t, -d / 2, 0.06), (w / 2 - t, -d / 2 + t, 0.14)), "wood", convex=True))
@@ -519,12 +470,13 @@ def footstool(v: int, rng: np.random.Generator) -> AssetSpec:
             a = 2 * np.pi * k / 3 + np.pi / 2
             top = (0.6 * r * np.cos(a), 0.6 * r * np.sin(a), h - 0.03)
             foot = (1.15 * r * np.cos(a), 1.15 * r * np.sin(a), 0.0)
-            parts.append(Part(splayed_leg(top, foot, 0.017, 0.012), "wood", convex=True))
+            parts.append(Part(g.splayed_leg(top, foot, 0.017, 0.012), "wood", convex=True))
         mass, desc = 2.0, "three-legged round milking stool"
     else:
         w, h = pick(rng, 0.34, 0.4), pick(rng, 0.32, 0.37)
         parts.append(Part(g.box_at((-w / 2, -w / 2, h - 0.06), (w / 2, w / 2, h - 0.03)), "painted", convex=True))
-        parts.append(Part(soft_box_at((-w / 2 + 0.01, -w / 2 + 0.01, h - 0.035), (w / 2 - 0.01, w / 2 - 0.01, h), 0.015),
+        parts.append(Part(g.soft_box_at((-w / 2 + 0.01, -w / 2 + 0.01, h - 0.035), (w / 2 - 0.01, w / 2 - 0.01, h),
+                                        0.015),
                           "cushion", convex=True))
         splay = 0.04
         feet = []
@@ -533,7 +485,7 @@ def footstool(v: int, rng: np.random.Generator) -> AssetSpec:
                 top = (sx * (w / 2 - 0.04), sy * (w / 2 - 0.04), h - 0.06)
                 foot = (sx * (w / 2 - 0.04 + splay), sy * (w / 2 - 0.04 + splay), 0.0)
                 feet.append((top, foot))
-                parts.append(Part(splayed_leg(top, foot, 0.016, 0.013), "painted", convex=True))
+                parts.append(Part(g.splayed_leg(top, foot, 0.016, 0.013), "painted", convex=True))
         zr = h * 0.3  # stretchers a third of the way up
         f = 1 - zr / (h - 0.06)
         ring = [(t[0] + (ft[0] - t[0]) * f, t[1] + (ft[1] - t[1]) * f) for t, ft in feet]
@@ -560,7 +512,7 @@ def _headboard(style: str, w: float, y0: float, t: float, h: float, z_top: float
     yc = y0 + t / 2
     if style == "padded":
         parts.append(Part(g.box_at((-w / 2, y0, 0), (w / 2, y0 + t * 0.5, h - 0.02)), slot, convex=True))
-        parts.append(Part(soft_box_at((-w / 2, y0 + t * 0.3, z_top - 0.1), (w / 2, y0 + t, h), 0.05), "fabric",
+        parts.append(Part(g.soft_box_at((-w / 2, y0 + t * 0.3, z_top - 0.1), (w / 2, y0 + t, h), 0.05), "fabric",
                           convex=True))
         for x in np.linspace(-w / 2 + 0.2, w / 2 - 0.2, max(3, int(w / 0.3))):
             for z in np.linspace(z_top + 0.12, h - 0.14, 3):
@@ -648,9 +600,11 @@ def bed(v: int, rng: np.random.Generator) -> AssetSpec:
         if legs == "plinth":
             parts.append(Part(g.box_at((-xr + 0.12, ym0 + 0.12, 0), (xr - 0.12, y_end - 0.12, 0.08)), "dark_plastic",
                               convex=True))
-            parts.append(Part(soft_box_at((-xr, ym0 - 0.01, 0.08), (xr, y_end, deck + 0.04), 0.02), slot, convex=True))
+            parts.append(Part(g.soft_box_at((-xr, ym0 - 0.01, 0.08), (xr, y_end, deck + 0.04), 0.02), slot,
+                              convex=True))
         else:
-            parts.append(Part(soft_box_at((-xr, ym0 - 0.01, 0.0), (xr, y_end, deck + 0.04), 0.025), slot, convex=True))
+            parts.append(Part(g.soft_box_at((-xr, ym0 - 0.01, 0.0), (xr, y_end, deck + 0.04), 0.025), slot,
+                              convex=True))
             for sx in (-1, 1):  # small feet at the corners
                 for y in (ym0 + 0.03, y_end - 0.03):
                     parts.append(Part(g.box((0.05, 0.05, 0.03), (sx * (xr - 0.04), y, 0.015)), "dark_wood",
@@ -659,16 +613,16 @@ def bed(v: int, rng: np.random.Generator) -> AssetSpec:
     if foot:
         parts += _headboard(foot, fw, ym1 + 0.01, ft, top_m + 0.12, top_m, slot)
     # bedding: mattress, duvet with the sheet turned down, pillows
-    parts.append(Part(soft_box_at((-mw / 2, ym0, deck), (mw / 2, ym1, top_m), 0.03), "bed_sheet", convex=True))
+    parts.append(Part(g.soft_box_at((-mw / 2, ym0, deck), (mw / 2, ym1, top_m), 0.03), "bed_sheet", convex=True))
     duvet0 = ym0 + 0.55
     duvet1 = ym1 + (0.0 if foot else 0.03)
     drop = min(0.2, mh + 0.02)
     duvet_top = top_m + 0.045
-    parts.append(Part(soft_box_at((-mw / 2 - 0.03, duvet0, top_m - drop), (mw / 2 + 0.03, duvet1, duvet_top), 0.025),
+    parts.append(Part(g.soft_box_at((-mw / 2 - 0.03, duvet0, top_m - drop), (mw / 2 + 0.03, duvet1, duvet_top), 0.025),
                       "bed_duvet", convex=True))
     fold1 = duvet0 + 0.16  # the turned-down sheet stands 12 mm proud of the duvet up to here
-    parts.append(Part(soft_box_at((-mw / 2 - 0.032, duvet0 - 0.02, top_m - drop + 0.02),
-                                  (mw / 2 + 0.032, fold1, duvet_top + 0.012), 0.02), "bed_sheet", convex=True))
+    parts.append(Part(g.soft_box_at((-mw / 2 - 0.032, duvet0 - 0.02, top_m - drop + 0.02),
+                                    (mw / 2 + 0.032, fold1, duvet_top + 0.012), 0.02), "bed_sheet", convex=True))
     n_pil = 1 if mw < 1.2 else 2
     pw = min(0.7, (mw - 0.12) / n_pil)
     for k in range(n_pil):

@@ -31,62 +31,6 @@ add_palettes(
 # ----------------------------------------------------------------------------------------------------------
 
 
-def _hull(points: Sequence[Sequence[float]]) -> trimesh.Trimesh:
-    """The convex hull of a handful of points (tapered wall slabs, wedges)."""
-    return trimesh.convex.convex_hull(np.asarray(points, dtype=float))
-
-
-def _ring_walls(r_bot: float, r_top: float, wall: float, z0: float, z1: float, sections: int = 18
-                ) -> list[trimesh.Trimesh]:
-    """The wall of a round open vessel as convex wedges (exact collision, no decomposition).
-
-    The outer radius runs from `r_bot` at z0 to `r_top` at z1; the wall is `wall` thick horizontally.
-    """
-    out = []
-    for i in range(sections):
-        a0, a1 = 2 * np.pi * i / sections, 2 * np.pi * (i + 1) / sections
-        pts = []
-        for r, z in ((r_bot, z0), (r_top, z1)):
-            for rr in (r, r - wall):
-                for a in (a0, a1):
-                    pts.append((rr * np.cos(a), rr * np.sin(a), z))
-        out.append(_hull(pts))
-    return out
-
-
-def _band(r_in: float, r_out: float, z0: float, z1: float, sections: int = 18) -> trimesh.Trimesh:
-    """A thin horizontal ring (rims, weave bands, hoops)."""
-    return trimesh.creation.annulus(r_min=r_in, r_max=r_out, segment=[[0, 0, z0], [0, 0, z1]], sections=sections)
-
-
-def _tapered_walls(wb: float, db: float, wt: float, dt: float, z0: float, z1: float, t: float
-                   ) -> list[trimesh.Trimesh]:
-    """Four walls of a rectangular open vessel whose outer size goes from wb x db (at z0) to wt x dt (at z1)."""
-    walls = []
-    for s in (-1, 1):  # front/back walls span the full width
-        pts = []
-        for w, d, z in ((wb, db, z0), (wt, dt, z1)):
-            for y in (s * d / 2, s * (d / 2 - t)):
-                for x in (-w / 2, w / 2):
-                    pts.append((x, y, z))
-        walls.append(_hull(pts))
-    for s in (-1, 1):  # side walls
-        pts = []
-        for w, d, z in ((wb, db, z0), (wt, dt, z1)):
-            for x in (s * w / 2, s * (w / 2 - t)):
-                for y in (-d / 2, d / 2):
-                    pts.append((x, y, z))
-        walls.append(_hull(pts))
-    return walls
-
-
-def _rect_rim(w: float, d: float, z0: float, z1: float, out: float, inn: float) -> list[trimesh.Trimesh]:
-    """A rectangular frame band around the outside of a w x d wall: `out` proud of it, `inn` into it."""
-    xo, yo, xi, yi = w / 2 + out, d / 2 + out, w / 2 - inn, d / 2 - inn
-    return [g.box_at((-xo, yi, z0), (xo, yo, z1)), g.box_at((-xo, -yo, z0), (xo, -yi, z1)),
-            g.box_at((-xo, -yi, z0), (-xi, yi, z1)), g.box_at((xi, -yi, z0), (xo, yi, z1))]
-
-
 def _parts(meshes: Sequence[trimesh.Trimesh], slot: str, collide: bool = True) -> list[Part]:
     return [Part(m, slot, collide=collide, convex=True if collide else None) for m in meshes]
 
@@ -450,7 +394,7 @@ def cart(v: int, rng: np.random.Generator) -> AssetSpec:
             continue
         parts.append(Part(g.box_at((-w / 2, -d / 2, zt - st), (w / 2, d / 2, zt)), shelf_slot, convex=True))
         if shelf == "tray":  # lips around the tray
-            parts += _parts(_rect_rim(w, d, zt, zt + 0.035, 0.0, 0.008), frame)
+            parts += _parts(g.rect_rim(w, d, zt, zt + 0.035, 0.0, 0.008), frame)
         elif shelf == "rail":  # gallery rails on the long sides
             for s in (-1, 1):
                 y = s * (d / 2 - inset)
@@ -559,7 +503,8 @@ def safe(v: int, rng: np.random.Generator) -> AssetSpec:
         regions.append(_volume(f"inside_{i}", -w / 2 + t, w / 2 - t, -d / 2 + t, y_front, z0, z1,
                                requires_open=joint.name))
     return AssetSpec("Safe", v, "appliance", [Link("base", parts, [40.0, 55.0, 45.0, 70.0][v]), door],
-                     joints=[joint], regions=regions, description="steel safe with a dial and a handle on a hinged door")
+                     joints=[joint], regions=regions,
+                     description="steel safe with a dial and a handle on a hinged door")
 
 
 # ----------------------------------------------------------------------------------------------------------
@@ -594,12 +539,12 @@ def laundry_hamper(v: int, rng: np.random.Generator) -> AssetSpec:
     n = 18
     if s["shape"] == "round":
         rb, rt = float(s["rb"]), float(s["rt"])
-        parts += _parts(_ring_walls(rb, rt, wall, 0.0, h, n), slot)
+        parts += _parts(g.round_wall_wedges(rb, rt, wall, 0.0, h, n), slot)
         parts.append(Part(g.cylinder(rb - wall / 2, bottom, (0, 0, bottom / 2), sections=n), slot, convex=True))
         if v == 0:  # woven bands and rope handles
             for f in (0.2, 0.45, 0.7):
                 r = rb + (rt - rb) * f
-                parts.append(Part(_band(r - 0.004, r + 0.005, h * f - 0.012, h * f + 0.012, n), "dark_wood",
+                parts.append(Part(g.annulus_band(r - 0.004, r + 0.005, h * f - 0.012, h * f + 0.012, n), "dark_wood",
                                   collide=False))
             for sx in (-1, 1):
                 parts.append(Part(g.torus_arc(0.045, 0.008, (sx * (rt + 0.002), 0, h - 0.07), plane="yz", start=0,
@@ -610,26 +555,27 @@ def laundry_hamper(v: int, rng: np.random.Generator) -> AssetSpec:
                 c, sn = np.cos(a), np.sin(a)
                 parts.append(Part(g.rod(((rb + 0.006) * c, (rb + 0.006) * sn, 0.0), ((rt + 0.006) * c,
                                         (rt + 0.006) * sn, h), 0.006, sections=8), "metal", collide=False))
-            parts.append(Part(_band(rt - 0.004, rt + 0.012, h - 0.016, h, n), "metal", convex=False, collide=False))
+            parts.append(Part(g.annulus_band(rt - 0.004, rt + 0.012, h - 0.016, h, n), "metal", convex=False,
+                              collide=False))
             for sx in (-1, 1):
                 parts.append(Part(g.box((0.02, 0.14, 0.035), (sx * (rt + 0.008), 0, h - 0.08)), "fabric",
                                   collide=False))
         rim = rt + 0.005
-        parts.append(Part(_band(rt - wall - 0.003, rim, h - 0.025, h, n), "dark_wood" if v == 0 else slot,
+        parts.append(Part(g.annulus_band(rt - wall - 0.003, rim, h - 0.025, h, n), "dark_wood" if v == 0 else slot,
                           collide=False))
         inner = (min(rb, rt) - wall) * 1.35
         regions = [Region("inside", "volume", (0.0, 0.0, bottom + (h - bottom) / 2 - 0.005),
                           (round(inner, 3), round(inner, 3), round(h - bottom - 0.03, 3)))]
     else:
         wb, db, wt, dt = (float(s[k]) for k in ("wb", "db", "wt", "dt"))
-        parts += _parts(_tapered_walls(wb, db, wt, dt, 0.0, h, wall), slot)
+        parts += _parts(g.tapered_walls(wb, db, wt, dt, 0.0, h, wall), slot)
         parts.append(Part(g.box((wb - wall, db - wall, bottom), (0, 0, bottom / 2)), slot, convex=True))
-        parts += _parts(_rect_rim(wt, dt, h - 0.03, h, 0.008, wall + 0.004), "dark_wood" if v == 1 else "dark_plastic",
+        parts += _parts(g.rect_rim(wt, dt, h - 0.03, h, 0.008, wall + 0.004), "dark_wood" if v == 1 else "dark_plastic",
                         collide=False)
         if v == 1:  # woven look: horizontal bands and cut-out hand holds
             for f in (0.25, 0.5, 0.75):
                 zb = h * f
-                parts += _parts(_rect_rim(wt, dt, zb - 0.01, zb + 0.01, 0.003, 0.003), "dark_wood", collide=False)
+                parts += _parts(g.rect_rim(wt, dt, zb - 0.01, zb + 0.01, 0.003, 0.003), "dark_wood", collide=False)
             for sx in (-1, 1):
                 parts.append(Part(g.box((0.01, 0.11, 0.03), (sx * wt / 2, 0, h - 0.08)), "dark_wood", collide=False))
         else:  # ventilation slots on the sides, front label plate
@@ -658,7 +604,8 @@ def laundry_hamper_lid(v: int, rng: np.random.Generator) -> AssetSpec:
         r = float(s["rt"]) + 0.012
         parts = [Part(g.frustum(r, r - 0.02, th, sections=20), slot, convex=True)]
         if v == 0:
-            parts.append(Part(_band(r * 0.55, r * 0.6, th - 0.002, th + 0.004, 20), "dark_wood", collide=False))
+            parts.append(Part(g.annulus_band(r * 0.55, r * 0.6, th - 0.002, th + 0.004, 20), "dark_wood",
+                              collide=False))
             parts.append(Part(g.revolve([(0, 0), (0.012, 0), (0.01, 0.025), (0.022, 0.035), (0, 0.04)],
                                         (0, 0, th), sections=12), "dark_wood", convex=True))
         else:  # fabric drawstring cover with a loop handle
@@ -667,8 +614,8 @@ def laundry_hamper_lid(v: int, rng: np.random.Generator) -> AssetSpec:
                                           sections=8, minor_sections=6), "fabric", collide=False))
     else:
         wt, dt = float(s["wt"]) + 0.024, float(s["dt"]) + 0.024
-        parts = [Part(_hull([(x * wt / 2, y * dt / 2, 0) for x in (-1, 1) for y in (-1, 1)] +
-                            [(x * (wt / 2 - 0.02), y * (dt / 2 - 0.02), th) for x in (-1, 1) for y in (-1, 1)]),
+        parts = [Part(g.hull([(x * wt / 2, y * dt / 2, 0) for x in (-1, 1) for y in (-1, 1)] +
+                             [(x * (wt / 2 - 0.02), y * (dt / 2 - 0.02), th) for x in (-1, 1) for y in (-1, 1)]),
                       slot, convex=True)]
         if v == 1:
             parts.append(Part(g.box((wt - 0.1, dt - 0.1, 0.006), (0, 0, th + 0.003)), "dark_wood", collide=False))
@@ -708,12 +655,13 @@ def garbage_can(v: int, rng: np.random.Generator) -> AssetSpec:
         rb = pick(rng, 0.11, 0.13) if v == 0 else pick(rng, 0.13, 0.15)
         rt = round(rb * 1.2, 3) if v == 0 else rb
         h = pick(rng, 0.33, 0.4) if v == 0 else pick(rng, 0.45, 0.55)
-        parts += _parts(_ring_walls(rb, rt, wall, 0.0, h, n), slot)
+        parts += _parts(g.round_wall_wedges(rb, rt, wall, 0.0, h, n), slot)
         parts.append(Part(g.cylinder(rb - wall / 2, bottom, (0, 0, bottom / 2), sections=n), slot, convex=True))
-        parts.append(Part(_band(rt - wall - 0.002, rt + 0.006, h - 0.02, h, n), "dark_plastic" if v == 0 else slot,
+        parts.append(Part(g.annulus_band(rt - wall - 0.002, rt + 0.006, h - 0.02, h, n),
+                          "dark_plastic" if v == 0 else slot,
                           collide=False))
         if lid == "pedal":
-            parts.append(Part(_band(rb - 0.002, rb + 0.006, 0.0, 0.03, n), "dark_plastic", collide=False))
+            parts.append(Part(g.annulus_band(rb - 0.002, rb + 0.006, 0.0, 0.03, n), "dark_plastic", collide=False))
             lid_mesh = g.cylinder(rt + 0.006, 0.02, (0, rt + 0.006, 0.01), sections=n)
             depth = rt
         inner = (min(rb, rt) - wall) * 1.35
@@ -728,9 +676,9 @@ def garbage_can(v: int, rng: np.random.Generator) -> AssetSpec:
         else:
             wt, dt, h, taper = pick(rng, 0.32, 0.36), pick(rng, 0.28, 0.32), pick(rng, 0.6, 0.68), 0.0
         wb, db = round(wt - taper, 3), round(dt - taper, 3)
-        parts += _parts(_tapered_walls(wb, db, wt, dt, 0.0, h, wall), slot)
+        parts += _parts(g.tapered_walls(wb, db, wt, dt, 0.0, h, wall), slot)
         parts.append(Part(g.box((wb - wall, db - wall, bottom), (0, 0, bottom / 2)), slot, convex=True))
-        parts += _parts(_rect_rim(wt, dt, h - 0.025, h, 0.006, wall + 0.004),
+        parts += _parts(g.rect_rim(wt, dt, h - 0.025, h, 0.006, wall + 0.004),
                         "dark_plastic" if slot != "appliance" else "dark_metal", collide=False)
         if shape == "rect" and lid == "open":  # recycling bin: hand holds and a label
             for sx in (-1, 1):
@@ -739,7 +687,7 @@ def garbage_can(v: int, rng: np.random.Generator) -> AssetSpec:
             parts.append(Part(g.box((wt * 0.4, 0.004, wt * 0.3), (0, dt / 2 + 0.001, h * 0.55)), "paper",
                               collide=False))
         if lid == "pedal":
-            parts += _parts(_rect_rim(wb, db, 0.0, 0.03, 0.004, 0.004), "dark_plastic", collide=False)
+            parts += _parts(g.rect_rim(wb, db, 0.0, 0.03, 0.004, 0.004), "dark_plastic", collide=False)
             lid_mesh = g.box((wt + 0.012, dt + 0.012, 0.02), (0, dt / 2 + 0.006, 0.01))
             depth = dt / 2
         regions = [_volume("inside", -wb / 2 + wall, wb / 2 - wall, -db / 2 + wall, db / 2 - wall, bottom, h - 0.01,
@@ -777,7 +725,7 @@ def box(v: int, rng: np.random.Generator) -> AssetSpec:
     w, d, h = pick(rng, w_lo, w_hi), pick(rng, d_lo, d_hi), pick(rng, h_lo, h_hi)
     t = 0.008
     slot = "box_cardboard"
-    parts = _parts(_tapered_walls(w, d, w, d, 0.0, h, t), slot)
+    parts = _parts(g.tapered_walls(w, d, w, d, 0.0, h, t), slot)
     parts.append(Part(g.box((w - t, d - t, t), (0, 0, t / 2)), slot, convex=True))
     links = [Link("base", parts, 0.4)]
     joints = []

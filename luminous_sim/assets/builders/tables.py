@@ -12,8 +12,14 @@ from itertools import pairwise
 import numpy as np
 
 from luminous_sim.assets import geometry as g
-from luminous_sim.assets.builders.common import carcass, drawer, hinged_door, pick, surface
-from luminous_sim.assets.builders.seating import hull, soft_box_at, splayed_leg, turned_leg
+from luminous_sim.assets.builders.common import (
+    carcass,
+    drawer,
+    hinged_door,
+    pick,
+    shift_footprint,
+    surface,
+)
 from luminous_sim.assets.registry import register
 from luminous_sim.assets.spec import AssetSpec, Joint, Link, Part, Region
 
@@ -25,7 +31,7 @@ TOP_CLEARANCE = 0.6
 
 def _slab(lo, hi, slot: str, bevel: float = 0.004) -> Part:
     """A board or table top with slightly bevelled edges."""
-    return Part(soft_box_at(lo, hi, bevel), slot, convex=True)
+    return Part(g.soft_box_at(lo, hi, bevel), slot, convex=True)
 
 
 def _leg(style: str, x: float, y: float, h: float, size: float, slot: str, z0: float = 0.0) -> Part:
@@ -37,12 +43,12 @@ def _leg(style: str, x: float, y: float, h: float, size: float, slot: str, z0: f
         mesh = g.box((size, size, h), (x, y, z0 + h / 2))
     elif style == "taper":
         a, b = size / 2, size * 0.3
-        mesh = hull([(x + sx * a, y + sy * a, z0 + h) for sx in (-1, 1) for sy in (-1, 1)] +
-                    [(x + sx * b, y + sy * b, z0) for sx in (-1, 1) for sy in (-1, 1)])
+        mesh = g.hull([(x + sx * a, y + sy * a, z0 + h) for sx in (-1, 1) for sy in (-1, 1)] +
+                      [(x + sx * b, y + sy * b, z0) for sx in (-1, 1) for sy in (-1, 1)])
     elif style == "round":
         mesh = g.cylinder(size / 2, h, (x, y, z0 + h / 2), sections=12)
     else:
-        mesh = turned_leg(x, y, h, size / 2, z0)
+        mesh = g.turned_leg(x, y, h, size / 2, z0)
     return Part(mesh, slot, convex=True)
 
 
@@ -111,14 +117,6 @@ def _spec(type_name: str, v: int, parts: list[Part], mass: float, regions: list[
                      regions=regions, description=desc)
 
 
-def _shift_all(parts: list[Part], regions: list[Region], dx: float, dy: float) -> None:
-    """Re-centre a non-symmetric footprint (base-link parts and base regions only)."""
-    for p in parts:
-        p.mesh.apply_translation((dx, dy, 0.0))
-    for r in regions:
-        r.center = (r.center[0] + dx, r.center[1] + dy, r.center[2])
-
-
 # ----------------------------------------------------------------------------------------- dining table
 
 @register("DiningTable", variants=5, category="furniture")
@@ -146,8 +144,8 @@ def dining_table(v: int, rng: np.random.Generator) -> AssetSpec:
         reach = r * 0.78
         for k in range(4):
             a = np.pi / 4 + k * np.pi / 2
-            foot = hull([(0, sy * 0.04, z) for sy in (-1, 1) for z in (0, 0.11)] +
-                        [(reach, sy * 0.03, z) for sy in (-1, 1) for z in (0, 0.04)])
+            foot = g.hull([(0, sy * 0.04, z) for sy in (-1, 1) for z in (0, 0.11)] +
+                          [(reach, sy * 0.03, z) for sy in (-1, 1) for z in (0, 0.04)])
             parts.append(Part(g.transformed(foot, yaw=a), "dark_wood", convex=True))
         rw = rd = r * np.sqrt(2)
         desc = "round pedestal dining table on four splayed feet"
@@ -162,11 +160,11 @@ def dining_table(v: int, rng: np.random.Generator) -> AssetSpec:
             foot = [(x + sx2 * 0.045, y, z) for sx2 in (-1, 1)
                     for y, z in ((-(d / 2 - 0.06), 0), (d / 2 - 0.06, 0), (-(d / 2 - 0.12), 0.08),
                                  (d / 2 - 0.12, 0.08))]
-            parts.append(Part(hull(foot), "wood", convex=True))
+            parts.append(Part(g.hull(foot), "wood", convex=True))
             cleat = [(x + sx2 * 0.04, y, z) for sx2 in (-1, 1)
                      for y, z in ((-(d / 2 - 0.08), h - tt), (d / 2 - 0.08, h - tt), (-(d / 2 - 0.15), h - tt - 0.06),
                                   (d / 2 - 0.15, h - tt - 0.06))]
-            parts.append(Part(hull(cleat), "wood", convex=True))
+            parts.append(Part(g.hull(cleat), "wood", convex=True))
         parts.append(Part(g.box_at((-xe, -0.025, 0.3), (xe, 0.025, 0.38)), "wood", convex=True))
         rw, rd, desc = w, d, "farmhouse trestle dining table"
     elif v == 3:
@@ -217,7 +215,7 @@ def coffee_table(v: int, rng: np.random.Generator) -> AssetSpec:
             a = 2 * np.pi * k / 3 + np.pi / 2
             top = (0.55 * r * np.cos(a), 0.55 * r * np.sin(a), h - tt)
             foot = (0.8 * r * np.cos(a), 0.8 * r * np.sin(a), 0.0)
-            parts.append(Part(splayed_leg(top, foot, 0.022, 0.014), "dark_wood", convex=True))
+            parts.append(Part(g.splayed_leg(top, foot, 0.022, 0.014), "dark_wood", convex=True))
         regions = [surface("top", r * np.sqrt(2), r * np.sqrt(2), h, TOP_CLEARANCE)]
         desc = "round coffee table on three splayed legs"
     elif v == 2:
@@ -301,7 +299,7 @@ def side_table(v: int, rng: np.random.Generator) -> AssetSpec:
                 for sy in (-1, 1):
                     top = (sx * (w / 2 - 0.06), sy * (d / 2 - 0.06), z0 + 0.005)
                     foot = (sx * (w / 2 - 0.03), sy * (d / 2 - 0.03), 0.0)
-                    parts.append(Part(splayed_leg(top, foot, 0.018, 0.011), "dark_wood", convex=True))
+                    parts.append(Part(g.splayed_leg(top, foot, 0.018, 0.011), "dark_wood", convex=True))
         ch = h - z0 - tt + t
         parts += carcass(w, d, ch, t, slot, z0=z0, open_top=True)
         z_under = z0 + ch - t
@@ -453,7 +451,7 @@ def desk(v: int, rng: np.random.Generator) -> AssetSpec:
         regions = [surface("top", w, d, h, TOP_CLEARANCE), surface("return", rw, rl, h, TOP_CLEARANCE,
                                                                    cx=-w / 2 + rw / 2, cy=d / 2 + rl / 2)]
         # re-centre the L footprint; the drawers move with it
-        _shift_all(parts, regions, 0.0, -rl / 2)
+        shift_footprint(parts, regions, 0.0, -rl / 2)
         for j in joints:
             j.origin = (j.origin[0], j.origin[1] - rl / 2, j.origin[2])
         regions += dregs
@@ -643,10 +641,10 @@ def shelf(v: int, rng: np.random.Generator) -> AssetSpec:
         for sx in (-1, 1):
             x0, x1 = sorted((sx * w / 2, sx * (w / 2 - rail)))
             side = [(x, y, z) for x in (x0, x1) for y, z in ((yb, 0), (yb + rail, 0), (yb, h), (yb + rail, h))]
-            parts.append(Part(hull(side), "wood", convex=True))
+            parts.append(Part(g.hull(side), "wood", convex=True))
             front = [(x, y, z) for x in (x0, x1)
                      for y, z in ((yb + d0 - rail, 0), (yb + d0, 0), (yb + d1 - rail, h), (yb + d1, h))]
-            parts.append(Part(hull(front), "wood", convex=True))
+            parts.append(Part(g.hull(front), "wood", convex=True))
         zs = _levels(0.22, h - 0.05, 4)
         for z in zs:
             depth = d0 + (d1 - d0) * z / h

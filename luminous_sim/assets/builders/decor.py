@@ -1,12 +1,8 @@
-"""Lamps, electronics on display, decorations and room structure pieces (windows, blinds, paintings...).
+"""Decorations: lamps, the television, paintings and posters, house plants.
 
-The first section holds small shape helpers (convex hulls of point sets, rounded outlines, ring walls,
-lamp-shade shells, pleated drapes, flat pictures) that `bathroom.py` uses as well.
-
-Wall-mounted things (windows, blinds, paintings, switches) have their flat back at -y and must still
-stand upright on a floor, so each has a flat bottom that is deep enough (a sill, a bottom rail, a hem).
 Tall light things put most of their mass low: the heavy part is the base link and the rest hangs on a
-light link joined by a fixed joint (lamp shades, foliage, blinds' slats).
+light link joined by a fixed joint (lamp shades, foliage). Wall-hung pictures have their flat back at -y
+and a flat bottom deep enough to stand upright on a floor.
 """
 
 from __future__ import annotations
@@ -15,13 +11,12 @@ from collections.abc import Sequence
 from itertools import pairwise
 
 import numpy as np
-import trimesh
 
 from luminous_sim.assets import geometry as g
-from luminous_sim.assets.builders.common import pick
+from luminous_sim.assets.builders.common import fixed, pick, recenter
 from luminous_sim.assets.materials import add_palettes, hex_colours
 from luminous_sim.assets.registry import register
-from luminous_sim.assets.spec import AssetSpec, Joint, Link, Part
+from luminous_sim.assets.spec import AssetSpec, Link, Part
 
 add_palettes(
     lampshade=hex_colours("f3ead3", "e8dcc4", "d9cbb0", "fbf6ec", "c9b79c"),
@@ -38,10 +33,8 @@ add_palettes(
     tv_land=hex_colours("66bb6a", "9ccc65", "43a047"),
     tv_sun=hex_colours("ffee58", "ffca28", "fff176"),
     tv_accent=hex_colours("ef5350", "ff7043", "ab47bc"),
-    drape=hex_colours("c9b79c", "8d99ae", "6b705c", "a26769", "e9ecef", "3d405b"),
     foliage_light=hex_colours("7cb342", "8bc34a", "9ccc65"),
     art_tree=hex_colours("2d6a4f", "40916c", "1b4332"),
-    rocker=hex_colours("f7f7f4", "ecebe6", "f4f4f0"),
     lamp_glow=hex_colours("ffd966", "ffcf4d", "ffe07a"),
     succulent=hex_colours("8fb9a8", "7fa99b", "a3c4bc"),
     bark=hex_colours("7a5c3e", "6b4f35", "8b6b4a"),
@@ -53,152 +46,6 @@ Pt = Sequence[float]
 
 # --------------------------------------------------------------------------------------------------
 # shape helpers (also used by bathroom.py)
-
-
-def hull(points: Sequence[Pt]) -> trimesh.Trimesh:
-    """The convex hull of a few 3D points (wedges, slanted slabs, ring segments)."""
-    return trimesh.convex.convex_hull(np.asarray(points, dtype=float))
-
-
-def rrect(a: float, b: float, r: float, m: int = 3) -> np.ndarray:
-    """A rounded rectangle of half sizes a x b and corner radius r as a CCW loop of 4 (m + 1) points.
-
-    Loops of the same m match point for point, so two of them bound a ring of convex segments; r = 0
-    gives a sharp rectangle with the same point count.
-    """
-    r = min(r, a, b)
-    pts = []
-    for k, (sx, sy) in enumerate(((1, 1), (-1, 1), (-1, -1), (1, -1))):
-        cx, cy = sx * (a - r), sy * (b - r)
-        for t in np.linspace(k * np.pi / 2, (k + 1) * np.pi / 2, m + 1):
-            pts.append((cx + r * np.cos(t), cy + r * np.sin(t)))
-    return np.array(pts)
-
-
-def oval(rx: float, ry_front: float, ry_back: float, n: int = 20, cy: float = 0.0) -> np.ndarray:
-    """An egg-shaped CCW loop: half-ellipses of depth ry_front towards +y and ry_back towards -y."""
-    t = np.linspace(0, 2 * np.pi, n, endpoint=False)
-    s = np.sin(t)
-    return np.stack([rx * np.cos(t), cy + s * np.where(s >= 0, ry_front, ry_back)], axis=1)
-
-
-def ring(
-    top_out: np.ndarray,
-    top_in: np.ndarray,
-    z_top: float,
-    z_bot: float,
-    bot_out: np.ndarray | None = None,
-    bot_in: np.ndarray | None = None,
-) -> list[trimesh.Trimesh]:
-    """A wall between two matching loops as convex segments (vessel walls, frames with a hole, rims).
-
-    The top loops sit at z_top and the bottom loops (the top ones when not given) at z_bot.
-    """
-    bot_out = top_out if bot_out is None else bot_out
-    bot_in = top_in if bot_in is None else bot_in
-    n = len(top_out)
-    out = []
-    for i in range(n):
-        j = (i + 1) % n
-        if np.allclose(top_out[i], top_out[j]) and np.allclose(top_in[i], top_in[j]):
-            continue
-        pts = [
-            (p[0], p[1], z)
-            for lo, li, z in ((top_out, top_in, z_top), (bot_out, bot_in, z_bot))
-            for p in (lo[i], lo[j], li[i], li[j])
-        ]
-        out.append(hull(pts))
-    return out
-
-
-def slab(loop: np.ndarray, z0: float, z1: float) -> trimesh.Trimesh:
-    """A flat prism over a convex loop, from z0 to z1."""
-    return hull([(x, y, z) for x, y in loop for z in (z0, z1)])
-
-
-def lathe_shell(profile: Sequence[tuple[float, float]], wall: float, sections: int = 24) -> trimesh.Trimesh:
-    """A thin lathe shell open at both ends (lamp shades) from its outer (radius, z) profile."""
-    outer = [(float(r), float(z)) for r, z in profile]
-    inner = [(r - wall, z) for r, z in reversed(outer)]
-    return g.revolve(outer + inner + [outer[0]], sections=sections)
-
-
-def flat_poly(pts_xz: Sequence[tuple[float, float]], y_back: float, t: float = 0.002) -> trimesh.Trimesh:
-    """A flat shape drawn in the x-z plane (a picture's hill, a roof), t thick from y_back towards +y."""
-    mesh = g.extrude(pts_xz, t)
-    mesh.apply_transform(trimesh.transformations.rotation_matrix(np.pi / 2, [1, 0, 0]))
-    mesh.apply_translation((0.0, y_back + t, 0.0))
-    return mesh
-
-
-def disc_y(r: float, center: Pt, t: float = 0.002, sections: int = 20) -> trimesh.Trimesh:
-    """A thin disc facing +y (a sun in a picture, an LED, a screw head)."""
-    return g.cylinder(r, t, center, axis="y", sections=sections)
-
-
-def drape(
-    xs_top: Sequence[float],
-    xs_bot: Sequence[float],
-    z_top: float,
-    z_bot: float,
-    y0: float,
-    amp: float,
-    t: float = 0.003,
-) -> list[trimesh.Trimesh]:
-    """A pleated fabric panel: thin slanted strips zig-zagging in y between matching x positions.
-
-    xs_top and xs_bot list the fold lines at the top and bottom (same length); the folds alternate between
-    y0 - amp/2 and y0 + amp/2.
-    """
-    out = []
-    for k in range(len(xs_top) - 1):
-        ya = y0 + amp * (0.5 if k % 2 else -0.5)
-        yb = y0 + amp * (-0.5 if k % 2 else 0.5)
-        corners = [
-            (xs_bot[k], ya, z_bot),
-            (xs_bot[k + 1], yb, z_bot),
-            (xs_top[k], ya, z_top),
-            (xs_top[k + 1], yb, z_top),
-        ]
-        out.append(hull([(x, y + s * t / 2, z) for x, y, z in corners for s in (-1, 1)]))
-    return out
-
-
-def fixed(name: str, parts: list[Part], mass: float, parent: str = "base") -> tuple[Link, Joint]:
-    """A light link rigidly joined to `parent` (its frame coincides with the parent's)."""
-    return Link(name, parts, mass), Joint(f"{name}_mount", "fixed", parent, name, (0.0, 0.0, 0.0))
-
-
-def strut(p0: Pt, p1: Pt, wx: float, wy: float) -> trimesh.Trimesh:
-    """A slanted bar of rectangular section wx x wy from p0 to p1 (horizontal end faces): legs, feet."""
-    return hull([(p[0] + sx * wx / 2, p[1] + sy * wy / 2, p[2]) for p in (p0, p1) for sx in (-1, 1) for sy in (-1, 1)])
-
-
-def recenter(spec: AssetSpec) -> AssetSpec:
-    """Move the asset so the centre of its footprint (x-y bounds of all its parts) is the origin.
-
-    Shifts the base link's parts, the joints hung on the base, base regions and anchors.
-    """
-    from luminous_sim.assets.urdf_writer import link_origins
-
-    origins = link_origins(spec)
-    lo = np.min([p.mesh.bounds[0] + origins[ln.name] for ln in spec.links for p in ln.parts], axis=0)
-    hi = np.max([p.mesh.bounds[1] + origins[ln.name] for ln in spec.links for p in ln.parts], axis=0)
-    shift = np.array([-(lo[0] + hi[0]) / 2, -(lo[1] + hi[1]) / 2, -lo[2]])
-    shift = np.round(shift, 5)
-    if np.allclose(shift, 0, atol=1e-6):
-        return spec
-    for p in spec.links[0].parts:
-        p.mesh = g.transformed(p.mesh, offset=shift)
-    for j in spec.joints:
-        if j.parent == "base":
-            j.origin = tuple(float(x) for x in np.asarray(j.origin) + shift)
-    for r in spec.regions:
-        if r.link == "base":
-            r.center = tuple(float(x) for x in np.asarray(r.center) + shift)
-    for a in spec.anchors:
-        a.pose = (a.pose[0] + float(shift[0]), a.pose[1] + float(shift[1]), a.pose[2] + float(shift[2]), a.pose[3])
-    return spec
 
 
 def _moved(
@@ -227,8 +74,8 @@ def _lamp_head(
 
     Coordinates along the lamp's own axis (z up); the lining sits just inside the shade wall.
     """
-    shade = lathe_shell(profile, wall, sections)
-    lining = lathe_shell([(r - wall - 0.002, z) for r, z in profile], 0.002, sections)
+    shade = g.lathe_shell(profile, wall, sections)
+    lining = g.lathe_shell([(r - wall - 0.002, z) for r, z in profile], 0.002, sections)
     parts = [
         Part(shade, slot, convex=True),
         Part(g.sphere(bulb_r, (0, 0, bulb_z), subdivisions=1), "porcelain", state="off"),
@@ -506,14 +353,14 @@ def _tv_picture(w: float, h: float, y: float, z0: float, x0: float = 0.0) -> lis
         (x0 - w / 2 + w * u, z0 + h * (0.3 + 0.16 * np.sin(np.pi * (u - 0.35) / 0.5)))
         for u in np.linspace(0.35, 0.85, 8)
     ]
-    parts.append(Part(flat_poly(hill, y + 0.001), "tv_land", state="on"))
-    parts.append(Part(disc_y(0.09 * h, (x0 - w / 2 + 0.75 * w, y + 0.004, z0 + 0.78 * h)), "tv_sun", state="on"))
+    parts.append(Part(g.flat_poly(hill, y + 0.001), "tv_land", state="on"))
+    parts.append(Part(g.disc_y(0.09 * h, (x0 - w / 2 + 0.75 * w, y + 0.004, z0 + 0.78 * h)), "tv_sun", state="on"))
     hx, hz = x0 - w / 2 + 0.2 * w, z0 + 0.3 * h
     parts.append(
         Part(g.box_at((hx, y + 0.003, hz), (hx + 0.12 * w, y + 0.005, hz + 0.14 * h)), "tv_accent", state="on")
     )
     roof = [(hx - 0.01 * w, hz + 0.14 * h), (hx + 0.13 * w, hz + 0.14 * h), (hx + 0.06 * w, hz + 0.24 * h)]
-    parts.append(Part(flat_poly(roof, y + 0.003), "art_dark", state="on"))
+    parts.append(Part(g.flat_poly(roof, y + 0.003), "art_dark", state="on"))
     return parts
 
 
@@ -551,9 +398,10 @@ def television(v: int, rng: np.random.Generator) -> AssetSpec:
         parts.append(Part(g.box((sw, 0.002, sh), (0, d / 2 + 0.001, z0 + bezel + sh / 2)), "screen", collide=False))
         parts += _tv_picture(sw, sh, d / 2 + 0.002, z0 + bezel)
         parts.append(
-            Part(disc_y(0.003, (w / 2 - 0.03, d / 2 + 0.001, z0 + bezel / 2), 0.002, 8), "led_off", state="off")
+            Part(g.disc_y(0.003, (w / 2 - 0.03, d / 2 + 0.001, z0 + bezel / 2), 0.002, 8), "led_off", state="off")
         )
-        parts.append(Part(disc_y(0.003, (w / 2 - 0.03, d / 2 + 0.001, z0 + bezel / 2), 0.002, 8), "led_on", state="on"))
+        parts.append(Part(g.disc_y(0.003, (w / 2 - 0.03, d / 2 + 0.001, z0 + bezel / 2), 0.002, 8), "led_on",
+                          state="on"))
     if v in (0, 3):  # pedestal: neck and an oval foot
         fw, fd = [0.34, 0.0, 0.0, 0.5][v], [0.2, 0.0, 0.0, 0.26][v]
         foot = g.cylinder(0.5, 0.016, (0, 0, 0.008), sections=24)
@@ -567,7 +415,7 @@ def television(v: int, rng: np.random.Generator) -> AssetSpec:
                 pad = np.array([x + sx * 0.03, sy * 0.12, 0.0])
                 parts.append(Part(g.box((0.04, 0.03, 0.01), tuple(pad + [0, 0, 0.005])), "rubber", convex=True))
                 parts.append(
-                    Part(strut(pad + [0, 0, 0.01], (x, 0.0, z0 + 0.04), 0.024, 0.016), "dark_metal", convex=True)
+                    Part(g.strut(pad + [0, 0, 0.01], (x, 0.0, z0 + 0.04), 0.024, 0.016), "dark_metal", convex=True)
                 )
     else:  # back housing and a bar stand
         parts.append(
@@ -599,266 +447,12 @@ def _tv_band_pictures(a0: float, a1: float, half: float, chord: float, y: float,
     land = 0.3 + 0.12 * np.sin(2 * np.pi * u)
     parts.append(Part(g.box((chord, 0.002, h * land), (0, y + 0.002, z0 + h * land / 2)), "tv_land", state="on"))
     if abs(u - 0.75) < 0.06:
-        parts.append(Part(disc_y(0.09 * h, (0, y + 0.003, z0 + 0.78 * h)), "tv_sun", state="on"))
+        parts.append(Part(g.disc_y(0.09 * h, (0, y + 0.003, z0 + 0.78 * h)), "tv_sun", state="on"))
     if abs(u - 0.25) < 0.06:
         parts.append(
             Part(g.box((chord * 0.8, 0.002, h * 0.14), (0, y + 0.003, z0 + h * (land + 0.07))), "tv_accent", state="on")
         )
     return parts
-
-
-@register("LightSwitch", variants=3, category="fixture")
-def light_switch(v: int, rng: np.random.Generator) -> AssetSpec:
-    """A wall switch: a cover plate with a rocker (single or double) or a toggle lever; "on" flips it."""
-    w = [0.072, 0.072, 0.118][v]
-    h = pick(rng, 0.114, 0.122)
-    t = 0.012
-    zc = h / 2
-    parts = [Part(g.box((w, t, h), (0, 0, h / 2)), "porcelain", convex=True)]
-    parts.append(Part(g.box((w - 0.008, 0.002, h - 0.008), (0, t / 2 + 0.001, h / 2)), "porcelain", collide=False))
-    for sz in (-1, 1):  # screws
-        parts.append(Part(disc_y(0.0035, (0, t / 2 + 0.002, zc + sz * 0.0415), 0.002, 8), "metal", collide=False))
-    if v in (0, 2):
-        xs = [0.0] if v == 0 else [-0.026, 0.026]
-        for x in xs:
-            parts.append(Part(g.box((0.04, 0.002, 0.072), (x, t / 2 + 0.002, zc)), "rocker", collide=False))
-            for state, sign in (("on", 1.0), ("off", -1.0)):
-                rocker = g.box((0.033, 0.008, 0.066))
-                rocker = g.transformed(rocker, roll=sign * 0.12, offset=(x, t / 2 + 0.006, zc))
-                parts.append(Part(rocker, "rocker", state=state))
-        parts.append(Part(disc_y(0.0025, (xs[-1] + 0.012, t / 2 + 0.0085, zc - 0.027), 0.002, 8), "led_on", state="on"))
-    else:  # toggle lever in a bushing
-        parts.append(Part(g.box((0.012, 0.003, 0.024), (0, t / 2 + 0.0025, zc)), "porcelain", collide=False))
-        parts.append(Part(disc_y(0.005, (0, t / 2 + 0.004, zc), 0.004, 12), "metal", collide=False))
-        for state, sign in (("on", 1.0), ("off", -1.0)):
-            p0 = np.array([0.0, t / 2 + 0.004, zc])
-            p1 = p0 + [0.0, 0.016, sign * 0.011]
-            parts.append(Part(g.rod(p0, p1, 0.0032, 8), "porcelain", state=state))
-            parts.append(Part(g.sphere(0.0042, p1, subdivisions=1), "porcelain", state=state))
-    names = ["rocker", "toggle", "double rocker"]
-    return recenter(
-        AssetSpec(
-            "LightSwitch",
-            v,
-            "fixture",
-            [Link("base", parts, 0.1)],
-            description=f"{names[v]} light switch on a wall plate",
-        )
-    )
-
-
-# --------------------------------------------------------------------------------------------------
-# windows, blinds, curtains
-
-
-@register("Window", variants=3, category="structure")
-def window(v: int, rng: np.random.Generator) -> AssetSpec:
-    """A window unit 0.1 m deep: frame, sashes with glazing bars, glass and an interior sill at the bottom.
-
-    Variants: double-hung sash window with glazing bars; casement pair under a transom; wide picture
-    window with two side lights.
-    """
-    w = [pick(rng, 0.8, 1.0), pick(rng, 1.0, 1.3), pick(rng, 1.4, 1.8)][v]
-    h = [pick(rng, 1.25, 1.45), pick(rng, 1.3, 1.5), pick(rng, 1.0, 1.2)][v]
-    depth, fw = 0.1, 0.06
-    sill_t, sill_d = 0.03, [0.2, 0.22, 0.24][v]
-    slot = ["painted", "wood", "dark_metal"][v]
-    z0 = sill_t
-    parts = [
-        Part(g.box_at((-w / 2 - 0.05, -depth / 2, 0), (w / 2 + 0.05, -depth / 2 + sill_d, sill_t)), slot, convex=True)
-    ]
-    frame = [
-        g.box_at((-w / 2, -depth / 2, z0), (-w / 2 + fw, depth / 2, z0 + h)),
-        g.box_at((w / 2 - fw, -depth / 2, z0), (w / 2, depth / 2, z0 + h)),
-        g.box_at((-w / 2 + fw, -depth / 2, z0 + h - fw), (w / 2 - fw, depth / 2, z0 + h)),
-        g.box_at((-w / 2 + fw, -depth / 2, z0), (w / 2 - fw, depth / 2, z0 + fw * 0.8)),
-    ]
-    parts += [Part(m, slot, convex=True) for m in frame]
-    xi0, xi1, zi0, zi1 = -w / 2 + fw, w / 2 - fw, z0 + fw * 0.8, z0 + h - fw
-
-    def sash(xa, xb, za, zb, y, bars_x=0, bars_z=0, sw=0.045, sd=0.04):
-        """A glazed sash: stiles and rails around a pane with glazing bars."""
-        out = [
-            g.box_at((xa, y - sd / 2, za), (xa + sw, y + sd / 2, zb)),
-            g.box_at((xb - sw, y - sd / 2, za), (xb, y + sd / 2, zb)),
-            g.box_at((xa + sw, y - sd / 2, za), (xb - sw, y + sd / 2, za + sw)),
-            g.box_at((xa + sw, y - sd / 2, zb - sw), (xb - sw, y + sd / 2, zb)),
-        ]
-        sp = [Part(m, slot, convex=True) for m in out]
-        sp.append(Part(g.box_at((xa + sw, y - 0.003, za + sw), (xb - sw, y + 0.003, zb - sw)), "glass", convex=True))
-        for k in range(1, bars_x + 1):
-            x = xa + sw + (xb - xa - 2 * sw) * k / (bars_x + 1)
-            sp.append(Part(g.box((0.016, 0.022, zb - za - 2 * sw), (x, y, (za + zb) / 2)), slot, collide=False))
-        for k in range(1, bars_z + 1):
-            z = za + sw + (zb - za - 2 * sw) * k / (bars_z + 1)
-            sp.append(Part(g.box((xb - xa - 2 * sw, 0.022, 0.016), ((xa + xb) / 2, y, z)), slot, collide=False))
-        return sp
-
-    if v == 0:  # double hung: lower sash in front, upper sash behind, meeting rails at mid height
-        zm = (zi0 + zi1) / 2
-        parts += sash(xi0, xi1, zi0, zm + 0.02, 0.018, bars_x=1, bars_z=1)
-        parts += sash(xi0, xi1, zm - 0.02, zi1, -0.022, bars_x=1, bars_z=1)
-        parts.append(Part(g.box((0.06, 0.025, 0.012), (0, 0.02, zm + 0.026)), "brass", collide=False))
-        desc = "double-hung sash window with glazing bars"
-    elif v == 1:  # casement pair under a transom
-        zt = zi0 + (zi1 - zi0) * 0.74
-        parts.append(Part(g.box_at((xi0, -depth / 2, zt), (xi1, depth / 2, zt + 0.05)), slot, convex=True))
-        parts.append(Part(g.box_at((-0.03, -depth / 2, zi0), (0.03, depth / 2, zt)), slot, convex=True))
-        parts += sash(xi0, -0.03, zi0, zt, 0.01)
-        parts += sash(0.03, xi1, zi0, zt, 0.01)
-        parts += sash(xi0, xi1, zt + 0.05, zi1, 0.0, bars_x=1)
-        for sx in (-1, 1):  # lever handles near the mullion
-            hx, hz = sx * 0.075, zi0 + (zt - zi0) * 0.5
-            parts.append(Part(g.box((0.02, 0.02, 0.03), (hx, 0.04, hz)), "metal", collide=False))
-            parts.append(Part(g.box((0.014, 0.014, 0.1), (hx, 0.055, hz - 0.04)), "metal", collide=False))
-        desc = "casement window pair under a transom light"
-    else:  # picture window between two side lights
-        side = (xi1 - xi0) * 0.22
-        xa, xb = xi0 + side, xi1 - side
-        for x in (xa, xb):
-            parts.append(Part(g.box_at((x - 0.03, -depth / 2, zi0), (x + 0.03, depth / 2, zi1)), slot, convex=True))
-        parts += sash(xi0, xa - 0.03, zi0, zi1, 0.0, bars_z=2, sw=0.03)
-        parts += sash(xb + 0.03, xi1, zi0, zi1, 0.0, bars_z=2, sw=0.03)
-        parts.append(Part(g.box_at((xa + 0.03, -0.003, zi0), (xb - 0.03, 0.003, zi1)), "glass", convex=True))
-        desc = "wide picture window with two side lights"
-    # interior casing (architrave) around the opening, on the room side
-    ct, cw = 0.015, 0.07
-    casing = [
-        g.box_at((-w / 2 - cw, depth / 2, z0), (-w / 2, depth / 2 + ct, z0 + h + cw)),
-        g.box_at((w / 2, depth / 2, z0), (w / 2 + cw, depth / 2 + ct, z0 + h + cw)),
-        g.box_at((-w / 2, depth / 2, z0 + h), (w / 2, depth / 2 + ct, z0 + h + cw)),
-    ]
-    parts += [Part(m, slot, convex=True) for m in casing]
-    return recenter(AssetSpec("Window", v, "structure", [Link("base", parts, 15.0)], description=desc))
-
-
-@register("Blinds", variants=3, category="decor")
-def blinds(v: int, rng: np.random.Generator) -> AssetSpec:
-    """Window blinds: venetian slats, a roller blind, or vertical vanes; a weighted bottom bar stands them up."""
-    w = pick(rng, 0.7, 1.2)
-    h = pick(rng, 1.0, 1.4)
-    top: list[Part] = []
-    bottom: list[Part] = []
-    slot = ["painted", "fabric", "fabric"][v]
-    if v == 0:  # venetian
-        top.append(Part(g.box((w, 0.05, 0.05), (0, 0, h - 0.025)), "painted", convex=True))
-        bottom.append(Part(g.box((w - 0.01, 0.05, 0.025), (0, 0, 0.0125)), "painted", convex=True))
-        n = int((h - 0.09) / 0.04)
-        for k in range(n):
-            z = 0.06 + k * (h - 0.11) / max(n - 1, 1)
-            slat = g.transformed(g.box((w - 0.02, 0.045, 0.0015)), roll=-0.5, offset=(0, 0, z))
-            top.append(Part(slat, slot, convex=True))
-        for x in (-w / 2 + 0.1, 0.0, w / 2 - 0.1):
-            for y in (-0.021, 0.021):
-                top.append(Part(g.box((0.01, 0.001, h - 0.06), (x, y, h / 2 - 0.01)), slot, collide=False))
-        top.append(
-            Part(
-                g.cylinder(0.004, h * 0.55, (w / 2 - 0.05, 0.03, h - 0.05 - h * 0.275), sections=6),
-                "painted",
-                collide=False,
-            )
-        )
-        desc = "venetian blinds with tilted slats"
-    elif v == 1:  # roller blind
-        top.append(Part(g.box((w + 0.02, 0.07, 0.08), (0, -0.005, h - 0.04)), "painted", convex=True))
-        top.append(Part(g.box((w - 0.03, 0.003, h - 0.11), (0, 0.0, 0.025 + (h - 0.11) / 2)), slot, convex=True))
-        bottom.append(Part(g.box((w - 0.02, 0.05, 0.028), (0, 0, 0.014)), "painted", convex=True))
-        chain_x = w / 2 - 0.02
-        top.append(Part(g.box((0.004, 0.004, h * 0.6), (chain_x, 0.03, h - 0.08 - h * 0.3)), "metal", collide=False))
-        top.append(Part(g.box((0.004, 0.004, h * 0.6), (chain_x, 0.04, h - 0.08 - h * 0.3)), "metal", collide=False))
-        desc = "roller blind with a cassette and a bottom bar"
-    else:  # vertical blinds
-        top.append(Part(g.box((w, 0.06, 0.05), (0, 0, h - 0.025)), "painted", convex=True))
-        n = int(w / 0.08)
-        xs = np.linspace(-w / 2 + 0.045, w / 2 - 0.045, n)
-        yaw = np.radians(35)
-        for x in xs:
-            vane = g.transformed(g.box((0.089, 0.0015, h - 0.07)), yaw=yaw, offset=(x, 0, (h - 0.07) / 2))
-            top.append(Part(vane, slot, convex=True))
-            weight = g.transformed(g.box((0.085, 0.004, 0.05)), yaw=yaw, offset=(x, 0, 0.025))
-            bottom.append(Part(weight, slot, convex=True))
-        top.append(Part(g.box((xs[-1] - xs[0], 0.003, 0.003), (0, 0.0, 0.015)), "metal", collide=False))
-        desc = "vertical blinds with turned vanes"
-    top_link, joint = fixed("slats" if v != 1 else "shade", top, 0.6)
-    links = [Link("base", bottom, 1.4), top_link]
-    return recenter(AssetSpec("Blinds", v, "decor", links, joints=[joint], description=desc))
-
-
-@register("Curtains", variants=3, category="decor")
-def curtains(v: int, rng: np.random.Generator) -> AssetSpec:
-    """A curtain rod on wall brackets with two pleated drapes: open, closed under a pelmet, or tied back.
-
-    The weighted hems are the feet it stands on.
-    """
-    w = pick(rng, 1.5, 2.2)
-    h = pick(rng, 2.15, 2.4)
-    rod_z, rod_y = h - 0.04, 0.0
-    amp = 0.07
-    drapes: list[Part] = []
-    feet: list[Part] = []
-    hardware = [Part(g.cylinder(0.012, w, (0, rod_y, rod_z), axis="x", sections=10), "brass", convex=True)]
-    for sx in (-1, 1):
-        hardware.append(
-            Part(g.sphere(0.025, (sx * (w / 2 + 0.02), rod_y, rod_z), subdivisions=1), "brass", convex=True)
-        )
-        hardware.append(Part(g.box((0.02, 0.09, 0.02), (sx * (w / 2 - 0.08), -0.045, rod_z)), "brass", convex=True))
-        hardware.append(Part(g.box((0.05, 0.01, 0.07), (sx * (w / 2 - 0.08), -0.085, rod_z)), "brass", convex=True))
-    z_top, z_bot = rod_z - 0.022, 0.012
-    n = [10, 12, 9][v]
-    panel = [pick(rng, 0.3, 0.4) * w, w / 2 - 0.05, pick(rng, 0.35, 0.42) * w][v]
-    for sx in (-1, 1):
-        x_out = sx * (w / 2 - 0.04)
-        x_in = x_out - sx * panel
-        xs_top = list(np.linspace(x_out, x_in, n + 1))
-        if v == 2:  # gathered by a tieback at ~0.9 m, flaring out below
-            z_tie = pick(rng, 0.85, 0.95)
-            gather = 0.16
-            xs_tie = list(np.linspace(x_out, x_out - sx * gather, n + 1))
-            xs_bot = list(np.linspace(x_out, x_out - sx * gather * 1.9, n + 1))
-            drapes += [Part(m, "drape", convex=True) for m in drape(xs_top, xs_tie, z_top, z_tie, 0.0, amp)]
-            drapes += [Part(m, "drape", convex=True) for m in drape(xs_tie, xs_bot, z_tie, z_bot, 0.0, amp)]
-            xt = x_out - sx * gather / 2
-            drapes.append(Part(g.box((gather + 0.03, amp + 0.03, 0.05), (xt, 0.0, z_tie)), "drape", collide=False))
-            foot_x = sorted((x_out, xs_bot[-1]))
-        else:
-            drapes += [Part(m, "drape", convex=True) for m in drape(xs_top, xs_top, z_top, z_bot, 0.0, amp)]
-            foot_x = sorted((x_out, x_in))
-        for x in xs_top[::2]:  # rings on the rod
-            drapes.append(
-                Part(
-                    g.torus_arc(
-                        0.018,
-                        0.003,
-                        (x, rod_y, rod_z),
-                        plane="yz",
-                        start=0,
-                        end=2 * np.pi,
-                        sections=8,
-                        minor_sections=4,
-                    ),
-                    "brass",
-                    collide=False,
-                )
-            )
-        feet.append(
-            Part(g.box_at((foot_x[0], -amp / 2 - 0.035, 0), (foot_x[1], amp / 2 + 0.035, z_bot)), "drape", convex=True)
-        )
-    if v == 1:  # pelmet box over the rod
-        hardware.append(
-            Part(g.box_at((-w / 2 - 0.06, -0.09, h - 0.24), (w / 2 + 0.06, 0.07, h + 0.02)), "drape", convex=True)
-        )
-    names = ["open drapes", "closed drapes under a pelmet", "drapes held by tiebacks"]
-    upper, joint = fixed("drapes", drapes + hardware, 1.0)
-    return recenter(
-        AssetSpec(
-            "Curtains",
-            v,
-            "decor",
-            [Link("base", feet, 2.0), upper],
-            joints=[joint],
-            description=f"curtain rod with two pleated {names[v]}",
-        )
-    )
 
 
 # --------------------------------------------------------------------------------------------------
@@ -894,8 +488,9 @@ def _picture(kind: int, x0: float, x1: float, z0: float, z1: float, y: float) ->
     if kind == 0:  # landscape: sky, fields, a hill, a sun, a tree
         parts += [rect(0, 1, 0.4, 1, "art_sky"), rect(0, 1, 0, 0.4, "art_land")]
         hill = [at(u, 0.38 + 0.25 * np.sin(np.pi * u / 0.7)) for u in np.linspace(0, 0.7, 9)] + [at(0.7, 0.38)]
-        parts.append(Part(flat_poly(hill, y + 0.001), "art_land", collide=False))
-        parts.append(Part(disc_y(0.08 * min(w, h), (x0 + 0.8 * w, y + 0.003, z0 + 0.78 * h)), "art_sun", collide=False))
+        parts.append(Part(g.flat_poly(hill, y + 0.001), "art_land", collide=False))
+        parts.append(Part(g.disc_y(0.08 * min(w, h), (x0 + 0.8 * w, y + 0.003, z0 + 0.78 * h)), "art_sun",
+                          collide=False))
         parts.append(rect(0.84, 0.855, 0.34, 0.5, "art_dark", 0.003))
         parts.append(
             Part(
@@ -922,7 +517,7 @@ def _picture(kind: int, x0: float, x1: float, z0: float, z1: float, y: float) ->
         ):
             parts.append(
                 Part(
-                    disc_y(r * min(w, h), (x0 + u * w, y + 0.003 + 0.0005 * r, z0 + s * h), 0.002, 20),
+                    g.disc_y(r * min(w, h), (x0 + u * w, y + 0.003 + 0.0005 * r, z0 + s * h), 0.002, 20),
                     slot,
                     collide=False,
                 )
@@ -931,13 +526,14 @@ def _picture(kind: int, x0: float, x1: float, z0: float, z1: float, y: float) ->
         parts += [rect(0, 1, 0.3, 1, "art_sky"), rect(0, 1, 0, 0.3, "art_blue")]
         peaks = [(0.0, 0.35, 0.25, 0.78), (0.35, 0.68, 0.55, 0.88), (0.6, 1.0, 0.8, 0.7)]
         for ua, ub, um, top in peaks:
-            parts.append(Part(flat_poly([at(ua, 0.3), at(ub, 0.3), at(um, top)], y + 0.001), "art_dark", collide=False))
+            parts.append(Part(g.flat_poly([at(ua, 0.3), at(ub, 0.3), at(um, top)], y + 0.001), "art_dark",
+                              collide=False))
             cap = [
                 at(um - (um - ua) * 0.22, top - (top - 0.3) * 0.22),
                 at(um + (ub - um) * 0.22, top - (top - 0.3) * 0.22),
                 at(um, top),
             ]
-            parts.append(Part(flat_poly(cap, y + 0.002), "canvas", collide=False))
+            parts.append(Part(g.flat_poly(cap, y + 0.002), "canvas", collide=False))
     return parts
 
 
