@@ -12,10 +12,9 @@ from collections.abc import Iterable
 import numpy as np
 
 from luminous_sim.scene import Scene
-from luminous_sim.vocab import HANGERS
 from luminous_sim.tasks.model import PddlParams, TaskInstance
 from luminous_sim.tasks.sample import sample_task
-from luminous_sim.vocab import parent_type
+from luminous_sim.vocab import HANGERS, parent_type
 from luminous_sim.world.sightlines import unseen
 from luminous_sim.world.world import World
 

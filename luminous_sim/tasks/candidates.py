@@ -21,14 +21,8 @@ from luminous_sim.tasks.constraints import (
 )
 from luminous_sim.tasks.expressions import parents
 from luminous_sim.tasks.model import PddlParams
-from luminous_sim.tasks.types import (
-    LAMPS,
-    MOVABLE_RECEPTACLES,
-    SLICED_PARENTS,
-    SLICING_TOOLS,
-    task_info,
-)
-from luminous_sim.vocab import SLICED_TYPES, abilities, can_contain
+from luminous_sim.tasks.types import SLICED_PARENTS, task_info
+from luminous_sim.vocab import LAMPS, MOVABLE_RECEPTACLES, SLICED_TYPES, SLICING_TOOLS, abilities, can_contain
 
 
 class Holdings:

@@ -31,8 +31,8 @@ from luminous_sim.tasks.constraints import DEVICES, params_problems
 from luminous_sim.tasks.errors import TaskError
 from luminous_sim.tasks.model import PddlParams, TaskInstance
 from luminous_sim.tasks.templates import task_description
-from luminous_sim.tasks.types import LAMPS, SLICING_TOOLS, goal_for, task_info
-from luminous_sim.vocab import SLICED_TYPES, abilities, parent_type
+from luminous_sim.tasks.types import goal_for, task_info
+from luminous_sim.vocab import LAMPS, SLICED_TYPES, SLICING_TOOLS, abilities, parent_type
 
 SURFACES: dict[str, tuple[str, ...]] = {
     "Kitchen": ("CounterTop", "DiningTable", "SideTable", "Shelf"),

@@ -7,8 +7,8 @@ The scene-level ones (what is present, what already contains what) live in `samp
 from __future__ import annotations
 
 from luminous_sim.tasks.model import PddlParams
-from luminous_sim.tasks.types import LAMPS, MOVABLE_RECEPTACLES, SLICED_PARENTS, task_info
-from luminous_sim.vocab import ALL_TYPES, SLICED_TYPES, abilities, can_contain, vocab_data
+from luminous_sim.tasks.types import SLICED_PARENTS, task_info
+from luminous_sim.vocab import ALL_TYPES, LAMPS, MOVABLE_RECEPTACLES, SLICED_TYPES, abilities, can_contain, vocab_data
 
 PICKUP_TYPES: frozenset[str] = frozenset(vocab_data()["pickupable"]) - frozenset(SLICED_TYPES)
 """Object types ALFRED draws as `object_target` (its pickup candidates, slices folded to parents)."""

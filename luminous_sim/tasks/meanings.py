@@ -19,8 +19,7 @@ from collections.abc import Callable
 from dataclasses import dataclass
 
 from luminous_sim.states import WorldState
-from luminous_sim.tasks.types import LAMPS, MOVABLE_RECEPTACLES
-from luminous_sim.vocab import SLICED_TYPES, abilities
+from luminous_sim.vocab import LAMPS, MOVABLE_RECEPTACLES, SLICED_TYPES, abilities
 
 _MOVABLE = frozenset(MOVABLE_RECEPTACLES)
 

@@ -16,11 +16,6 @@ from luminous_sim.tasks.errors import TaskError
 from luminous_sim.tasks.model import PddlParams
 from luminous_sim.vocab import ROOM_TYPES, vocab_data
 
-MOVABLE_RECEPTACLES: tuple[str, ...] = ("Bowl", "Box", "Cup", "Mug", "Pan", "Plate", "Pot")
-"""ALFRED's MOVABLE_RECEPTACLES (the mrecep_target candidates)."""
-LAMPS: tuple[str, ...] = ("DeskLamp", "FloorLamp")
-"""The toggle_target candidates of look_at_obj_in_light."""
-SLICING_TOOLS: tuple[str, ...] = ("Knife", "ButterKnife")
 SLICED_PARENTS: tuple[str, ...] = ("Apple", "Bread", "Lettuce", "Potato", "Tomato")
 """Types that can be the object of a sliced task (sliceable with a `<X>Sliced` type; not Egg)."""
 CLOSABLE_RECEPTACLES: tuple[str, ...] = tuple(

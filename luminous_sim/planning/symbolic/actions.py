@@ -14,20 +14,10 @@ from types import MappingProxyType
 from typing import Any
 
 from luminous_sim.errors import PlanningError
-from luminous_sim.vocab import SLICED_TYPES
+from luminous_sim.scene.ids import type_of_id
+from luminous_sim.vocab import HIGH_LEVEL_ACTIONS, SLICED_TYPES
 
-ACTIONS: tuple[str, ...] = (
-    "GotoLocation",
-    "PickupObject",
-    "PutObject",
-    "OpenObject",
-    "CloseObject",
-    "ToggleObject",
-    "SliceObject",
-    "HeatObject",
-    "CoolObject",
-    "CleanObject",
-)
+ACTIONS: tuple[str, ...] = HIGH_LEVEL_ACTIONS
 """ALFRED's high-level planner actions (End is added by `Plan.high_pddl`)."""
 
 COSTS: dict[str, float] = {
@@ -48,11 +38,6 @@ isHot/isCool/isClean only through those macros, while our simulator also cools o
 (Goto, Pickup, Goto, CoolObject, Goto, Put). GotoLocation costs 1 per move (no geometry)."""
 
 _DEVICE_ACTIONS = ("PutObject", "HeatObject", "CoolObject", "CleanObject")
-
-
-def type_of_id(object_id: str) -> str:
-    """The type an ALFRED-style id starts with (`Apple|+00.46|...` -> `Apple`)."""
-    return object_id.split("|", 1)[0]
 
 
 def _discrete_name(object_id: str) -> str:
