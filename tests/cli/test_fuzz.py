@@ -164,7 +164,7 @@ def test_random_arguments_exit_0_or_2(command, capsys, monkeypatch):
 @pytest.mark.slow
 @settings(max_examples=25, deadline=None, database=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture, HealthCheck.too_slow])
-@given(argv_for(("generate",)))
+@given(argv=argv_for(("generate",)))
 def test_random_generate_for_real(argv, capsys, monkeypatch):
     counts = [i for i, a in enumerate(argv) if a == "--count"]
     for i in counts:  # a real layout takes seconds: keep the count small
