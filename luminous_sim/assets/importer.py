@@ -11,7 +11,7 @@ from typing import Any
 import numpy as np
 import trimesh
 
-from luminous_sim.assets.catalog import CATALOG_NAME
+from luminous_sim.assets.catalog import CATALOG_NAME, Catalog
 from luminous_sim.assets.objio import write_atomic
 from luminous_sim.assets.paths import coacd_cache_dir, user_asset_root
 from luminous_sim.assets.spec import AssetSpec, Link, Part, Region
@@ -24,6 +24,10 @@ USER_VARIANT_BASE = 100
 """Imported assets get variants 100, 101, ... so their ids never clash with built-in ones."""
 DENSITY = 400.0
 """kg/m^3 used for the default mass (a mix of hollow and solid household things)."""
+SIZE_FACTOR = 5.0
+"""An import whose largest dimension is more than this factor off the catalog's typical one for its type is
+refused (unless asked for with `any_size`): it is almost always a mesh in other units."""
+UNITS = {"centimetres": 0.01, "millimetres": 0.001, "inches": 0.0254, "decimetres": 0.1}
 
 # glTF and most OBJ exports are y-up with the front towards +z; ours is z-up with the front towards +y.
 _Y_UP_TO_Z_UP = np.array([[-1, 0, 0, 0], [0, 0, 1, 0], [0, 1, 0, 0], [0, 0, 0, 1]], dtype=float)
@@ -40,7 +44,8 @@ def load_user_mesh(path: Path) -> trimesh.Trimesh:
     """Read a mesh file into one triangle mesh, with a clear AssetError for every way it can be bad."""
     path = Path(path)
     if not path.is_file():
-        raise AssetError(f"{path}: no such file")
+        what = "not a regular file" if path.exists() else "no such file"
+        raise AssetError(f"{path}: {what}; expected a mesh file")
     if path.suffix.lower() not in MESH_SUFFIXES:
         raise AssetError(f"{path}: not a mesh file (expected one of {', '.join(sorted(MESH_SUFFIXES))})")
     try:
@@ -67,19 +72,59 @@ def normalise(mesh: trimesh.Trimesh, scale: float, up: str) -> trimesh.Trimesh:
     return out
 
 
+def typical_size(object_type: str) -> float | None:
+    """The median largest dimension (m) of the built-in assets of a type (None: the library has none)."""
+    sizes = [max(e.dims) for e in Catalog.load(include_user=False).of_type(object_type)]
+    return float(np.median(sizes)) if sizes else None
+
+
+def suggested_scale(largest: float, scale: float, typical: float) -> str:
+    """`--scale X` that brings a mesh `largest` m across (at `scale`) to about `typical` m, named by unit."""
+    raw = largest / scale  # the size in the file's own units
+    fits = [(abs(np.log(raw * f / typical)), f, unit) for unit, f in UNITS.items()
+            if 1 / SIZE_FACTOR <= raw * f / typical <= SIZE_FACTOR]
+    if fits:
+        _, factor, unit = min(fits)
+        return f"--scale {factor:g} (a model in {unit})"
+    return f"--scale {float(f'{typical / raw:.2g}'):g}"
+
+
+def check_mass(mass: float | None) -> None:
+    """Refuse a mass that is not a finite number above zero (NaN would freeze the object in PyBullet)."""
+    if mass is not None and not (isinstance(mass, (int, float)) and np.isfinite(mass) and mass > 0):
+        raise AssetError(f"--mass must be a finite number of kilograms above 0, not {mass}")
+
+
+def check_size(path: Path, object_type: str, largest: float, scale: float, any_size: bool) -> None:
+    """Refuse a mesh whose size is implausible for its type, suggesting the --scale that fixes it."""
+    if largest > 10.0 or largest < 0.005:
+        raise AssetError(f"{path}: after scaling the object is {largest:.3g} m across; pass --scale "
+                         "(e.g. 0.01 for a model in centimetres)")
+    typical = typical_size(object_type)
+    if any_size or typical is None or 1 / SIZE_FACTOR <= largest / typical <= SIZE_FACTOR:
+        return
+    raise AssetError(
+        f"{path}: a {object_type} {largest:.3g} m across is implausible (the library's are about {typical:.2g} m); "
+        f"pass {suggested_scale(largest, scale, typical)}, or --any-size to keep this size")
+
+
 def import_mesh(
     path: Path, object_type: str, scale: float = 1.0, up: str = "y", mass: float | None = None,
-    root: Path | None = None,
+    root: Path | None = None, any_size: bool = False,
 ) -> ImportResult:
-    """Normalise, decompose, write a URDF and add the asset to the user catalog (atomically)."""
+    """Normalise, decompose, write a URDF and add the asset to the user catalog (atomically).
+
+    Raises:
+        AssetError: An unreadable mesh, a scale or mass that is not a finite positive number, or (unless
+            `any_size`) a size more than SIZE_FACTOR off the library's typical size for the type.
+    """
     check_type(object_type, where="--type")
-    if not np.isfinite(scale) or scale <= 0:
+    if not isinstance(scale, (int, float)) or not np.isfinite(scale) or scale <= 0:
         raise AssetError(f"--scale must be a positive number, not {scale}")
+    check_mass(mass)
     mesh = normalise(load_user_mesh(path), scale, up)
     dims = mesh.extents
-    if dims.max() > 10.0 or dims.max() < 0.005:
-        raise AssetError(f"{path}: after scaling the object is {dims.max():.3g} m across; pass --scale "
-                         "(e.g. 0.01 for a model in centimetres)")
+    check_size(Path(path), object_type, float(dims.max()), float(scale), any_size)
     if not mesh.is_watertight:
         trimesh.repair.fill_holes(mesh)
     if abilities(object_type).movable_receptacle and not mesh.is_watertight:

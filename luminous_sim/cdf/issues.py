@@ -116,6 +116,8 @@ def _message(err: dict[str, Any], root: type[BaseModel]) -> str:
         hint = difflib.get_close_matches(key, allowed, n=1)
         extra = f"; did you mean {hint[0]!r}?" if hint else ""
         return f"unknown key {key!r}{extra} (expected one of {', '.join(allowed)})"
+    # the schema stores lists as tuples (immutable); a document writes a list, so say "list"
+    msg = msg.replace("a valid tuple", "a list").replace("Tuple should", "List should")
     for prefix in ("Value error, ", "Assertion failed, "):
         if msg.startswith(prefix):
             return msg[len(prefix) :]

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import os
+import stat
 from pathlib import Path
 from typing import Any
 
@@ -39,13 +40,21 @@ def format_of(path: str | os.PathLike[str]) -> str:
 def read_document(path: str | os.PathLike[str]) -> Any:
     """The plain data of a CDF file (not validated), read safely.
 
+    Only a regular file is read: a FIFO, device or folder is refused before reading (a FIFO would block).
+
     Raises:
-        CDFValidationError: Missing, unreadable, over MAX_BYTES, or not valid YAML/JSON.
+        CDFValidationError: Missing, not a regular file, unreadable, over MAX_BYTES, or not valid YAML/JSON.
     """
     source = str(path)
     fmt = format_of(path)
     try:
-        with open(path, "rb") as fh:
+        # O_NONBLOCK: opening a FIFO with no writer returns at once instead of waiting for one
+        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
+        with open(fd, "rb") as fh:
+            mode = os.fstat(fd).st_mode
+            if not stat.S_ISREG(mode):
+                kind = "a folder" if stat.S_ISDIR(mode) else "a FIFO" if stat.S_ISFIFO(mode) else "not a regular file"
+                raise CDFValidationError(source, [Issue("", f"{kind}; expected a regular CDF file")])
             raw = fh.read(MAX_BYTES + 1)
     except OSError as exc:
         raise CDFValidationError(

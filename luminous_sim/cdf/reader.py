@@ -115,6 +115,16 @@ def _no_duplicates(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
     return out
 
 
+def _load_yaml(text: str, source: str) -> Any:
+    """yaml.load with `source` as the name in error marks (PyYAML would say "<unicode string>")."""
+    loader = _Loader(text)
+    loader.name = source
+    try:
+        return loader.get_single_data()
+    finally:
+        loader.dispose()
+
+
 def parse_text(text: str | bytes, fmt: str = "yaml", source: str = "<string>") -> Any:
     """Parse CDF text into plain data (dicts, lists, scalars), safely.
 
@@ -140,9 +150,7 @@ def parse_text(text: str | bytes, fmt: str = "yaml", source: str = "<string>") -
         if fmt == "json":
             data = json.loads(text, object_pairs_hook=_no_duplicates)
         else:
-            data = yaml.load(
-                text, Loader=_Loader
-            )  # noqa: S506 - _Loader is a restricted SafeLoader
+            data = _load_yaml(text, source)
     except yaml.YAMLError as exc:
         raise _error(source, f"invalid YAML: {' '.join(str(exc).split())}") from None
     except (ValueError, RecursionError) as exc:  # json.JSONDecodeError is a ValueError

@@ -7,6 +7,7 @@ from pathlib import Path
 
 from luminous_sim.cdf import CDF_VERSION, export_schema, from_document, read_document, summarize
 from luminous_sim.cdf.issues import CDFValidationError, Issue
+from luminous_sim.cli.args import output_dir
 from luminous_sim.errors import CDFError
 
 
@@ -17,11 +18,22 @@ def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[ty
     validate = sub.add_parser(
         "validate", help="check CDF files (.yaml, .yml, .json) and summarise them"
     )
-    validate.add_argument("files", nargs="+", type=Path, metavar="FILE")
+    validate.add_argument("files", nargs="+", type=Path, metavar="FILE", help="CDF files to check")
     validate.set_defaults(func=run_validate)
     schema = sub.add_parser("schema", help=f"write cdf-v{CDF_VERSION}.schema.json")
-    schema.add_argument("--out", type=Path, required=True, metavar="DIR", help="output folder")
+    schema.add_argument("--out", type=output_dir, required=True, metavar="DIR", help="output folder")
     schema.set_defaults(func=run_schema)
+
+
+def _check_sizes(cdf, path: Path) -> None:
+    """Sizes that no asset of the type meets (generate would refuse them too)."""
+    from luminous_sim.assets.catalog import default_catalog
+    from luminous_sim.cssg.attributes import check_sizes
+
+    try:
+        check_sizes(cdf, default_catalog())
+    except CDFError as exc:
+        raise CDFError(f"{path}: {exc}") from None
 
 
 def run_validate(args: argparse.Namespace) -> int:
@@ -31,6 +43,7 @@ def run_validate(args: argparse.Namespace) -> int:
         try:
             doc = read_document(path)
             cdf = from_document(doc, str(path))
+            _check_sizes(cdf, path)
         except CDFError as exc:
             issues.append(str(exc))
             continue

@@ -5,19 +5,22 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from luminous_sim.cli.args import output_dir, seed
+from luminous_sim.vocab import ROOM_TYPES
+
 
 def register(sub: argparse._SubParsersAction) -> None:
     parser = sub.add_parser("demo", help="generate and furnish rooms, build them in PyBullet, write pictures")
-    parser.add_argument("--out", type=Path, default=Path("out/demo"))
-    parser.add_argument("--seed", type=int, default=0)
-    parser.add_argument("--room-types", nargs="*", default=None, help="Kitchen LivingRoom Bedroom Bathroom")
+    parser.add_argument("--out", type=output_dir, default=Path("out/demo"), help="output folder (default out/demo)")
+    parser.add_argument("--seed", type=seed, default=0, help="random seed, a whole number >= 0 (default 0)")
+    parser.add_argument("--room-types", nargs="*", default=None, choices=ROOM_TYPES, metavar="ROOM_TYPE",
+                        help=f"room types to generate (default: all of {', '.join(ROOM_TYPES)})")
     parser.add_argument("--no-episode", action="store_true", help="skip the task + oracle episode")
     parser.set_defaults(func=_run)
 
 
 def _run(args: argparse.Namespace) -> int:
     from luminous_sim.demo import run_demo, run_demo_episode
-    from luminous_sim.vocab import ROOM_TYPES
 
     rooms = run_demo(args.out, args.seed, tuple(args.room_types or ROOM_TYPES))
     for r in rooms:

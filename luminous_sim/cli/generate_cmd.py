@@ -5,18 +5,54 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
+from luminous_sim.cli.args import output_dir, positive_int, seed
+from luminous_sim.errors import CDFError, InfeasibleSceneError
+from luminous_sim.vocab import ROOM_TYPES
+
+EPILOG = (
+    "example: luminous generate --cdf cdf/examples/kitchen_coffee_mug.yaml --room FloorPlan1 --seed 0 "
+    "--out out/scene   (`luminous rooms list` names the rooms; --room must be of a room type the CDF allows)"
+)
+
 
 def register(sub: argparse._SubParsersAction) -> None:
-    parser = sub.add_parser("generate", help="generate scenes from a CDF with CSSG")
+    parser = sub.add_parser("generate", help="generate scenes from a CDF with CSSG", epilog=EPILOG)
     parser.add_argument("--cdf", type=Path, help="challenge definition (YAML/JSON); default: an empty one")
-    parser.add_argument("--room-type", default="Kitchen", help="room type when no CDF is given")
-    parser.add_argument("--seed", type=int, default=0)
-    parser.add_argument("--count", type=int, default=1, help="scenes with seeds seed, seed+1, ...")
-    parser.add_argument("--out", type=Path, required=True)
-    parser.add_argument("--room", help="a room-library name (e.g. FloorPlan12, kitchen_L); overrides the CDF's")
+    parser.add_argument("--room-type", default="Kitchen", choices=ROOM_TYPES, help="room type when no CDF is given")
+    parser.add_argument("--seed", type=seed, default=0, help="random seed, a whole number >= 0 (default 0)")
+    parser.add_argument("--count", type=positive_int, default=1,
+                        help="number of scenes, with seeds seed, seed+1, ... (default 1)")
+    parser.add_argument("--out", type=output_dir, required=True,
+                        help="output folder (with --count > 1: one scene_NNNNN/ folder per scene in it)")
+    parser.add_argument("--room", help="a room-library name (e.g. FloorPlan1, kitchen_L; see `luminous rooms list`); "
+                        "overrides the CDF's room")
     parser.add_argument("--baseline", action="store_true", help="uniform-random placement instead of CSSG")
     parser.add_argument("--no-physics", action="store_true", help="skip the PyBullet settling check")
     parser.set_defaults(func=_run)
+
+
+def check_room_type(room_type: str, allowed: tuple[str, ...] | list[str], room: str, cdf: Path | None) -> None:
+    """Refuse a --room whose type the CDF does not allow (its objects would never fit the room's purpose).
+
+    Raises:
+        CDFError: naming the room, its type and the CDF's room types.
+    """
+    if room_type in allowed:
+        return
+    source = f"CDF {cdf} (scene.room_type)" if cdf else "--room-type"
+    raise CDFError(f"--room {room} is a {room_type}, but {source} asks for {' or '.join(allowed)}; "
+                   f"pick a room of that type (`luminous rooms list`) or leave --room out")
+
+
+def _check_sizes(doc, source: Path | None) -> None:
+    """The CDF's sizes against the library (generate() checks too, but cannot name the file)."""
+    from luminous_sim.assets.catalog import default_catalog
+    from luminous_sim.cssg.attributes import check_sizes
+
+    try:
+        check_sizes(doc, default_catalog())
+    except CDFError as exc:
+        raise CDFError(f"{source or 'the CDF'}: {exc}") from None
 
 
 def _run(args: argparse.Namespace) -> int:
@@ -28,11 +64,13 @@ def _run(args: argparse.Namespace) -> int:
     from luminous_sim.scene_outputs import write_scene_outputs
 
     doc = cdf_mod.load(args.cdf) if args.cdf else empty_cdf(args.room_type)
+    _check_sizes(doc, args.cdf)
     shell = None
     if args.room:
         from luminous_sim.rooms.library import shell_for
 
         shell = shell_for(args.room, np.random.default_rng(args.seed))
+        check_room_type(shell.room_type, list(doc.scene.room_type), args.room, args.cdf)
     failures = 0
     for k in tqdm(range(args.count), desc="scenes", unit="scene", disable=args.count == 1):
         seed = args.seed + k
@@ -45,7 +83,13 @@ def _run(args: argparse.Namespace) -> int:
             draft, report = sample_uniform(doc, room, rng, default_catalog())
             generated = Generated(draft.to_scene("uniform", seed, source=doc.name or ""), report)
         else:
-            generated = generate(doc, seed=seed, room=shell)
+            try:
+                generated = generate(doc, seed=seed, room=shell)
+            except InfeasibleSceneError as exc:
+                if args.room:  # the named room may be too small or crowded for what the CDF asks
+                    raise InfeasibleSceneError(f"{exc} (in --room {args.room}; try another room or leave "
+                                               "--room out)") from None
+                raise
         sub = args.out if args.count == 1 else args.out / f"scene_{seed:05d}"
         report = write_scene_outputs(generated, sub, physics=not args.no_physics)
         ok = report["layout"]["ok"] and report.get("physics", {}).get("ok", True)

@@ -9,12 +9,16 @@ from pathlib import Path
 
 import numpy as np
 
+from luminous_sim.cli.args import output_dir, output_file, positive_int, seed
 from luminous_sim.errors import RoomError
 from luminous_sim.rooms.alfred_convert import convert_all
 from luminous_sim.rooms.generate import SHAPES, generate_shell
-from luminous_sim.rooms.library import room_files, room_names, shell_for
+from luminous_sim.rooms.library import check_name, room_files, room_names, shell_for
 from luminous_sim.rooms.shell import load_shell, save_shell
 from luminous_sim.vocab import ROOM_TYPES
+
+IMAGE_SUFFIXES = (".png", ".svg", ".pdf", ".jpg", ".jpeg")
+"""Formats `rooms show` writes (matplotlib picks the format from the suffix)."""
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:
@@ -34,9 +38,9 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument(
         "--layouts", required=True, type=Path, help="folder with FloorPlan<N>-layout.npy files"
     )
-    p.add_argument("--out", required=True, type=Path, help="output folder for FloorPlan<N>.json")
+    p.add_argument("--out", required=True, type=output_dir, help="output folder for FloorPlan<N>.json")
     p.add_argument(
-        "--scene", type=int, action="append", help="convert only this scene number (repeatable)"
+        "--scene", type=positive_int, action="append", help="convert only this scene number (repeatable)"
     )
     p.set_defaults(func=cmd_convert)
 
@@ -44,16 +48,24 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument(
         "name", help="library room name (e.g. FloorPlan1) or procedural name (e.g. kitchen_L)"
     )
-    p.add_argument("--out", required=True, type=Path, help="image file to write (e.g. room.png)")
-    p.add_argument("--seed", type=int, default=0, help="seed for procedural names (default 0)")
+    p.add_argument("--out", required=True, type=output_file(IMAGE_SUFFIXES, "an image"),
+                   help=f"image file to write (e.g. room.png; {', '.join(IMAGE_SUFFIXES)})")
+    p.add_argument("--seed", type=seed, default=0, help="seed for procedural names, a whole number >= 0 (default 0)")
     p.set_defaults(func=cmd_show)
 
-    p = sub.add_parser("generate", help="generate a procedural room and write its JSON")
-    p.add_argument("room_type", choices=ROOM_TYPES)
-    p.add_argument("--shape", choices=SHAPES, default=None, help="default: drawn at random")
-    p.add_argument("--seed", type=int, default=0)
+    p = sub.add_parser(
+        "generate",
+        help="generate a procedural room and write its JSON (use it through LUMINOUS_ROOM_LIBRARY)",
+        description="Generate a procedural room and write its JSON. To use it in scenes, put the file in a "
+        "folder and point LUMINOUS_ROOM_LIBRARY at that folder (several folders: separated by ':'); its rooms "
+        "then join the library (`luminous rooms list`), named by their file names without .json, and "
+        "`luminous generate --room NAME` or a CDF's `room: NAME` can use them.",
+    )
+    p.add_argument("room_type", choices=ROOM_TYPES, help="the room type")
+    p.add_argument("--shape", choices=SHAPES, default=None, help="outline shape (default: drawn at random)")
+    p.add_argument("--seed", type=seed, default=0, help="random seed, a whole number >= 0 (default 0)")
     p.add_argument("--name", default=None, help="room name (default <type>_<shape>)")
-    p.add_argument("--out", required=True, type=Path, help="JSON file to write")
+    p.add_argument("--out", required=True, type=output_file([".json"], "a JSON"), help="JSON file to write")
     p.set_defaults(func=cmd_generate)
 
 
@@ -126,8 +138,21 @@ def cmd_show(args: argparse.Namespace) -> int:
 
 def cmd_generate(args: argparse.Namespace) -> int:
     """Generate a procedural room and save it as JSON."""
+    if args.name is not None:
+        check_name(args.name)
     shell = generate_shell(
         args.room_type, np.random.default_rng(args.seed), args.shape, name=args.name
     )
-    print(f"wrote {save_shell(shell, args.out)} ({shell.shape}, {shell.area:.1f} m2)")
+    out = save_shell(shell, args.out)
+    print(f"wrote {out} ({shell.shape}, {shell.area:.1f} m2)")
+    if _is_room_name(out.stem):
+        print(f"use it: LUMINOUS_ROOM_LIBRARY={out.parent.resolve()} luminous generate --room {out.stem} ...")
     return 0
+
+
+def _is_room_name(stem: str) -> bool:
+    try:
+        check_name(stem)
+    except RoomError:
+        return False
+    return True

@@ -12,6 +12,7 @@ import sys
 from pathlib import Path
 from types import ModuleType
 
+from luminous_sim.cli.args import fraction, int_range, non_negative_int, output_file, positive_float, positive_int, seed
 from luminous_sim.language.speaker.errors import SpeakerError
 
 
@@ -38,26 +39,27 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     )
     p.add_argument("--data", required=True, type=Path, help="folder with traj_data.json files")
     p.add_argument(
-        "--out", required=True, type=Path, help="checkpoint file to write (e.g. speaker.pt)"
+        "--out", required=True, type=output_file((), "a checkpoint"),
+        help="checkpoint file to write (e.g. speaker.pt)",
     )
-    p.add_argument("--epochs", type=int, default=10, help="total epochs (default 10)")
-    p.add_argument("--batch-size", type=int, default=32)
-    p.add_argument("--lr", type=float, default=2e-3)
-    p.add_argument("--seed", type=int, default=0)
+    p.add_argument("--epochs", type=positive_int, default=10, help="total epochs (default 10)")
+    p.add_argument("--batch-size", type=positive_int, default=32, help="examples per batch (default 32)")
+    p.add_argument("--lr", type=positive_float, default=2e-3, help="learning rate (default 0.002)")
+    p.add_argument("--seed", type=seed, default=0, help="random seed, a whole number >= 0 (default 0)")
     p.add_argument(
         "--held-out",
-        type=float,
+        type=fraction,
         default=0.1,
         help="fraction of trajectories held out (default 0.1)",
     )
     p.add_argument(
-        "--max-examples", type=int, default=None, help="train on a seeded sample of N examples"
+        "--max-examples", type=positive_int, default=None, help="train on a seeded sample of N examples"
     )
     p.add_argument(
-        "--max-trajectories", type=int, default=None, help="use the first N trajectories"
+        "--max-trajectories", type=positive_int, default=None, help="use the first N trajectories"
     )
-    p.add_argument("--emb-dim", type=int, default=64)
-    p.add_argument("--hid-dim", type=int, default=128)
+    p.add_argument("--emb-dim", type=int_range(1, 4096), default=64, help="word embedding size (default 64)")
+    p.add_argument("--hid-dim", type=int_range(1, 4096), default=128, help="LSTM hidden size (default 128)")
     p.add_argument(
         "--features", action="store_true", help="use raw_images/ colour features where present"
     )
@@ -65,7 +67,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
         "--resume", action="store_true", help="continue from --out up to --epochs in total"
     )
     p.add_argument(
-        "--eval-beam", type=int, default=1, help="beam width for the held-out BLEU (0: skip)"
+        "--eval-beam", type=int_range(0, 64), default=1, help="beam width for the held-out BLEU (0: skip)"
     )
     p.add_argument("--quiet", action="store_true", help="no per-epoch lines")
     p.set_defaults(func=cmd_train)
@@ -77,15 +79,15 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     p.add_argument(
         "--traj", required=True, type=Path, help="traj_data.json (annotations not needed)"
     )
-    p.add_argument("--beam", type=int, default=3, help="beam width (1: greedy; default 3)")
+    p.add_argument("--beam", type=int_range(1, 64), default=3, help="beam width (1: greedy; default 3)")
     p.add_argument("--json", action="store_true", help="print {task_desc, high_descs} JSON")
     _no_repeat_option(p)
     p.set_defaults(func=cmd_describe)
 
     p = sub.add_parser("evaluate", help="BLEU-4 on the trajectories the checkpoint held out")
-    p.add_argument("--model", required=True, type=Path)
+    p.add_argument("--model", required=True, type=Path, help="checkpoint written by `speaker train`")
     p.add_argument("--data", required=True, type=Path, help="the folder the model was trained from")
-    p.add_argument("--beam", type=int, default=3)
+    p.add_argument("--beam", type=int_range(1, 64), default=3, help="beam width (1: greedy; default 3)")
     p.add_argument("--all", action="store_true", help="score every trajectory under --data instead")
     _no_repeat_option(p)
     p.set_defaults(func=cmd_evaluate)
@@ -94,7 +96,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
 def _no_repeat_option(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--no-repeat-ngram",
-        type=int,
+        type=non_negative_int,
         default=3,
         help="never repeat an n-gram of this length (0: off; default 3)",
     )

@@ -20,6 +20,7 @@ MATERIAL_SLOTS: dict[str, frozenset[str]] = {
 }
 """Material words a CDF may use -> the asset material slots that count as that material."""
 SCALE_RANGE = (0.3, 3.0)
+"""Factors by which a CDF's `size` may scale an asset; a size no variant of the type meets within it is refused."""
 
 
 def parse_colour(name: str, where: str = "attributes.colour") -> tuple[float, float, float]:
@@ -29,7 +30,8 @@ def parse_colour(name: str, where: str = "attributes.colour") -> tuple[float, fl
     try:
         r, g, b = colors.to_rgb(name.strip().lower().replace(" ", ""))
     except ValueError:
-        raise CDFError(f"{where}: unknown colour {name!r}; use a colour name (red, navy, beige...) or #rrggbb") from None
+        raise CDFError(
+            f"{where}: unknown colour {name!r}; use a colour name (red, navy, beige...) or #rrggbb") from None
     return (round(r, 4), round(g, 4), round(b, 4))
 
 
@@ -46,17 +48,63 @@ def with_material(variants: list[AssetEntry], material: str | None) -> list[Asse
     return hits or variants
 
 
+def scale_for(entry: AssetEntry, size: Any) -> float:
+    """The factor the CDF's `size` asks of this entry: the factor itself, or the geometric mean of the ratios
+    of {width, depth, height} (metres) to the entry's dimensions."""
+    if isinstance(size, (int, float)):
+        return float(size)
+    want = [size["width"], size["depth"], size["height"]]
+    ratios = [w / max(d, 1e-6) for w, d in zip(want, entry.dims)]
+    return math.exp(sum(math.log(r) for r in ratios) / 3)
+
+
+def fits(entry: AssetEntry, size: Any) -> bool:
+    """Whether `size` scales this entry by a factor within SCALE_RANGE."""
+    return size is None or SCALE_RANGE[0] <= scale_for(entry, size) <= SCALE_RANGE[1]
+
+
 def sized(entry: AssetEntry, size: Any) -> AssetEntry:
     """The entry scaled as the CDF's `size` says: a factor, or {width, depth, height} in metres."""
     if size is None:
         return entry
+    return scaled(entry, min(max(scale_for(entry, size), SCALE_RANGE[0]), SCALE_RANGE[1]))
+
+
+def _describe(size: Any) -> str:
     if isinstance(size, (int, float)):
-        s = float(size)
-    else:
-        want = [size["width"], size["depth"], size["height"]]
-        ratios = [w / max(d, 1e-6) for w, d in zip(want, entry.dims)]
-        s = math.exp(sum(math.log(r) for r in ratios) / 3)
-    return scaled(entry, min(max(s, SCALE_RANGE[0]), SCALE_RANGE[1]))
+        return f"{size:g}"
+    return "{" + ", ".join(f"{k}: {size[k]:g}" for k in ("width", "depth", "height")) + "}"
+
+
+def check_size(variants: list[AssetEntry], size: Any, object_type: str, where: str) -> None:
+    """Refuse a `size` that no variant meets within SCALE_RANGE (it used to be clamped silently).
+
+    Raises:
+        CDFError: Naming the object, the size asked for, the factor it needs and the range allowed.
+    """
+    if size is None or not variants or any(fits(e, size) for e in variants):
+        return
+    factors = sorted(scale_for(e, size) for e in variants)
+    need = f"{factors[0]:.3g}x or more" if factors[0] > SCALE_RANGE[1] else f"{factors[-1]:.3g}x or less"
+    dims = " x ".join(f"{d:.2f}" for d in variants[0].dims)
+    raise CDFError(
+        f"{where}: attributes.size {_describe(size)} would scale every {object_type} asset by {need} "
+        f"(one is {dims} m); a size may scale an asset by {SCALE_RANGE[0]:g}x to {SCALE_RANGE[1]:g}x")
+
+
+def check_sizes(cdf: Any, catalog: Any) -> None:
+    """Check every CDF object's `size` against the variants it may use (before any layout is drawn).
+
+    Raises:
+        CDFError: The first object whose size no variant meets within SCALE_RANGE.
+    """
+    for i, spec in enumerate(cdf.scene.objects):
+        attrs = spec.attributes.model_dump(exclude_none=True) if spec.attributes else {}
+        if attrs.get("size") is None:
+            continue
+        pool = [e for e in catalog.of_type(spec.type) if not spec.asset or e.id == spec.asset]
+        pool = with_material(pool, attrs.get("material"))
+        check_size(pool, attrs["size"], spec.type, f"scene.objects[{i}] ({spec.name})")
 
 
 def size_misfit(entry: AssetEntry, size: Any) -> float:
@@ -74,6 +122,9 @@ def candidates(variants: list[AssetEntry], attributes: dict[str, Any] | None) ->
     attributes = attributes or {}
     pool = with_material(variants, attributes.get("material"))
     size = attributes.get("size")
+    if size is not None and pool and not all(fits(e, size) for e in pool):
+        # variants the size would scale out of range are left out (check_sizes refused the CDF if none fits)
+        pool = [e for e in pool if fits(e, size)] or pool
     if size is not None and not isinstance(size, (int, float)) and pool:
         best = min(size_misfit(e, size) for e in pool)
         pool = [e for e in pool if size_misfit(e, size) <= best + 0.05]

@@ -14,6 +14,7 @@ import numpy as np
 
 from luminous_sim.assets.catalog import Catalog, default_catalog
 from luminous_sim.cdf.schema import ChallengeDefinition
+from luminous_sim.cssg.attributes import check_sizes
 from luminous_sim.cssg.draft import SceneDraft
 from luminous_sim.cssg.furniture import FloorContext, hard_relations_met, place_piece, register
 from luminous_sim.cssg.objects import place_object
@@ -248,6 +249,7 @@ def generate(cdf: ChallengeDefinition, seed: int = 0, room: RoomShell | None = N
              catalog: Catalog | None = None, attempts: int = ATTEMPTS) -> Generated:
     """Sample layouts until one passes validation; the same inputs give the same scene, byte for byte."""
     catalog = catalog or default_catalog()
+    check_sizes(cdf, catalog)
     failures: Counter[str] = Counter()
     shell = room
     for attempt in range(attempts):

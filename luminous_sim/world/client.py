@@ -3,13 +3,40 @@ and the renderer: TinyRenderer on the CPU, the EGL plugin automatically where a 
 
 from __future__ import annotations
 
+import contextlib
+import ctypes
 import glob
 import os
 import pkgutil
+import sys
+from collections.abc import Iterator
 
 import numpy as np
-import pybullet as p
-from pybullet_utils.bullet_client import BulletClient
+
+
+@contextlib.contextmanager
+def _silenced(*fds: int) -> Iterator[None]:
+    """Send what C code writes to these file descriptors to /dev/null (PyBullet prints `argv[0]=` on
+    stdout at every connect and its build time on stderr at import)."""
+    sys.stdout.flush()
+    sys.stderr.flush()
+    saved = [os.dup(fd) for fd in fds]
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    try:
+        for fd in fds:
+            os.dup2(devnull, fd)
+        yield
+    finally:
+        ctypes.CDLL(None).fflush(None)  # C stdio buffers would otherwise reach the real fd later
+        for fd, copy in zip(fds, saved):
+            os.dup2(copy, fd)
+            os.close(copy)
+        os.close(devnull)
+
+
+with _silenced(2):
+    import pybullet as p
+from pybullet_utils.bullet_client import BulletClient  # noqa: E402
 
 TIME_STEP = 1.0 / 240.0
 GRAVITY = -9.81
@@ -45,7 +72,8 @@ def new_client(gui: bool = False, renderer: str = "tiny") -> BulletClient:
     With renderer "egl" the EGL plugin is loaded first (it must be, before anything is built) and the
     client's camera uses it; if the plugin cannot load, the client falls back to TinyRenderer.
     """
-    client = BulletClient(connection_mode=p.GUI if gui else p.DIRECT)
+    with _silenced(1):
+        client = BulletClient(connection_mode=p.GUI if gui else p.DIRECT)
     client.luminous_renderer = p.ER_TINY_RENDERER
     if renderer == "egl":
         egl = pkgutil.get_loader("eglRenderer")
