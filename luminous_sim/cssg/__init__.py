@@ -10,7 +10,7 @@ Typical use::
 """
 
 from luminous_sim.cssg.baseline import empty_cdf, generate_uniform, sample_uniform
-from luminous_sim.cssg.generate import ATTEMPTS, Generated, choose_room, generate, sample_layout
+from luminous_sim.cssg.pipeline import ATTEMPTS, Generated, choose_room, generate, sample_layout
 from luminous_sim.cssg.validate import LayoutReport, RelationCheck, check_layout
 
 __all__ = [

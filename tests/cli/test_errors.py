@@ -270,7 +270,7 @@ def test_out_of_range_size_is_refused(obj, needle, capsys, tmp_path):
 
 def test_generate_library_refuses_out_of_range_size():
     from luminous_sim import cdf
-    from luminous_sim.cssg.generate import generate
+    from luminous_sim.cssg.pipeline import generate
     from luminous_sim.errors import CDFError
 
     doc = cdf.loads("cdf_version: 2\nscene:\n  room_type: Kitchen\n  objects:\n"

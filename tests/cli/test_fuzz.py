@@ -97,8 +97,7 @@ def _sandbox(root: Path) -> dict[str, str]:
 def _stub_heavy_work(monkeypatch) -> None:
     import luminous_sim.assets.build as build
     import luminous_sim.assets.importer as importer
-    import luminous_sim.cssg.baseline as baseline
-    import luminous_sim.cssg.generate as cssg_generate
+    import luminous_sim.cssg as cssg
     import luminous_sim.demo as demo
     import luminous_sim.scene_outputs as scene_outputs
     import luminous_sim.world.asset_sheet as asset_sheet
@@ -110,10 +109,10 @@ def _stub_heavy_work(monkeypatch) -> None:
     monkeypatch.setattr(demo, "run_demo", lambda out, seed, types: [])
     monkeypatch.setattr(demo, "run_demo_episode", lambda out, seed: SimpleNamespace(
         goal_conditions=(1, 1), task_type="stub", success=True, low_actions=0, out_dir=out))
-    monkeypatch.setattr(cssg_generate, "generate", lambda doc, seed=0, room=None: SimpleNamespace(scene=scene))
-    monkeypatch.setattr(baseline, "sample_uniform", lambda doc, room, rng, cat: (
+    monkeypatch.setattr(cssg, "generate", lambda doc, seed=0, room=None: SimpleNamespace(scene=scene))
+    monkeypatch.setattr(cssg, "sample_uniform", lambda doc, room, rng, cat: (
         SimpleNamespace(to_scene=lambda *a, **k: scene), None))
-    monkeypatch.setattr(cssg_generate, "choose_room", lambda doc, rng, catalog=None: None)
+    monkeypatch.setattr(cssg, "choose_room", lambda doc, rng, catalog=None: None)
     monkeypatch.setattr(scene_outputs, "write_scene_outputs", lambda g, out, physics=True: {"layout": {"ok": True}})
     monkeypatch.setattr(importer, "write_asset", lambda spec, out, cache: {"dims": [0.1, 0.1, 0.1],
                                                                           "collision_hulls": 1, "id": spec.asset_id,

@@ -9,7 +9,7 @@ import pytest
 from luminous_sim import cdf
 from luminous_sim.assets.catalog import default_catalog, scaled
 from luminous_sim.cssg.attributes import candidates, parse_colour
-from luminous_sim.cssg.generate import generate
+from luminous_sim.cssg.pipeline import generate
 from luminous_sim.errors import CDFError
 
 DOC = """

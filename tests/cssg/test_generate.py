@@ -10,7 +10,7 @@ import pytest
 
 from luminous_sim import cdf
 from luminous_sim.cssg.baseline import empty_cdf, sample_uniform
-from luminous_sim.cssg.generate import choose_room, generate
+from luminous_sim.cssg.pipeline import choose_room, generate
 from luminous_sim.errors import InfeasibleSceneError
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "cdf" / "examples"
@@ -196,7 +196,7 @@ def test_a_piece_something_hangs_above_keeps_windows_from_behind_it():
 
 def test_a_sample_stops_at_a_failure_no_backtrack_can_undo():
     from luminous_sim.assets.catalog import default_catalog
-    from luminous_sim.cssg.generate import sample_layout
+    from luminous_sim.cssg.pipeline import sample_layout
 
     doc = cdf.loads(
         "cdf_version: 2\nname: too_many_beds\nscene:\n  room_type: Bathroom\n"
@@ -212,7 +212,7 @@ def test_a_sample_stops_at_a_failure_no_backtrack_can_undo():
 
 
 def test_a_failure_a_later_backtrack_can_undo_does_not_stop_the_sample():
-    from luminous_sim.cssg.generate import _undo_floors
+    from luminous_sim.cssg.pipeline import _undo_floors
     from luminous_sim.cssg.requests import requests_from_cdf
 
     requests = requests_from_cdf(_load("kitchen_coffee_mug"), "Kitchen", np.random.default_rng(0))
@@ -224,9 +224,8 @@ def test_a_failure_a_later_backtrack_can_undo_does_not_stop_the_sample():
 
 
 def test_stopping_doomed_samples_early_never_changes_the_scene(monkeypatch):
-    import importlib
 
-    gen = importlib.import_module("luminous_sim.cssg.generate")  # the module: the package's `generate` is the function
+    import luminous_sim.cssg.pipeline as gen
 
     doc = _load("bathroom_soap")
     stopped = []

@@ -13,8 +13,8 @@ from luminous_sim import cdf
 from luminous_sim.assets.catalog import default_catalog
 from luminous_sim.cssg.draft import Placed, SceneDraft
 from luminous_sim.cssg.furniture import FloorContext
-from luminous_sim.cssg.generate import generate
 from luminous_sim.cssg.grid import RES
+from luminous_sim.cssg.pipeline import generate
 from luminous_sim.cssg.reach import FloorPiece
 from luminous_sim.cssg.structure import place_fixtures
 from luminous_sim.rooms.generate import generate_shell

@@ -553,3 +553,15 @@ def test_cli_train_describe_and_errors(
     )
     with pytest.raises(LuminousError, match="none.pt"):
         args.func(args)
+
+
+@needs_torch
+@pytest.mark.parametrize("content", [b"root:x:0:0:root:/root:/bin/bash\n", b"", b"\x80\x02}q\x00.", b"PK\x03\x04junk"])
+def test_a_file_that_is_not_a_checkpoint_is_a_speaker_error(tmp_path, content):
+    """torch.load raises IndexError, EOFError, UnpicklingError ... on foreign bytes: all become one clear error."""
+    from luminous_sim.language.speaker.checkpoint import load_checkpoint
+
+    path = tmp_path / "model.pt"
+    path.write_bytes(content)
+    with pytest.raises(SpeakerError, match="model.pt"):
+        load_checkpoint(path)

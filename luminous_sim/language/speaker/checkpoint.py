@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import os
-import pickle
 import tempfile
 from pathlib import Path
 from typing import Any
@@ -46,9 +45,9 @@ def load_checkpoint(path: str | Path) -> dict[str, Any]:
         raise SpeakerError(f"{path}: speaker checkpoint not found")
     try:
         data = torch.load(path, map_location="cpu", weights_only=True)
-    except (pickle.UnpicklingError, RuntimeError, EOFError, OSError, ValueError) as exc:
+    except Exception as exc:  # torch's unpickler raises any type on foreign bytes (IndexError on /etc/passwd)
         raise SpeakerError(
-            f"{path}: not a readable speaker checkpoint ({str(exc).splitlines()[0]})"
+            f"{path}: not a readable speaker checkpoint ({(str(exc).splitlines() or [type(exc).__name__])[0]})"
         ) from None
     if not isinstance(data, dict) or data.get("format") != FORMAT:
         raise SpeakerError(f"{path}: not a speaker checkpoint (expected format {FORMAT!r})")
