@@ -21,6 +21,7 @@ def test_random_actions_sample(room_type, seed):
     with _world(room_type, seed) as w:
         stats = fuzz(w, steps=400, seed=seed)
     assert stats["succeeded"] > 50
+    assert len(stats["codes"]) >= 4, stats["codes"]  # every failure had a code (fuzz checks), of many kinds
 
 
 @pytest.mark.slow
