@@ -23,7 +23,20 @@ _WHERE = {
     "physically_feasible": "task_fit", "unseeable": "task_fit",
 }
 
-__all__ = sorted(_WHERE)
+__all__ = [
+    "ExecutionError",
+    "NavGraph",
+    "Oracle",
+    "Trajectory",
+    "draw_task",
+    "goto_actions",
+    "has_room",
+    "has_room_for_two",
+    "look_steps",
+    "physically_feasible",
+    "unseeable",
+    "with_forbidden",
+]
 
 
 def __getattr__(name: str) -> Any:

@@ -46,7 +46,31 @@ _WHERE = {
     "World": "luminous_sim.world.world",
 }
 
-__all__ = sorted(_WHERE)
+__all__ = [
+    "INTERACTION",
+    "NAVIGATION",
+    "AgentPose",
+    "BuiltScene",
+    "Failure",
+    "FailureCode",
+    "Frame",
+    "LiveView",
+    "NavGrid",
+    "PhysicsReport",
+    "Spot",
+    "StepResult",
+    "World",
+    "WorldConfig",
+    "WorldView",
+    "bbox_from_mask",
+    "build_scene",
+    "check_physics",
+    "egocentric",
+    "interaction_args",
+    "mask_to_rle",
+    "rle_to_mask",
+    "top_down",
+]
 
 
 def __getattr__(name: str) -> Any:

@@ -192,7 +192,7 @@ def test_the_oracle_reports_only_receptacles_with_no_room_at_all(world, kitchen_
                                                                  reported):
     """The receptacles the episode's redraw leaves out (episode.run_episode passes them to draw_task): the
     oracle tells them by the put's failure code."""
-    import luminous_sim.world.placement as placement
+    from luminous_sim.world import placement
 
     micro = world.view().state.of_type("Microwave")[0]
     real = placement.find_spot

@@ -29,7 +29,7 @@ def _ok(world: World, action: dict) -> None:
 @pytest.fixture(scope="module")
 def failures(kitchen_scene) -> dict[FailureCode, tuple[dict, StepResult]]:
     """The first failed result seen for each code, with the action that produced it."""
-    import luminous_sim.world.placement as placement
+    from luminous_sim.world import placement
 
     got: dict[FailureCode, tuple[dict, StepResult]] = {}
     apple, fridge, micro, knife, mug, counter = (obj(kitchen_scene, n) for n in

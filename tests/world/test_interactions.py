@@ -169,7 +169,7 @@ def test_put_refuses_incompatible_and_full_receptacles(world, kitchen_scene, mon
     assert world.view().state == before and world.view().held == knife
     counter = kitchen_scene.object(knife).parent
     go_to(world, counter)
-    import luminous_sim.world.placement as placement
+    from luminous_sim.world import placement
 
     monkeypatch.setattr(placement, "sample_in_region", lambda *a, **k: None)  # no free spot anywhere:
     monkeypatch.setattr(placement, "scan_region", lambda *a, **k: iter(()))  # not by draws, nor by a scan
