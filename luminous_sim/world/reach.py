@@ -19,7 +19,7 @@ if TYPE_CHECKING:
 
 def type_of(state: WorldState, oid: str | None) -> str:
     """The object's type, or "" for an unknown id."""
-    return state.objects[oid].object_type if oid in state.objects else ""
+    return state.objects[oid].object_type if oid is not None and oid in state.objects else ""
 
 
 def interactable(state: WorldState, oid: str) -> bool:

@@ -8,7 +8,7 @@ every change goes through `World.step` (and scene set-up before the first step, 
 from __future__ import annotations
 
 from collections.abc import Callable
-from typing import TYPE_CHECKING, Any, Protocol
+from typing import TYPE_CHECKING, Any, Protocol, runtime_checkable
 
 import numpy as np
 
@@ -27,6 +27,7 @@ if TYPE_CHECKING:
 
     from luminous_sim.world.world import World
 
+@runtime_checkable
 class WorldView(Protocol):
     """Read-only access to a World (poses, containment, states, visibility, reachable poses, dry-run puts)."""
 
