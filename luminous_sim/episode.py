@@ -10,15 +10,17 @@ from pathlib import Path
 import numpy as np
 
 from luminous_sim.assets.objio import write_atomic
-from luminous_sim.planning.trajectory import Trajectory
+from luminous_sim.errors import FailureCode
+from luminous_sim.planning import Trajectory
 from luminous_sim.scene import Scene
-from luminous_sim.world.agent import AgentPose
+from luminous_sim.world import AgentPose
 
 TASK_REDRAWS = 3
 """Tasks redrawn when the sampled one cannot be done in this scene (ALFRED's generator drops those too)."""
-REDRAW_ON = ("cannot be reached", "no pose", "is full", "no plan found")
-"""Failures that say the task, not the oracle, is the problem: an object nobody can see, a receptacle
-with no room left."""
+REDRAW_ON = frozenset({FailureCode.GOAL_UNREACHABLE, FailureCode.NO_POSE, FailureCode.RECEPTACLE_FULL,
+                       FailureCode.PLAN_BUDGET})
+"""Failures that say the task, not the oracle, is the problem: a goal the planner proves impossible or
+finds no plan for in its budget, an object nobody can see, a receptacle with no room left."""
 
 
 @dataclass(frozen=True)
@@ -67,13 +69,12 @@ def write_video(frames: list[np.ndarray], path: Path, fps: int = 6) -> Path:
 def _prepared_world(scene: Scene, task_type: str):
     """The world as ALFRED sets a scene up for a task: for cleaning, everything dirtyable is dirty."""
     from luminous_sim.vocab import abilities
-    from luminous_sim.world.world import World
+    from luminous_sim.world import World
 
     world = World(scene)
     if task_type == "pick_clean_then_place_in_recep":
-        for oid, st in world.interactions.state.objects.items():
-            if abilities(st.object_type).dirtyable and abilities(st.object_type).pickupable:
-                world.interactions.set_dirty(oid, True)
+        world.set_up_dirty([oid for oid, st in world.view().state.objects.items()
+                            if abilities(st.object_type).dirtyable and abilities(st.object_type).pickupable])
     return world
 
 
@@ -81,9 +82,8 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
                 record_frames: bool = True, return_trajectory: bool = False):
     """Sample a `task_type` task in `scene`, solve it with the oracle, evaluate it, and write the files."""
     from luminous_sim.cdf.predicates import to_sexpr
-    from luminous_sim.language.instructions import Describer
-    from luminous_sim.planning.oracle import Oracle
-    from luminous_sim.planning.task_fit import draw_task
+    from luminous_sim.language import Describer
+    from luminous_sim.planning import Oracle, draw_task
     from luminous_sim.tasks.errors import TaskSamplingError
     from luminous_sim.tasks.evaluate import goal_conditions
     from luminous_sim.tasks.templates import task_description
@@ -93,30 +93,31 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
     unreachable: set[str] = set()
     full: set[str] = set()
     try:
-        task = draw_task(scene, world, task_type, rng)
+        task = draw_task(scene, world.view(), task_type, rng)
         start = world.agent
         traj = Oracle(world, record_frames=record_frames).run(task.goal)
         for _ in range(TASK_REDRAWS):  # ALFRED's generator also drops tasks its expert cannot do
-            if traj.success or not any(k in f for f in traj.failures for k in REDRAW_ON):
+            if traj.success or not REDRAW_ON.intersection(traj.failure_codes):
                 break
             unreachable.update(traj.unreachable)
             full.update(traj.full)
             fresh = _prepared_world(scene, task_type)
             try:
-                redrawn = draw_task(scene, fresh, task_type, rng, excluded=unreachable, full=full)
+                redrawn = draw_task(scene, fresh.view(), task_type, rng, excluded=unreachable, full=full)
             except TaskSamplingError:  # nothing else to draw: the failed episode stands
                 fresh.close()
                 break
             world.close()
             world, task = fresh, redrawn
             traj = Oracle(world, record_frames=record_frames).run(task.goal)
-        visible = set(world.visible_objects())
-        done, total = goal_conditions(task, world.interactions.state, visible)
+        view = world.view()
+        visible = set(view.visible_objects())
+        done, total = goal_conditions(task, view.state, visible)
         traj.goal_conditions = (done, total)
         traj.success = traj.success and done == total
-        text = Describer(world, rng).describe(traj, task_description(task, rng))
+        text = Describer(view, rng).describe(traj, task_description(task, rng))
         if out_dir is not None:
-            _write(Path(out_dir), scene, task, traj, text, start, world)
+            _write(Path(out_dir), scene, task, traj, text, start, view)
     finally:
         world.close()
     result = EpisodeResult(task_type, to_sexpr(task.goal), traj.success, (done, total), len(traj.low_actions),
@@ -124,9 +125,8 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
     return (result, traj) if return_trajectory else result
 
 
-def _write(out: Path, scene: Scene, task, traj: Trajectory, text, start: AgentPose, world) -> None:
+def _write(out: Path, scene: Scene, task, traj: Trajectory, text, start: AgentPose, view) -> None:
     from luminous_sim.assets.objio import png_bytes
-    from luminous_sim.world.views import top_down
 
     record = {
         "task": task.to_dict(), "task_desc": text.task_desc, "high_descs": text.high_descs,
@@ -140,6 +140,6 @@ def _write(out: Path, scene: Scene, task, traj: Trajectory, text, start: AgentPo
     if traj.frames:
         write_video(traj.frames, out / "video.mp4")
     path = np.array([[p.x, p.y] for p in poses_along(traj, start)])
-    write_atomic(out / "top_down.png", png_bytes(top_down(world.built, path=path)))
+    write_atomic(out / "top_down.png", png_bytes(view.top_down(path=path)))
     write_atomic(out / "instructions.txt", "\n".join([text.task_desc, ""] + text.high_descs) + "\n")
 

@@ -1,6 +1,90 @@
-"""The one error hierarchy. A user's bad input raises a subclass whose message names what is wrong and where."""
+"""The one error hierarchy, and the codes of failed actions and plans.
+
+A user's bad input raises a subclass whose message names what is wrong and where. An action or a plan
+that fails does not raise: it reports a `Failure`, a `FailureCode` for programs beside a message for
+people (the table of codes is in docs/failure_codes.md).
+"""
 
 from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import StrEnum
+
+
+class FailureCode(StrEnum):
+    """Why an action or a plan failed, for programs to branch on (the message is for people).
+
+    Values are stable lower-case strings, so they serialise as they are (an environment's `info`).
+    """
+
+    # the action itself
+    UNKNOWN_ACTION = "unknown_action"
+    """No such low-level action (or a planner-only action sent as a low-level one)."""
+    INVALID_ARGUMENT = "invalid_argument"
+    """Malformed or out-of-range arguments (a moveMagnitude other than 0.25, a non-numeric x, ...)."""
+    NO_TARGET = "no_target"
+    """The action names no object: no id given, or its mask or point hits nothing to interact with."""
+    UNKNOWN_OBJECT = "unknown_object"
+    """The object id is not in the scene."""
+    # navigation
+    BLOCKED = "blocked"
+    """The agent cannot go there (off the navigable grid), or an opening door would hit it."""
+    HORIZON_LIMIT = "horizon_limit"
+    """The camera may not tilt beyond -30..60 degrees."""
+    # reach
+    NOT_VISIBLE = "not_visible"
+    """The object is within reach but not in view."""
+    OUT_OF_REACH = "out_of_reach"
+    """The object is farther than the visibility distance (1.5 m)."""
+    # the object-state rules
+    NOT_PICKUPABLE = "not_pickupable"
+    NOT_OPENABLE = "not_openable"
+    NOT_TOGGLEABLE = "not_toggleable"
+    NOT_SLICEABLE = "not_sliceable"
+    NOT_A_RECEPTACLE = "not_a_receptacle"
+    HANDS_FULL = "hands_full"
+    """PickupObject while something is held."""
+    NOT_HOLDING = "not_holding"
+    """Nothing is held, or not the object the action names."""
+    CLOSED = "closed"
+    """The receptacle is closed (open it first)."""
+    SHUT_IN = "shut_in"
+    """The object is inside a closed receptacle."""
+    INCOMPATIBLE = "incompatible"
+    """The receptacle cannot take the object (compatibility table, itself, or inside what is held)."""
+    ALREADY_DONE = "already_done"
+    """The object is already open, closed, on, off or sliced."""
+    MUST_BE_CLOSED = "must_be_closed"
+    """A microwave is switched on only when closed."""
+    NEEDS_TOOL = "needs_tool"
+    """SliceObject needs a knife in hand."""
+    # placement
+    NO_SPOT_IN_REACH = "no_spot_in_reach"
+    """The receptacle has no open region within reach of the agent."""
+    RECEPTACLE_FULL = "receptacle_full"
+    """No free, stable spot for the object in the receptacle's regions within reach."""
+    # planning (the oracle)
+    GOAL_UNREACHABLE = "goal_unreachable"
+    """The planner proved the goal impossible in this state (a missing object, a forbidden place)."""
+    PLAN_BUDGET = "plan_budget"
+    """The planner found no plan within its time or node budget."""
+    NO_PLAN = "no_plan"
+    """The planner found no plan (search exhausted, or a plan failed its check)."""
+    NO_POSE = "no_pose"
+    """No standing pose sees the object within reach."""
+    NO_PATH = "no_path"
+    """No path on the navigation graph to the chosen pose."""
+
+
+@dataclass(frozen=True)
+class Failure:
+    """A failure's code and its message."""
+
+    code: FailureCode
+    message: str
+
+    def __str__(self) -> str:
+        return self.message
 
 
 class LuminousError(Exception):
@@ -27,7 +111,16 @@ class InfeasibleSceneError(LuminousError):
 
 
 class PlanningError(LuminousError):
-    """The oracle planner found no plan, or execution diverged beyond repair."""
+    """The oracle planner found no plan, or execution diverged beyond repair.
+
+    Args:
+        message: what went wrong, for people.
+        code: why, for programs (`FailureCode.NO_PLAN` unless said otherwise).
+    """
+
+    def __init__(self, message: str, code: FailureCode = FailureCode.NO_PLAN):
+        super().__init__(message)
+        self.code = code
 
 
 class RoomError(LuminousError):

@@ -14,9 +14,7 @@ from luminous_sim.cssg import Generated
 
 def write_scene_outputs(generated: Generated, out_dir: Path, physics: bool = True) -> dict:
     """Write the files for one generated scene into `out_dir`; returns the combined report."""
-    from luminous_sim.world.physics_check import check_physics
-    from luminous_sim.world.scene_builder import build_scene
-    from luminous_sim.world.views import egocentric, top_down
+    from luminous_sim.world import build_scene, check_physics, egocentric, top_down
 
     out_dir = Path(out_dir)
     scene = generated.scene
@@ -32,7 +30,7 @@ def write_scene_outputs(generated: Generated, out_dir: Path, physics: bool = Tru
             frame = egocentric(built, x, y, yaw, horizon_deg=15.0, width=400, height=300, fov=75)
             write_atomic(out_dir / "egocentric.png", png_bytes(frame.rgb))
     finally:
-        built.client.disconnect()
+        built.close()
     scene.save(out_dir / "scene.json")
     write_atomic(out_dir / "report.json", json.dumps(report, indent=1, sort_keys=True) + "\n")
     return report

@@ -1,1 +1,5 @@
-"""Layer L3: instructions for trajectories: templates (default) and a learned speaker."""
+"""Layer L3: instructions for trajectories: templates (default) and a learned speaker (`language.speaker`)."""
+
+from luminous_sim.language.instructions import Describer, Instructions
+
+__all__ = ["Describer", "Instructions"]

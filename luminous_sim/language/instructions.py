@@ -10,12 +10,12 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from luminous_sim.language.names import spoken
-from luminous_sim.scene.ids import type_of_id as type_of
 from luminous_sim.language.verbs import VERBS, colour_word, preposition
+from luminous_sim.scene.ids import type_of_id as type_of
 
 if TYPE_CHECKING:
     from luminous_sim.planning.trajectory import Trajectory
-    from luminous_sim.world.world import World
+    from luminous_sim.world import WorldView
 
 LANDMARK_TYPES = ("CounterTop", "Fridge", "Sink", "DiningTable", "Sofa", "Bed", "Desk", "Dresser", "Shelf",
                   "TVStand", "CoffeeTable", "SideTable", "Toilet", "Bathtub", "Cabinet", "Microwave", "Window",
@@ -54,17 +54,17 @@ def _segments(actions: list[str]) -> list[tuple[str, int]]:
 
 
 class Describer:
-    """Writes instructions for trajectories recorded in one world."""
+    """Writes instructions for trajectories recorded in one world (read through its view)."""
 
-    def __init__(self, world: World, rng: np.random.Generator):
-        self.world = world
+    def __init__(self, view: WorldView, rng: np.random.Generator):
+        self.view = view
         self.rng = rng
 
     def _pick(self, options) -> str:
         return options[int(self.rng.integers(len(options)))]
 
     def _position(self, object_id: str) -> np.ndarray | None:
-        o = next((x for x in self.world.scene.objects if x.id == object_id), None)
+        o = next((x for x in self.view.scene.objects if x.id == object_id), None)
         return None if o is None else np.array(o.position[:2])
 
     def landmark(self, object_id: str) -> str:
@@ -77,7 +77,7 @@ class Describer:
         if here is None:
             return name
         near = []
-        for o in self.world.scene.objects:
+        for o in self.view.scene.objects:
             if o.type in LANDMARK_TYPES and o.type != t and o.id != object_id and o.parent != object_id:
                 d = float(np.linalg.norm(np.array(o.position[:2]) - here))
                 if d < NEAR:
@@ -90,15 +90,10 @@ class Describer:
 
     def attribute(self, object_id: str) -> str:
         """A colour word for the object, sometimes (the paper's [verb] + [object] + [attribute])."""
-        loaded = self.world.built.objects.get(object_id)
-        if loaded is None or self.rng.random() < 0.5:
+        if object_id not in self.view.body_ids() or self.rng.random() < 0.5:
             return ""
-        from luminous_sim.world.asset_loader import main_slot
-
-        slot = main_slot(loaded.entry)
-        colour = next((c for (link, _), c in loaded.colors.items()
-                       for v in loaded.entry.visuals if v["slot"] == slot and v["link"] == link), None)
-        return f"{colour_word(tuple(colour[:3]))} " if colour else ""
+        colour = self.view.main_colour(object_id)
+        return f"{colour_word(colour)} " if colour else ""
 
     def goto(self, nav: list[str], target: str) -> str:
         segs = _segments(nav)
@@ -131,8 +126,7 @@ class Describer:
             device = spoken(type_of(args.get("receptacleObjectId", "")))
             return f"{self._pick(VERBS[action]).capitalize()} {obj} in the {device}."
         if action == "ToggleObject":
-            on = not self.world.interactions.state.objects.get(o) or \
-                self.world.interactions.state.objects[o].isToggled
+            on = not self.view.state.objects.get(o) or self.view.state.objects[o].isToggled
             return f"{self._pick(VERBS['ToggleObjectOn' if on else 'ToggleObjectOff']).capitalize()} {obj}."
         verbs = VERBS.get(action, (action.replace("Object", "").lower(),))
         return f"{self._pick(verbs).capitalize()} {obj}."

@@ -1,1 +1,45 @@
-"""Layer L3: symbolic planning, navigation and the oracle that turns tasks into trajectories."""
+"""Layer L3: symbolic planning, navigation and the oracle that turns tasks into trajectories.
+
+Public names are loaded on first use, so that the pure symbolic planner (`planning.symbolic`) can be
+imported without the simulator that the oracle drives.
+"""
+
+from __future__ import annotations
+
+from importlib import import_module
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from luminous_sim.planning.navigation import NavGraph, goto_actions, look_steps
+    from luminous_sim.planning.oracle import ExecutionError, Oracle, with_forbidden
+    from luminous_sim.planning.task_fit import draw_task, has_room, has_room_for_two, physically_feasible, unseeable
+    from luminous_sim.planning.trajectory import Trajectory
+
+_WHERE = {
+    "ExecutionError": "oracle", "Oracle": "oracle", "with_forbidden": "oracle",
+    "NavGraph": "navigation", "goto_actions": "navigation", "look_steps": "navigation",
+    "Trajectory": "trajectory",
+    "draw_task": "task_fit", "has_room": "task_fit", "has_room_for_two": "task_fit",
+    "physically_feasible": "task_fit", "unseeable": "task_fit",
+}
+
+__all__ = [
+    "ExecutionError",
+    "NavGraph",
+    "Oracle",
+    "Trajectory",
+    "draw_task",
+    "goto_actions",
+    "has_room",
+    "has_room_for_two",
+    "look_steps",
+    "physically_feasible",
+    "unseeable",
+    "with_forbidden",
+]
+
+
+def __getattr__(name: str) -> Any:
+    if name in _WHERE:
+        return getattr(import_module(f"luminous_sim.planning.{_WHERE[name]}"), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -8,8 +8,8 @@ from functools import cached_property
 
 import networkx as nx
 
+from luminous_sim.world import NavGrid
 from luminous_sim.world.agent import GRID, HORIZON_STEP, AgentPose
-from luminous_sim.world.navigation import NavGrid
 
 WALK_HORIZON = 45
 """ALFRED's planner walks with the camera 45 degrees down."""

@@ -10,29 +10,29 @@ from typing import Any
 import numpy as np
 
 from luminous_sim.cdf.predicates import And, Atom, Exists, Expr, Not
-from luminous_sim.errors import PlanningError
+from luminous_sim.errors import Failure, FailureCode, PlanningError
 from luminous_sim.planning.alfred_actions import interaction_api, nav_api, type_name
 from luminous_sim.planning.expand import Step, _gating_parent, expand
 from luminous_sim.planning.navigation import NavGraph, goto_actions
 from luminous_sim.planning.trajectory import Trajectory
 from luminous_sim.vocab import DISCRETE_NAVIGATION
-from luminous_sim.world.masks import interaction_args
-from luminous_sim.world.poses import find_interaction_pose
-from luminous_sim.world.world import World
+from luminous_sim.world import World, interaction_args
 
 MAX_REPLANS = 3
 PUT_CHECK_SEED = 7
 """Seed of the dry-run puts that judge standing poses (the world's own random stream is left alone)."""
 PLAN_TIMEOUT = 8.0
 """Seconds one (re)planning call may take; plans take milliseconds when the goal is reachable."""
+NO_ROOM = frozenset({FailureCode.RECEPTACLE_FULL, FailureCode.NO_SPOT_IN_REACH})
+"""Put failures that say the object did not fit: the next plan leaves it elsewhere."""
 
 
 class ExecutionError(PlanningError):
-    """A low-level action failed while executing the plan (the oracle replans)."""
+    """A low-level action failed while executing the plan (the oracle replans); `code` says why."""
 
-    def __init__(self, message: str, unreachable: str | None = None, full: tuple[str, str] | None = None,
-                 packed: bool = False):
-        super().__init__(message)
+    def __init__(self, message: str, code: FailureCode, unreachable: str | None = None,
+                 full: tuple[str, str] | None = None, packed: bool = False):
+        super().__init__(message, code)
         self.unreachable = unreachable
         """An object no pose can see: the next plan must do without it."""
         self.full = full
@@ -63,9 +63,10 @@ class Oracle:
 
     def __init__(self, world: World, record_frames: bool = True, max_replans: int = MAX_REPLANS):
         self.world = world
+        self.view = world.view()
         self.record_frames = record_frames
         self.max_replans = max_replans
-        self.graph = NavGraph(world.nav)
+        self.graph = NavGraph(self.view.nav)
 
     # ------------------------------------------------------------------ public
 
@@ -73,7 +74,7 @@ class Oracle:
         """Achieve `goal` from the world's current state; the trajectory says whether it succeeded."""
         from luminous_sim.planning.symbolic import solve
 
-        traj = Trajectory(init_action=self.world.agent.to_alfred())
+        traj = Trajectory(init_action=self.view.agent.to_alfred())
         self._frame(traj, high_idx=0, low_idx=0)
         excluded: set[str] = set()
         forbidden: list[Expr] = []
@@ -81,11 +82,9 @@ class Oracle:
             t0 = time.perf_counter()
             target = with_forbidden(goal, forbidden)
             try:
-                plan = solve(self.world.interactions.state.without(excluded), target, names=names,
-                             timeout=PLAN_TIMEOUT)
+                plan = solve(self.view.state.without(excluded), target, names=names, timeout=PLAN_TIMEOUT)
             except PlanningError as exc:
-                traj.failure = str(exc)
-                traj.failures.append(traj.failure)
+                traj.fail(Failure(exc.code, str(exc)))
                 break
             finally:
                 traj.planning_seconds += time.perf_counter() - t0
@@ -95,8 +94,7 @@ class Oracle:
                 break
             except ExecutionError as exc:
                 traj.replans = attempt + 1
-                traj.failure = str(exc)
-                traj.failures.append(traj.failure)
+                traj.fail(Failure(exc.code, str(exc)))
                 if exc.unreachable:
                     excluded.add(exc.unreachable)
                     traj.unreachable.append(exc.unreachable)
@@ -128,7 +126,7 @@ class Oracle:
             discrete = [type_name(self._next_object(actions, k) or target)]
             planner = {"action": "GotoLocation", "location": pose.location_string()}
         else:
-            state = self.world.interactions.state
+            state = self.view.state
             steps = expand(hl.action, hl.args, state, keep_open=nxt not in ("GotoLocation", "End"))
             for step in steps:
                 self._interact(step, high_idx, traj)
@@ -148,7 +146,7 @@ class Oracle:
 
     def _pose_target(self, object_id: str) -> str:
         """Where to stand for an object: the closed container it is in, if any."""
-        state = self.world.interactions.state
+        state = self.view.state
         gate = _gating_parent(state, object_id) if object_id in state.objects else None
         if gate is not None and not state.objects[gate].isOpen:
             return gate
@@ -167,47 +165,49 @@ class Oracle:
         has a free spot in reach (a crowded table may have room only on its far side)."""
         prefer = None
         if put is not None:
-            inter = self.world.interactions
+            view = self.view
 
             def prefer(pose) -> bool:
                 rng = np.random.default_rng(PUT_CHECK_SEED)
-                return not isinstance(inter.find_spot(*put, rng, assume_open=True, eye=pose.eye()), str)
-        pose = find_interaction_pose(self.world, self._pose_target(object_id), prefer=prefer)
+                return not isinstance(view.free_spot(*put, rng, assume_open=True, eye=pose.eye()), Failure)
+        pose = self.view.interaction_pose(self._pose_target(object_id), prefer=prefer)
         if pose is None:
-            raise ExecutionError(f"no pose from which {object_id} is visible within reach", unreachable=object_id)
+            raise ExecutionError(f"no pose from which {object_id} is visible within reach", FailureCode.NO_POSE,
+                                 unreachable=object_id)
         try:
-            steps = goto_actions(self.graph, self.world.agent, pose)
+            steps = goto_actions(self.graph, self.view.agent, pose)
         except Exception as exc:  # networkx.NetworkXNoPath
-            raise ExecutionError(f"no path to {object_id}: {exc}") from exc
+            raise ExecutionError(f"no path to {object_id}: {exc}", FailureCode.NO_PATH) from exc
         for a in steps:
             self._low(nav_api(a), {"action": DISCRETE_NAVIGATION[a], "args": {}}, high_idx, traj)
         return pose
 
     def _interact(self, step: Step, high_idx: int, traj: Trajectory) -> None:
         look_at = step.receptacle_id or step.object_id
-        inter = self.world.interactions
-        if look_at not in self.world.visible_objects() and inter.open_container_in_view(look_at) is None:
+        view = self.view
+        if look_at not in view.visible_objects() and view.open_container_in_view(look_at) is None:
             self._goto(look_at, high_idx, traj)  # e.g. an apple that an opened door revealed elsewhere
-        masks = self.world.instance_masks()
+        masks = view.instance_masks()
         mask = masks.get(look_at)
-        if mask is None or mask.sum() < self.world.config.min_visible_pixels:
-            container = inter.open_container_in_view(look_at)
+        if mask is None or mask.sum() < view.config.min_visible_pixels:
+            container = view.open_container_in_view(look_at)
             mask = masks.get(container) if container else mask  # the open container it is taken from
         if mask is None:
-            raise ExecutionError(f"{look_at} is not visible for {step.action}")
+            raise ExecutionError(f"{look_at} is not visible for {step.action}", FailureCode.NOT_VISIBLE)
         api = interaction_api(step.action, step.object_id, step.receptacle_id)
         self._low(api, {"action": step.action, "args": interaction_args(mask)}, high_idx, traj)
 
     def _low(self, api: dict[str, Any], discrete: dict[str, Any], high_idx: int, traj: Trajectory) -> None:
         result = self.world.step(api)
         if not result.success:
+            assert result.code is not None  # every failed StepResult has one
             full = (api["objectId"], api["receptacleObjectId"]) if api["action"] == "PutObject" and (
-                "full" in result.error or "no place" in result.error) else None
-            raise ExecutionError(f"{api['action']} failed: {result.error}", full=full,
-                                 packed=full is not None and "is full" in result.error)
+                result.code in NO_ROOM) else None
+            raise ExecutionError(f"{api['action']} failed: {result.error}", result.code, full=full,
+                                 packed=full is not None and result.code == FailureCode.RECEPTACLE_FULL)
         traj.low_actions.append({"api_action": api, "discrete_action": discrete, "high_idx": high_idx})
         self._frame(traj, high_idx, len(traj.low_actions) - 1)
 
     def _frame(self, traj: Trajectory, high_idx: int, low_idx: int) -> None:
         if self.record_frames:
-            traj.add_frame(self.world.frame().rgb.copy(), high_idx, low_idx)
+            traj.add_frame(self.view.frame().rgb.copy(), high_idx, low_idx)

@@ -11,12 +11,12 @@ from collections.abc import Iterable
 
 import numpy as np
 
+from luminous_sim.errors import Failure
 from luminous_sim.scene import Scene
 from luminous_sim.tasks.model import PddlParams, TaskInstance
 from luminous_sim.tasks.sample import sample_task
 from luminous_sim.vocab import HANGERS, parent_type
-from luminous_sim.world.sightlines import unseen
-from luminous_sim.world.world import World
+from luminous_sim.world import WorldView
 
 SPOT_SEED = 2024
 """Seed of the dry-run placements (kept apart from the world's own random stream)."""
@@ -30,12 +30,12 @@ def _hosts(state, receptacle_type: str, full: Iterable[str]) -> list[str] | None
     return None if every and not hosts else hosts
 
 
-def has_room(world: World, object_type: str, receptacle_type: str, excluded: Iterable[str] = (),
+def has_room(view: WorldView, object_type: str, receptacle_type: str, excluded: Iterable[str] = (),
              full: Iterable[str] = ()) -> bool:
     """Whether some object of `object_type` has a free, stable spot in some `receptacle_type` now
     (doors counted as open), other than the `full` ones (a put found no room there). Slices that do
     not exist yet are stood in for by their whole."""
-    state = world.interactions.state.without(set(excluded))
+    state = view.state.without(set(excluded))
     objs = state.of_type(object_type) or state.of_type(parent_type(object_type) or "")
     hosts = _hosts(state, receptacle_type, full)
     if hosts is None:
@@ -43,16 +43,16 @@ def has_room(world: World, object_type: str, receptacle_type: str, excluded: Ite
     if receptacle_type in HANGERS or not objs or not hosts:
         return True
     rng = np.random.default_rng(SPOT_SEED)
-    return any(not isinstance(world.interactions.find_spot(o, h, rng, assume_open=True), str)
+    return any(not isinstance(view.free_spot(o, h, rng, assume_open=True), Failure)
                for o in objs for h in hosts if o != h)
 
 
-def has_room_for_two(world: World, object_type: str, receptacle_type: str, excluded: Iterable[str] = (),
+def has_room_for_two(view: WorldView, object_type: str, receptacle_type: str, excluded: Iterable[str] = (),
                      full: Iterable[str] = ()) -> bool:
     """Whether two different objects of `object_type` both have a free, stable spot in one
     `receptacle_type` other than the `full` ones (the second beside the first), doors counted as open.
     Two slices that do not exist yet fit where their whole does: they are pieces of it."""
-    state = world.interactions.state.without(set(excluded))
+    state = view.state.without(set(excluded))
     objs = state.of_type(object_type)
     hosts = _hosts(state, receptacle_type, full)
     if hosts is None:
@@ -60,56 +60,54 @@ def has_room_for_two(world: World, object_type: str, receptacle_type: str, exclu
     if receptacle_type in HANGERS or not hosts:
         return True
     if not objs and state.of_type(parent_type(object_type) or ""):
-        return has_room(world, object_type, receptacle_type, excluded, full)
+        return has_room(view, object_type, receptacle_type, excluded, full)
     rng = np.random.default_rng(SPOT_SEED)
-    find = world.interactions.find_spot
+    find = view.free_spot
     for h in hosts:
         for i, a in enumerate(objs):
             first = find(a, h, rng, assume_open=True)
-            if isinstance(first, str):
+            if isinstance(first, Failure):
                 continue
-            if any(not isinstance(find(b, h, rng, assume_open=True, also=((a, first),)), str)
+            if any(not isinstance(find(b, h, rng, assume_open=True, also=((a, first),)), Failure)
                    for b in objs[i + 1:] if b != h):
                 return True
     return False
 
 
-def physically_feasible(world: World, params: PddlParams, excluded: Iterable[str] = (), two: bool = False,
+def physically_feasible(view: WorldView, params: PddlParams, excluded: Iterable[str] = (), two: bool = False,
                         full: Iterable[str] = ()) -> bool:
     """The task's object (or its movable receptacle) has room in the target receptacle (`two` of them,
     for pick_two_obj_and_place), and the object has room in its movable receptacle; receptacles a put
     already found `full` do not count."""
     obj = params.object_target + ("Sliced" if params.object_sliced else "")
     inner = params.mrecep_target or obj
-    if params.parent_target and not has_room(world, inner, params.parent_target, excluded, full):
+    if params.parent_target and not has_room(view, inner, params.parent_target, excluded, full):
         return False
-    if two and params.parent_target and not has_room_for_two(world, inner, params.parent_target, excluded, full):
+    if two and params.parent_target and not has_room_for_two(view, inner, params.parent_target, excluded, full):
         return False
-    return not (params.mrecep_target and not has_room(world, obj, params.mrecep_target, excluded, full))
+    return not (params.mrecep_target and not has_room(view, obj, params.mrecep_target, excluded, full))
 
 
-def unseeable(world: World) -> set[str]:
+def unseeable(view: WorldView) -> set[str]:
     """Objects to interact with that no sight line from a reachable pose meets (for one in a closed
     container, the container is what must be seen): tasks leave them out, as ALFRED's generator drops
     what its expert cannot reach."""
-    bodies = {oid: lo.body for oid, lo in world.built.objects.items()}
-    return unseen(world.client, world.interactions.state, bodies, world.nav.points(),
-                  world.config.visibility_distance)
+    return view.unseeable()
 
 
-def draw_task(scene: Scene, world: World, task_type: str, rng: np.random.Generator,
+def draw_task(scene: Scene, view: WorldView, task_type: str, rng: np.random.Generator,
               excluded: Iterable[str] = (), full: Iterable[str] = ()) -> TaskInstance:
     """A feasible task of `task_type` that the world can physically support, leaving out objects no
     one can see and `excluded` ones (the oracle found no pose to see them), and putting nothing in the
     `full` receptacles (a put found no room there). Raises TaskSamplingError when there is none."""
-    excluded = set(excluded) | unseeable(world)
+    excluded = set(excluded) | unseeable(view)
     verdict: dict[tuple, bool] = {}
 
     def fits(p: PddlParams) -> bool:
         key = (p.object_target, p.object_sliced, p.mrecep_target, p.parent_target)
         if key not in verdict:
-            verdict[key] = physically_feasible(world, p, excluded, two=task_type == "pick_two_obj_and_place",
+            verdict[key] = physically_feasible(view, p, excluded, two=task_type == "pick_two_obj_and_place",
                                                full=full)
         return verdict[key]
 
-    return sample_task(scene, world.interactions.state.without(excluded), task_type, rng, keep=fits)
+    return sample_task(scene, view.state.without(excluded), task_type, rng, keep=fits)

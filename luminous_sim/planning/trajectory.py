@@ -8,6 +8,8 @@ from typing import Any
 
 import numpy as np
 
+from luminous_sim.errors import Failure, FailureCode
+
 
 @dataclass
 class Trajectory:
@@ -23,15 +25,25 @@ class Trajectory:
     replans: int = 0
     planning_seconds: float = 0.0
     failure: str = ""
+    failure_code: FailureCode | None = None
+    """The last failure's code (None when nothing failed)."""
     failed_subgoals: list[str] = field(default_factory=list)
     """High-level action types whose execution failed (before a replan)."""
     failures: list[str] = field(default_factory=list)
     """Why each failed attempt failed, in order."""
+    failure_codes: list[FailureCode] = field(default_factory=list)
+    """The code of each of `failures`."""
     unreachable: list[str] = field(default_factory=list)
     """Objects no pose could see (left out of later plans, and of later task draws)."""
     full: list[str] = field(default_factory=list)
     """Receptacles a put found full, with no free spot at all (no later task draw asks to put things
     there); not those with room only out of reach from where the agent stood."""
+
+    def fail(self, failure: Failure) -> None:
+        """Record that an attempt failed, and why."""
+        self.failure, self.failure_code = failure.message, failure.code
+        self.failures.append(failure.message)
+        self.failure_codes.append(failure.code)
 
     def add_frame(self, rgb: np.ndarray | None, high_idx: int, low_idx: int) -> None:
         if rgb is None:

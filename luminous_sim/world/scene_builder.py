@@ -34,6 +34,10 @@ class BuiltScene:
     def body_of(self, object_id: str) -> int:
         return self.objects[object_id].body
 
+    def close(self) -> None:
+        """Disconnect the scene's PyBullet client."""
+        self.client.disconnect()
+
     def pose_of(self, object_id: str) -> tuple[np.ndarray, float]:
         """Base-link position and yaw of an object now."""
         pos, orn = base_link_pose(self.client, self.objects[object_id].body)

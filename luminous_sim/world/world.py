@@ -6,47 +6,24 @@ it was (lastActionSuccess false, errorMessage set), as AI2-THOR does.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
-from typing import Any, Literal
+from collections.abc import Iterable
+from typing import Any
 
 import numpy as np
 
 from luminous_sim.assets.catalog import Catalog, default_catalog
+from luminous_sim.errors import FailureCode
 from luminous_sim.scene.model import Scene
+from luminous_sim.vocab import AGENT_ACTIONS, INTERACTION_ACTIONS, TELEPORT_ACTIONS
 from luminous_sim.world.agent import AgentPose
 from luminous_sim.world.camera import Frame, render
 from luminous_sim.world.client import body_aabb
+from luminous_sim.world.config import WorldConfig
+from luminous_sim.world.interaction import Interactions
 from luminous_sim.world.navigation import NavGrid
+from luminous_sim.world.results import StepResult
 from luminous_sim.world.scene_builder import BuiltScene, build_scene
-
-NAVIGATION = ("MoveAhead", "RotateLeft", "RotateRight", "LookUp", "LookDown", "Teleport", "TeleportFull", "Pass",
-              "NoOp")
-INTERACTION = ("PickupObject", "PutObject", "OpenObject", "CloseObject", "ToggleObjectOn", "ToggleObjectOff",
-               "SliceObject")
-
-
-@dataclass(frozen=True)
-class WorldConfig:
-    """Sensor and agent settings (ALFRED's by default)."""
-
-    width: int = 300
-    height: int = 300
-    fov: float = 60.0
-    render: bool = True
-    renderer: Literal["auto", "tiny", "egl"] = "auto"
-    visibility_distance: float = 1.5
-    min_visible_pixels: int = 10
-    settle_steps: int = 240
-    interaction_steps: int = 60
-
-
-@dataclass(frozen=True)
-class StepResult:
-    """What AI2-THOR reports after an action."""
-
-    success: bool
-    error: str = ""
-    action: dict[str, Any] = field(default_factory=dict)
+from luminous_sim.world.view import LiveView, WorldView
 
 
 def _action_dict(action: str | dict[str, Any], kwargs: dict[str, Any]) -> dict[str, Any]:
@@ -74,9 +51,13 @@ class World:
         self.agent = agent or self.default_start()
         self._frame: Frame | None = None
         self.last = StepResult(True, "", {"action": "Initialize"})
-        from luminous_sim.world.interaction import Interactions
-
         self.interactions = Interactions(self)
+        self._view = LiveView(self)
+        self._started = False
+
+    def view(self) -> WorldView:
+        """The world's read-only face: states, poses, visibility, reachable poses, dry-run puts."""
+        return self._view
 
     # ------------------------------------------------------------------ life cycle
 
@@ -90,6 +71,17 @@ class World:
 
     def __exit__(self, *exc: object) -> None:
         self.close()
+
+    def set_up_dirty(self, object_ids: Iterable[str]) -> None:
+        """Scene set-up before the first action: make these objects dirty (pure state and visuals), as
+        ALFRED's `dirty_and_empty` initialisation does for a cleaning task. Not an action: it raises
+        once the episode has started (ids that are not objects in the world are skipped)."""
+        if self._started:
+            from luminous_sim.errors import LuminousError
+
+            raise LuminousError("set_up_dirty is scene set-up: call it before the first World.step")
+        for oid in object_ids:
+            self.interactions.set_dirty(oid, True)
 
     def default_start(self) -> AgentPose:
         """The reachable point nearest the room's centre, facing north, looking 30 degrees down."""
@@ -108,21 +100,22 @@ class World:
         """Run one low-level action (a name or an ALFRED api_action dict); never raises on bad input."""
         act = _action_dict(action, kwargs)
         name = act["action"]
+        self._started = True
         try:
-            if name in NAVIGATION:
+            if name in AGENT_ACTIONS:
                 result = self._navigate(name, act)
                 if result.success and self.interactions.held:
                     self.interactions.carry(self.interactions.held)
-            elif name in INTERACTION:
+            elif name in INTERACTION_ACTIONS:
                 result = self.interactions.run(name, act)
             else:
-                result = StepResult(False, f"unknown action {name!r}; expected one of "
-                                           f"{', '.join(NAVIGATION + INTERACTION)}", act)
+                result = StepResult.fail(FailureCode.UNKNOWN_ACTION, f"unknown action {name!r}; expected one of "
+                                         f"{', '.join(AGENT_ACTIONS + INTERACTION_ACTIONS)}", act)
         except (KeyError, ValueError, TypeError) as exc:  # malformed arguments from an agent
-            result = StepResult(False, f"invalid arguments for {name}: {exc}", act)
+            result = StepResult.fail(FailureCode.INVALID_ARGUMENT, f"invalid arguments for {name}: {exc}", act)
         if result.success:
             self._frame = None
-        self.last = StepResult(result.success, result.error, act)
+        self.last = StepResult(result.success, result.error, act, result.code)
         return self.last
 
     def _navigate(self, name: str, act: dict[str, Any]) -> StepResult:
@@ -130,29 +123,33 @@ class World:
         if name == "MoveAhead":
             magnitude = float(act.get("moveMagnitude", 0.25))
             if abs(magnitude - 0.25) > 1e-6:
-                return StepResult(False, "MoveAhead moves 0.25 m (moveMagnitude must be 0.25)", act)
+                return StepResult.fail(FailureCode.INVALID_ARGUMENT,
+                                       "MoveAhead moves 0.25 m (moveMagnitude must be 0.25)", act)
             if not self.nav.can_move(pose):
-                return StepResult(False, "blocked: MoveAhead would leave the navigable floor or hit something", act)
+                return StepResult.fail(FailureCode.BLOCKED,
+                                       "blocked: MoveAhead would leave the navigable floor or hit something", act)
             self.agent = pose.moved()
         elif name in ("RotateLeft", "RotateRight"):
             self.agent = pose.rotated(-1 if name == "RotateLeft" else 1)
         elif name in ("LookUp", "LookDown"):
             looked = pose.looked(-1 if name == "LookUp" else 1)
             if looked is None:
-                return StepResult(False, f"{name}: the horizon must stay within -30..60 degrees", act)
+                return StepResult.fail(FailureCode.HORIZON_LIMIT, f"{name}: the horizon must stay within -30..60 degrees",
+                                       act)
             self.agent = looked
-        elif name in ("Teleport", "TeleportFull"):
+        elif name in TELEPORT_ACTIONS:
             x, y = float(act["x"]), float(act["z"] if "z" in act else act["y"])
             rot = int(act.get("rotation", pose.rotation)) % 360
             hor = int(act.get("horizon", pose.horizon))
             target = AgentPose(round(x, 4), round(y, 4), rot, hor)
             if rot % 90 or hor % 15 or not -30 <= hor <= 60:
-                return StepResult(False, "Teleport needs a rotation in 0/90/180/270 and a horizon in -30..60 (15s)",
-                                  act)
+                return StepResult.fail(FailureCode.INVALID_ARGUMENT,
+                                       "Teleport needs a rotation in 0/90/180/270 and a horizon in -30..60 (15s)", act)
             if target.grid_key() not in self.nav:
-                return StepResult(False, f"Teleport target ({x}, {y}) is not on the navigable grid", act)
+                return StepResult.fail(FailureCode.BLOCKED, f"Teleport target ({x}, {y}) is not on the navigable grid",
+                                       act)
             self.agent = target
-        return StepResult(True, "", act)
+        return StepResult.ok(act)
 
     # ------------------------------------------------------------------ sensing
 
@@ -189,10 +186,8 @@ class World:
         return {oid: bbox_from_mask(m) for oid, m in self.instance_masks().items()}
 
     def top_down(self):
-        """A labelled top-down map image of the room as it is now (PIL image)."""
-        from luminous_sim.world.views import top_down
-
-        return top_down(self.built, grid=self.nav.points())
+        """A labelled top-down map image of the room as it is now, with the reachable grid (PIL image)."""
+        return self._view.top_down(grid=True)
 
     def object_distance(self, object_id: str) -> float:
         """Distance from the camera to the object's nearest point (AABB), as AI2-THOR measures it."""

@@ -8,7 +8,7 @@ from typing import Any
 import pytest
 import yaml
 
-from luminous_sim.cdf import ChallengeDefinition, CDFValidationError, from_document, loads
+from luminous_sim.cdf import CDFValidationError, ChallengeDefinition, from_document, loads
 from luminous_sim.errors import CDFError
 from tests.cdf.helpers import BASE, base, rel
 

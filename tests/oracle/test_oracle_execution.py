@@ -8,13 +8,12 @@ from dataclasses import dataclass, field
 import numpy as np
 import pytest
 
-from luminous_sim.language.instructions import Describer, _segments
+from luminous_sim.errors import FailureCode
+from luminous_sim.language import Describer
+from luminous_sim.language.instructions import _segments
+from luminous_sim.planning import ExecutionError, NavGraph, Oracle, Trajectory, goto_actions, look_steps
 from luminous_sim.planning.alfred_actions import type_name
-from luminous_sim.planning.navigation import NavGraph, goto_actions, look_steps
-from luminous_sim.planning.oracle import ExecutionError, Oracle
-from luminous_sim.planning.trajectory import Trajectory
-from luminous_sim.world.agent import AgentPose
-from luminous_sim.world.masks import rle_to_mask
+from luminous_sim.world import AgentPose, rle_to_mask
 from tests.world.conftest import obj
 
 
@@ -48,7 +47,7 @@ def test_pick_and_place_in_fridge_with_alfred_records(world, kitchen_scene):
             HL("GotoLocation", {"objectId": fridge}),
             HL("PutObject", {"objectId": apple, "receptacleObjectId": fridge})]
     oracle._execute(plan, traj)
-    state = world.interactions.state
+    state = world.view().state
     assert state.objects[apple].parent == fridge and not state.objects[fridge].isOpen
     assert apple in state.cooled  # closing the fridge after the put cools what is inside, as in ALFRED
     names = [a["discrete_action"]["action"] for a in traj.low_actions]
@@ -66,7 +65,7 @@ def test_pick_and_place_in_fridge_with_alfred_records(world, kitchen_scene):
     assert all(a["high_idx"] in (0, 1, 2, 3) for a in traj.low_actions)
     assert [a["high_idx"] for a in traj.low_actions] == sorted(a["high_idx"] for a in traj.low_actions)
     assert len(traj.frames) == len(traj.low_actions) and traj.frames[0].shape == (300, 300, 3)
-    text = Describer(world, np.random.default_rng(1)).describe(traj, "put an apple in the fridge")
+    text = Describer(world.view(), np.random.default_rng(1)).describe(traj, "put an apple in the fridge")
     assert len(text.high_descs) == 4 and "fridge" in text.high_descs[2] and "apple" in text.high_descs[1]
 
 
@@ -80,14 +79,15 @@ def test_heat_expansion_runs_alfreds_sequence(world, kitchen_scene):
             if a["high_idx"] == 3 and not a["discrete_action"]["action"].endswith(("_15", "_25", "_90"))]
     assert heat == ["OpenObject", "PutObject", "CloseObject", "ToggleObjectOn", "ToggleObjectOff", "OpenObject",
                     "PickupObject", "CloseObject"]
-    assert mug in world.interactions.state.heated and world.interactions.held == mug
+    assert mug in world.view().state.heated and world.view().held == mug
 
 
 def test_a_failing_step_raises_for_replanning(world, kitchen_scene):
     apple = obj(kitchen_scene, "apple")
-    with pytest.raises(ExecutionError, match="OpenObject failed|not openable"):
+    with pytest.raises(ExecutionError, match="OpenObject failed|not openable") as failed:
         Oracle(world)._execute([HL("GotoLocation", {"objectId": apple}), HL("OpenObject", {"objectId": apple})],
                                Trajectory(init_action={}))
+    assert failed.value.code == FailureCode.NOT_OPENABLE
 
 
 def test_navigation_sentences_and_names():

@@ -58,11 +58,15 @@ def check_world(world) -> list[str]:
 def fuzz(world, steps: int, seed: int) -> dict:
     rng = np.random.default_rng(seed)
     ok = 0
+    codes: dict = {}
     for i in range(steps):
         result = world.step(random_action(world, rng))
         ok += result.success
         assert isinstance(result.error, str) and (result.success or result.error)
+        assert result.success == (result.code is None), f"step {i}: a failure without a code: {result}"
+        if result.code is not None:
+            codes[result.code] = codes.get(result.code, 0) + 1
         if i % 50 == 0 or i == steps - 1:
             problems = check_world(world)
             assert not problems, f"step {i}: {problems}"
-    return {"steps": steps, "succeeded": ok}
+    return {"steps": steps, "succeeded": ok, "codes": codes}

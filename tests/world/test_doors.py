@@ -44,7 +44,7 @@ def test_open_refused_when_the_door_would_hit_the_agent(world, kitchen_scene):
             if fridge in world.visible_objects():
                 r = world.step({"action": "OpenObject", "objectId": fridge})
                 assert not r.success and "hit the agent" in r.error
-                assert not world.interactions.state.objects[fridge].isOpen
+                assert not world.view().state.objects[fridge].isOpen
                 refused = True
                 break
         if refused:

@@ -5,7 +5,7 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from luminous_sim.world.masks import interaction_args
+from luminous_sim.world import FailureCode, interaction_args
 from luminous_sim.world.poses import find_interaction_pose
 from tests.world.conftest import obj
 
@@ -20,7 +20,7 @@ def go_to(world, object_id: str) -> None:
 
 
 def state(world, object_id: str):
-    return world.interactions.state.objects[object_id]
+    return world.view().state.objects[object_id]
 
 
 def test_pickup_and_hand_full(world, kitchen_scene):
@@ -28,7 +28,7 @@ def test_pickup_and_hand_full(world, kitchen_scene):
     go_to(world, apple)
     r = world.step({"action": "PickupObject", "objectId": apple})
     assert r.success, r.error
-    assert world.interactions.held == apple and state(world, apple).isPickedUp and state(world, apple).parent is None
+    assert world.view().held == apple and state(world, apple).isPickedUp and state(world, apple).parent is None
     md = world.metadata()
     assert md["inventoryObjects"][0]["objectId"] == apple and md["lastActionSuccess"]
     go_to(world, mug)
@@ -38,7 +38,7 @@ def test_pickup_and_hand_full(world, kitchen_scene):
 
 def test_invalid_interactions_fail_without_changing_anything(world, kitchen_scene):
     apple = obj(kitchen_scene, "apple")
-    before = world.interactions.state
+    before = world.view().state
     for action in [{"action": "PickupObject", "objectId": "Unicorn|+0|+0|+0"},
                    {"action": "PutObject", "receptacleObjectId": apple},
                    {"action": "OpenObject", "objectId": apple},
@@ -46,7 +46,7 @@ def test_invalid_interactions_fail_without_changing_anything(world, kitchen_scen
                    {"action": "SliceObject", "objectId": apple}]:
         r = world.step(action)
         assert not r.success and r.error, action
-    assert world.interactions.state == before
+    assert world.view().state == before
 
 
 def test_far_objects_cannot_be_touched(world, kitchen_scene):
@@ -69,17 +69,17 @@ def test_cool_in_fridge_and_put_rules(world, kitchen_scene):
     assert world.step({"action": "OpenObject", "objectId": fridge}).success and state(world, fridge).isOpen
     r = world.step({"action": "PutObject", "objectId": apple, "receptacleObjectId": fridge})
     assert r.success, r.error
-    assert state(world, apple).parent == fridge and world.interactions.held is None
-    assert apple not in world.interactions.state.cooled
+    assert state(world, apple).parent == fridge and world.view().held is None
+    assert apple not in world.view().state.cooled
     assert world.step({"action": "CloseObject", "objectId": fridge}).success
-    assert apple in world.interactions.state.cooled and state(world, apple).temperature == "Cold"
+    assert apple in world.view().state.cooled and state(world, apple).temperature == "Cold"
     pos = world.built.pose_of(apple)[0]
     lo, hi = map(np.array, world.client.getAABB(world.built.objects[fridge].body, -1))
     assert np.all(pos >= lo - 0.01) and np.all(pos <= hi + 0.01), "the apple is physically in the fridge"
     assert not world.step({"action": "PickupObject", "objectId": apple}).success  # shut in the fridge
     assert world.step({"action": "OpenObject", "objectId": fridge}).success
     near = world.object_distance(apple) <= world.config.visibility_distance
-    assert (world.interactions.open_container_in_view(apple) == fridge) == near
+    assert (world.view().open_container_in_view(apple) == fridge) == near
     r = world.step({"action": "PickupObject", "objectId": apple})
     assert r.success == near, r.error  # out of the open fridge in view, if it is within 1.5 m
 
@@ -96,7 +96,7 @@ def test_heat_in_microwave(world, kitchen_scene):
     assert not r.success and "closed" in r.error  # a microwave runs only when closed
     assert world.step({"action": "CloseObject", "objectId": micro}).success
     assert world.step({"action": "ToggleObjectOn", "objectId": micro}).success
-    assert mug in world.interactions.state.heated and state(world, mug).temperature == "Hot"
+    assert mug in world.view().state.heated and state(world, mug).temperature == "Hot"
     assert not world.step({"action": "ToggleObjectOn", "objectId": micro}).success  # already on
 
 
@@ -112,7 +112,7 @@ def test_clean_in_sink(world, kitchen_scene):
     assert r.success, r.error
     go_to(world, faucet)
     assert world.step({"action": "ToggleObjectOn", "objectId": faucet}).success
-    assert not state(world, mug).isDirty and mug in world.interactions.state.cleaned
+    assert not state(world, mug).isDirty and mug in world.view().state.cleaned
 
 
 def test_slice_with_a_knife(world, kitchen_scene):
@@ -125,8 +125,8 @@ def test_slice_with_a_knife(world, kitchen_scene):
     go_to(world, apple)
     r = world.step({"action": "SliceObject", "objectId": apple})
     assert r.success, r.error
-    slices = [o for o in world.interactions.state.objects if o.startswith(apple + "|AppleSliced_")]
-    assert len(slices) >= 2 and apple not in world.interactions.state.objects
+    slices = [o for o in world.view().state.objects if o.startswith(apple + "|AppleSliced_")]
+    assert len(slices) >= 2 and apple not in world.view().state.objects
     assert all(s in world.built.objects for s in slices) and apple not in world.built.objects
     assert all(world.built.pose_of(s)[0][2] > 0.5 for s in slices), "slices stay on the counter"
 
@@ -163,19 +163,19 @@ def test_put_refuses_incompatible_and_full_receptacles(world, kitchen_scene, mon
     assert world.step({"action": "PickupObject", "objectId": knife}).success
     go_to(world, micro)
     assert world.step({"action": "OpenObject", "objectId": micro}).success
-    before = world.interactions.state
+    before = world.view().state
     r = world.step({"action": "PutObject", "objectId": knife, "receptacleObjectId": micro})
-    assert not r.success and "compatib" in r.error  # a knife never goes in a microwave in ALFRED
-    assert world.interactions.state == before and world.interactions.held == knife
+    assert not r.success and "compatib" in r.error and r.code == FailureCode.INCOMPATIBLE  # a knife never goes in a microwave in ALFRED
+    assert world.view().state == before and world.view().held == knife
     counter = kitchen_scene.object(knife).parent
     go_to(world, counter)
-    import luminous_sim.world.interaction as interaction
+    from luminous_sim.world import placement
 
-    monkeypatch.setattr(interaction, "sample_in_region", lambda *a, **k: None)  # no free spot anywhere:
-    monkeypatch.setattr(interaction, "scan_region", lambda *a, **k: iter(()))  # not by draws, nor by a scan
+    monkeypatch.setattr(placement, "sample_in_region", lambda *a, **k: None)  # no free spot anywhere:
+    monkeypatch.setattr(placement, "scan_region", lambda *a, **k: iter(()))  # not by draws, nor by a scan
     r = world.step({"action": "PutObject", "objectId": knife, "receptacleObjectId": counter})
-    assert not r.success and "full" in r.error
-    assert world.interactions.held == knife and state(world, knife).parent is None
+    assert not r.success and "full" in r.error and r.code == FailureCode.RECEPTACLE_FULL
+    assert world.view().held == knife and state(world, knife).parent is None
 
 
 def test_target_by_mask_and_point(world, kitchen_scene):
@@ -184,7 +184,7 @@ def test_target_by_mask_and_point(world, kitchen_scene):
     mask = world.instance_masks()[apple]
     args = interaction_args(mask)
     r = world.step({"action": "PickupObject", "mask": args["mask"]})
-    assert r.success and world.interactions.held == apple, r.error
+    assert r.success and world.view().held == apple, r.error
 
 
 @pytest.mark.parametrize("action", ["OpenObject", "ToggleObjectOn"])

@@ -14,7 +14,7 @@ import time
 from collections.abc import Mapping
 
 from luminous_sim.cdf.predicates import And, Expr
-from luminous_sim.errors import PlanningError
+from luminous_sim.errors import FailureCode, PlanningError
 from luminous_sim.planning.symbolic.actions import HighLevelAction, Plan
 from luminous_sim.planning.symbolic.heuristic import Estimator
 from luminous_sim.planning.symbolic.macros import try_action
@@ -76,7 +76,9 @@ def solve(
     est = Estimator(prepared, names, movable_types)
     if est(state, at) == float("inf"):
         reasons = list(dict.fromkeys(est.reasons))[:3] or ["unsatisfiable"]
-        raise PlanningError(f"the goal cannot be reached: {'; '.join(reasons)}")
+        raise PlanningError(
+            f"the goal cannot be reached: {'; '.join(reasons)}", FailureCode.GOAL_UNREACHABLE
+        )
     if holds(prepared, state, at, names):
         return Plan([], 0.0, 0, time.perf_counter() - t0, backend)
     if backend != "astar":
@@ -109,7 +111,8 @@ def solve(
         if not result.exhausted:
             raise PlanningError(
                 f"no plan found within the budget ({expanded} nodes expanded, "
-                f"{time.perf_counter() - t0:.1f} s)"
+                f"{time.perf_counter() - t0:.1f} s)",
+                FailureCode.PLAN_BUDGET,
             )
     raise PlanningError(f"no plan reaches the goal (searched {expanded} states)")
 
