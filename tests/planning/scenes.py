@@ -4,48 +4,24 @@ from __future__ import annotations
 
 from typing import Any
 
-from luminous_sim.states import ObjectState, WorldState
+from luminous_sim.states import WorldState
+from tests.kitchen import FAUCETS, Layout, state_of, with_
+from tests.kitchen import KITCHEN as SHARED_KITCHEN
+from tests.kitchen import kitchen as shared_kitchen
 
-KITCHEN: dict[str, tuple[str, str | None]] = {
-    # id: (type, parent)
-    "CounterTop|1": ("CounterTop", None),
-    "CounterTop|2": ("CounterTop", None),
-    "DiningTable|1": ("DiningTable", None),
-    "Fridge|1": ("Fridge", None),
-    "Microwave|1": ("Microwave", "CounterTop|1"),
-    "Cabinet|1": ("Cabinet", None),
-    "Cabinet|2": ("Cabinet", None),
-    "Drawer|1": ("Drawer", None),
-    "Sink|1": ("Sink", None),
-    "SinkBasin|1": ("SinkBasin", None),
-    "Faucet|1": ("Faucet", None),
-    "GarbageCan|1": ("GarbageCan", None),
-    "StoveBurner|1": ("StoveBurner", None),
-    "CoffeeMachine|1": ("CoffeeMachine", "CounterTop|2"),
-    "Apple|1": ("Apple", "CounterTop|1"),
-    "Apple|2": ("Apple", "DiningTable|1"),
-    "Apple|3": ("Apple", "Fridge|1"),
-    "Egg|1": ("Egg", "Fridge|1"),
-    "Plate|1": ("Plate", "CounterTop|2"),
-    "Plate|2": ("Plate", "Cabinet|1"),
-    "Mug|1": ("Mug", "CounterTop|1"),
-    "Mug|2": ("Mug", "Cabinet|2"),
-    "Bowl|1": ("Bowl", "DiningTable|1"),
-    "Cup|1": ("Cup", "DiningTable|1"),
-    "Knife|1": ("Knife", "Drawer|1"),
-    "Fork|1": ("Fork", "Drawer|1"),
-    "Potato|1": ("Potato", "CounterTop|2"),
-    "Tomato|1": ("Tomato", "DiningTable|1"),
-    "Bread|1": ("Bread", "CounterTop|2"),
-    "Lettuce|1": ("Lettuce", "CounterTop|1"),
-    "Pot|1": ("Pot", "StoveBurner|1"),
-    "Pan|1": ("Pan", "CounterTop|1"),
-    "DishSponge|1": ("DishSponge", "CounterTop|2"),
-}
-KITCHEN_FAUCETS = {"Faucet|1": "SinkBasin|1"}
+KITCHEN = with_(
+    SHARED_KITCHEN,
+    Plate_1=("Plate", "CounterTop|2"),
+    Apple_2=("Apple", "DiningTable|1"),
+    Apple_3=("Apple", "Fridge|1"),
+    Egg_1=("Egg", "Fridge|1"),
+    Plate_2=("Plate", "Cabinet|1"),
+)
+"""The shared kitchen with more to choose from: three apples, two plates, an egg in the fridge."""
+KITCHEN_FAUCETS = FAUCETS
 KITCHEN_DIRTY = ("Mug|1", "Mug|2", "Plate|1", "Plate|2", "Bowl|1", "Cup|1", "Pot|1", "Pan|1")
 
-BEDROOM: dict[str, tuple[str, str | None]] = {
+BEDROOM: Layout = {
     "Desk|1": ("Desk", None),
     "DeskLamp|1": ("DeskLamp", "Desk|1"),
     "Bed|1": ("Bed", None),
@@ -69,22 +45,6 @@ BEDROOM: dict[str, tuple[str, str | None]] = {
 }
 
 
-def _build(
-    layout: dict[str, tuple[str, str | None]],
-    changes: dict[str, dict[str, Any]] | None,
-    held: str | None,
-    **kwargs: Any,
-) -> WorldState:
-    changes = dict(changes or {})
-    if held is not None:
-        changes[held] = {**changes.get(held, {}), "parent": None, "isPickedUp": True}
-    objs = []
-    for oid, (kind, parent) in layout.items():
-        fields: dict[str, Any] = {"parent": parent, **changes.get(oid, {})}
-        objs.append(ObjectState(oid, kind, **fields))
-    return WorldState.of(objs, held=held, **kwargs)
-
-
 def kitchen(
     changes: dict[str, dict[str, Any]] | None = None,
     held: str | None = None,
@@ -92,18 +52,14 @@ def kitchen(
     **kwargs: Any,
 ) -> WorldState:
     """The kitchen: everything closed and off, the dishes dirty; `drop` leaves objects out."""
-    base = {k: {"isDirty": True} for k in KITCHEN_DIRTY}
+    dirty = {k: {"isDirty": True} for k in KITCHEN_DIRTY}
     for k, v in (changes or {}).items():
-        base[k] = {**base.get(k, {}), **v}
-    layout = {k: v for k, v in KITCHEN.items() if k not in drop}
-    kwargs.setdefault(
-        "faucet_basin", {f: b for f, b in KITCHEN_FAUCETS.items() if f in layout and b in layout}
-    )
-    return _build(layout, {k: v for k, v in base.items() if k in layout}, held, **kwargs)
+        dirty[k] = {**dirty.get(k, {}), **v}
+    return shared_kitchen(dirty, held, layout=KITCHEN, drop=drop, **kwargs)
 
 
 def bedroom(
     changes: dict[str, dict[str, Any]] | None = None, held: str | None = None, **kwargs: Any
 ) -> WorldState:
     """The bedroom: the desk lamp off, drawers, safe and box closed."""
-    return _build(BEDROOM, changes, held, **kwargs)
+    return state_of(BEDROOM, changes, held, **kwargs)

@@ -1,38 +1,18 @@
-"""Hand-built states and scenes for the task tests."""
+"""Hand-built states and scenes for the task tests: the shared kitchen and a living room."""
 
 from __future__ import annotations
 
 from functools import cache
-from typing import Any
 
 import numpy as np
 
 from luminous_sim.rooms.generate import generate_shell
 from luminous_sim.rooms.shell import RoomShell
 from luminous_sim.scene import Scene, SceneObject
-from luminous_sim.states import ObjectState, WorldState
+from tests.kitchen import KITCHEN, Layout, state_of, with_, without
 
-Layout = dict[str, tuple[str, str | None]]
-"""id -> (type, parent id)."""
+__all__ = ["KITCHEN", "LIVING", "Layout", "scene_of", "shell", "state_of", "with_", "without"]
 
-KITCHEN: Layout = {
-    "CounterTop|1": ("CounterTop", None),
-    "DiningTable|1": ("DiningTable", None),
-    "Fridge|1": ("Fridge", None),
-    "Microwave|1": ("Microwave", "CounterTop|1"),
-    "Cabinet|1": ("Cabinet", None),
-    "Sink|1": ("Sink", None),
-    "SinkBasin|1": ("SinkBasin", "Sink|1"),
-    "Faucet|1": ("Faucet", "Sink|1"),
-    "Toaster|1": ("Toaster", "CounterTop|1"),
-    "CoffeeMachine|1": ("CoffeeMachine", "CounterTop|1"),
-    "Apple|1": ("Apple", "CounterTop|1"),
-    "Plate|1": ("Plate", "DiningTable|1"),
-    "Mug|1": ("Mug", "CounterTop|1"),
-    "Mug|2": ("Mug", "DiningTable|1"),
-    "Knife|1": ("Knife", "CounterTop|1"),
-    "Potato|1": ("Potato", "DiningTable|1"),
-}
 LIVING: Layout = {
     "Sofa|1": ("Sofa", None),
     "CoffeeTable|1": ("CoffeeTable", None),
@@ -44,38 +24,6 @@ LIVING: Layout = {
     "KeyChain|1": ("KeyChain", "SideTable|1"),
     "KeyChain|2": ("KeyChain", "CoffeeTable|1"),
 }
-
-
-def state_of(
-    layout: Layout, changes: dict[str, dict[str, Any]] | None = None, **kwargs: Any
-) -> WorldState:
-    """A state with every object as laid out, some fields changed; `held=` also sets isPickedUp."""
-    changes = {k: dict(v) for k, v in (changes or {}).items()}
-    held = kwargs.get("held")
-    if held is not None:
-        changes[held] = {**changes.get(held, {}), "parent": None, "isPickedUp": True}
-    objs = [
-        ObjectState(oid, kind, **{"parent": parent, **changes.get(oid, {})})
-        for oid, (kind, parent) in layout.items()
-    ]
-    return WorldState.of(objs, **kwargs)
-
-
-def with_(layout: Layout, **extra: tuple[str, str | None]) -> Layout:
-    """A copy of a layout with objects added (keyword `Type_k`) or moved; `None` value removes."""
-    out = dict(layout)
-    for key, value in extra.items():
-        oid = key.replace("_", "|")
-        if value is None:
-            out.pop(oid, None)
-        else:
-            out[oid] = value
-    return out
-
-
-def without(layout: Layout, *types: str) -> Layout:
-    """A copy of a layout without any object of the given types (and what they held stays)."""
-    return {k: v for k, v in layout.items() if v[0] not in types}
 
 
 @cache
