@@ -4,7 +4,7 @@ VENV ?= .venv
 BIN := $(VENV)/bin
 OUT ?= out/demo
 
-.PHONY: install demo test bench clean
+.PHONY: install demo test lint bench clean
 
 $(BIN)/luminous: pyproject.toml
 	$(PY) -m venv $(VENV) || python3 -m venv $(VENV)
@@ -20,7 +20,13 @@ demo: install
 	$(BIN)/luminous demo --out $(OUT) --seed 0
 
 test: install
+	$(BIN)/ruff check luminous_sim tests benchmarks scripts
+	$(BIN)/mypy
 	$(BIN)/python -m pytest -q -m "not slow" tests
+
+lint: install
+	$(BIN)/ruff check luminous_sim tests benchmarks scripts
+	$(BIN)/mypy
 
 bench: install
 	for f in benchmarks/bench_*.py; do $(BIN)/python $$f || exit 1; done

@@ -17,9 +17,9 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from luminous_sim.assets.build import build_library  # noqa: E402
-from luminous_sim.assets.catalog import Catalog  # noqa: E402
-from luminous_sim.assets.paths import asset_root  # noqa: E402
+from luminous_sim.assets.build import build_library
+from luminous_sim.assets.catalog import Catalog
+from luminous_sim.assets.paths import asset_root
 
 
 def _dir_size(root: Path) -> int:

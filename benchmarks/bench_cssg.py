@@ -98,7 +98,8 @@ def run(room_type: str, n: int, physics: bool, grid_dir: Path | None, alfred: bo
             soft_total += sum(1 for r in rels if r.explicit and not r.hard)
             imp += sum(r.met for r in rels if not r.explicit)
             imp_total += sum(1 for r in rels if not r.explicit)
-            required = [o for o in g.scene.objects if o.name and not o.name.endswith(tuple(f"_auto{i}" for i in range(5)))]
+            auto = tuple(f"_auto{i}" for i in range(5))
+            required = [o for o in g.scene.objects if o.name and not o.name.endswith(auto)]
             req_total += len(required)
             req_ok += sum(o.id not in g.report.unreachable for o in required) - sum(
                 1 for nme in g.report.unplaced if nme in g.report.required)
@@ -129,7 +130,10 @@ def run(room_type: str, n: int, physics: bool, grid_dir: Path | None, alfred: bo
         print(f"{'objects fell while settling':34}{c[8]:>22}{b[8]:>22}")
         print(f"{'objects to interact with, seen':34}{_rate(c[15], c[16]):>22}{_rate(b[15], b[16]):>22}")
     print(f"{'infeasible (no valid layout)':34}{c[9]:>22}{'-':>22}")
-    med = lambda xs: f"{1000 * statistics.median(xs):.0f} ms" if xs else "n/a"
+
+    def med(xs: list[float]) -> str:
+        return f"{1000 * statistics.median(xs):.0f} ms" if xs else "n/a"
+
     print(f"{'median time per layout sample':34}{med(c[10]):>22}{med(b[10]):>22}")
     print(f"{'median time per valid scene':34}{med(c[11]):>22}{'-':>22}")
     if physics:

@@ -102,8 +102,8 @@ def random_state(room: str, rng: np.random.Generator) -> WorldState:
     for k, (t, parent) in layout.items():
         fields: dict = {}
         if (
-            abilities(t).pickupable
-            and parent is None
+            (abilities(t).pickupable
+            and parent is None)
             or (abilities(t).pickupable and rng.random() < 0.7)
         ):
             spots = [r for r in fixed if can_contain(layout[r][0], t)]

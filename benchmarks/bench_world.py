@@ -20,7 +20,7 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from luminous_sim.cssg import empty_cdf, generate  # noqa: E402
+from luminous_sim.cssg import empty_cdf, generate
 
 NAV = ["MoveAhead", "RotateRight", "MoveAhead", "LookDown", "RotateLeft", "MoveAhead", "LookUp", "RotateLeft"]
 

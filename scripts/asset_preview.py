@@ -11,8 +11,8 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from luminous_sim.assets.catalog import Catalog  # noqa: E402
-from luminous_sim.world.asset_sheet import render_sheet  # noqa: E402
+from luminous_sim.assets.catalog import Catalog
+from luminous_sim.world.asset_sheet import render_sheet
 
 
 def main() -> None:

@@ -20,7 +20,7 @@ import difflib
 import re
 from collections.abc import Iterator, Mapping
 from dataclasses import dataclass
-from typing import Any, Union
+from typing import Any
 
 from luminous_sim.cdf import sexpr
 from luminous_sim.errors import VocabularyError
@@ -115,7 +115,7 @@ class ForAll:
     body: Expr
 
 
-Expr = Union[Atom, Not, And, Or, Exists, ForAll]
+Expr = Atom | Not | And | Or | Exists | ForAll
 EXPR_TYPES = (Atom, Not, And, Or, Exists, ForAll)
 
 

@@ -40,14 +40,14 @@ def check_safe_ref(value: str, what: str) -> str:
 def _import(module: str) -> object | None:
     try:
         return importlib.import_module(module)
-    except Exception:  # noqa: BLE001 - a sibling module mid-development must not break CDF loading
+    except Exception:
         return None
 
 
 def _safely(func: Callable[[str], object], name: str) -> object:
     try:
         return func(name)
-    except Exception:  # noqa: BLE001 - a failing lookup means "not found", reported as a CDF error
+    except Exception:
         return None
 
 
@@ -71,7 +71,7 @@ def _catalog() -> object | None:
         return None
     try:
         return factory()
-    except Exception:  # noqa: BLE001 - an unreadable catalog is treated like a missing one
+    except Exception:
         return None
 
 

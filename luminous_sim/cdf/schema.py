@@ -25,7 +25,7 @@ ChallengeDefinition is built, so an invalid one cannot exist.
 from __future__ import annotations
 
 import re
-from typing import Annotated, Any, ClassVar, Literal, Union
+from typing import Annotated, Any, ClassVar, Literal
 
 from pydantic import (
     AliasChoices,
@@ -173,9 +173,7 @@ def _room_tag(value: Any) -> str:
 
 
 RoomSpec = Annotated[
-    Union[
-        Annotated[RoomName, Tag("room-name")], Annotated[RoomConstraints, Tag("room-constraints")]
-    ],
+    Annotated[RoomName, Tag("room-name")] | Annotated[RoomConstraints, Tag("room-constraints")],
     Discriminator(_room_tag),
 ]
 
@@ -194,10 +192,7 @@ def _size_tag(value: Any) -> str:
 
 
 Size = Annotated[
-    Union[
-        Annotated[Annotated[float, Field(gt=0, le=10, allow_inf_nan=False)], Tag("size-scale")],
-        Annotated[Dims, Tag("size-dims")],
-    ],
+    Annotated[Annotated[float, Field(gt=0, le=10, allow_inf_nan=False)], Tag("size-scale")] | Annotated[Dims, Tag("size-dims")],  # noqa: E501
     Discriminator(_size_tag),
 ]
 
@@ -398,7 +393,7 @@ def _step_tag(value: Any) -> str:
 
 
 Step = Annotated[
-    Union[Annotated[HighLevelStep, Tag("high-level")], Annotated[LowLevelStep, Tag("low-level")]],
+    Annotated[HighLevelStep, Tag("high-level")] | Annotated[LowLevelStep, Tag("low-level")],
     Discriminator(_step_tag),
 ]
 

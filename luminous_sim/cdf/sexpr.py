@@ -6,9 +6,7 @@ of the line. The reader is iterative, so deep nesting cannot exhaust Python's st
 
 from __future__ import annotations
 
-from typing import Union
-
-SExpr = Union[str, list["SExpr"]]
+SExpr = str | list["SExpr"]
 
 MAX_DEPTH = 64
 """Deepest nesting accepted (goals are shallow; this bounds the work on hostile input)."""

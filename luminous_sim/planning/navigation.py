@@ -5,6 +5,7 @@ MoveAhead/RotateLeft/RotateRight edges, Dijkstra shortest paths, and ALFRED's Go
 from __future__ import annotations
 
 from functools import cached_property
+from itertools import pairwise
 
 import networkx as nx
 
@@ -53,7 +54,7 @@ class NavGraph:
         if a == b:
             return []
         nodes = nx.dijkstra_path(self.graph, a, b)
-        return [self.graph.edges[u, v]["action"] for u, v in zip(nodes, nodes[1:])]
+        return [self.graph.edges[u, v]["action"] for u, v in pairwise(nodes)]
 
     def distance(self, start: AgentPose, goal: AgentPose) -> int:
         try:

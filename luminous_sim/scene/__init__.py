@@ -33,9 +33,9 @@ from luminous_sim.scene.sight import Shade, View, in_sight, shades
 
 __all__ = [
     "AGENT_HEIGHT",
-    "Layer",
     "REACH",
     "STEP",
+    "Layer",
     "RegionSpot",
     "Scene",
     "SceneObject",

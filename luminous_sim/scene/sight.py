@@ -5,9 +5,10 @@ scene is built.
 A sight line from the camera (at the agent's eye height, on the reachable grid, within the visibility
 distance) to the spot must pass under the region above it (a low shelf under a table top, seen through
 its front, since shelf units have side panels) and over the rim around it (the inside of a garbage
-can; for a surface, its own edge, which hides the back of a shelf above the eye). Since a sight line only rises towards the eye, checking it where it leaves the covering or
-surrounding box is enough. The built scene's ray test (world/sightlines.py) remains the judge; this is
-its cheap forecast, a little stricter.
+can; for a surface, its own edge, which hides the back of a shelf above the eye). Since a sight line
+only rises towards the eye, checking it where it leaves the covering or surrounding box is enough.
+The built scene's ray test (world/sightlines.py) remains the judge; this is its cheap forecast, a
+little stricter.
 """
 
 from __future__ import annotations

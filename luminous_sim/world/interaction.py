@@ -78,7 +78,8 @@ class Interactions:
             target = resolve(world, state, act)
             receptacle = None
             if target is None:
-                return StepResult.fail(FailureCode.NO_TARGET, f"{name} needs an objectId, a mask or a point on an object",
+                return StepResult.fail(FailureCode.NO_TARGET,
+                                       f"{name} needs an objectId, a mask or a point on an object",
                                        act)
             why = reach_failure(world, state, target)
         if why:

@@ -242,7 +242,7 @@ def rank_targets(
     """All candidate targets of a predicted mask, best first (the ranking behind ``va_interact``).
 
     Every instance id that the predicted mask touches is scored by
-    ``IoU = |pred ∩ inst| / |pred ∪ inst|`` against that instance's *full* mask in
+    ``IoU = |pred & inst| / |pred | inst|`` (intersection over union) against that instance's *full* mask in
     ``instance_seg``.  Instance ids absent from ``instance_to_object`` (background, structure
     without an object id) are dropped, as is the held object and, when ``interactable`` is given,
     every object for which it returns False.  Order: higher IoU, then larger intersection, then

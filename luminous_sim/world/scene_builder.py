@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from itertools import pairwise
 
 import numpy as np
 import pybullet as p
@@ -73,7 +74,7 @@ def floor_rectangles(poly) -> list[tuple[tuple[float, float], tuple[float, float
     xs = sorted({round(x, 6) for x, _ in poly.exterior.coords})
     miny, maxy = poly.bounds[1], poly.bounds[3]
     out = []
-    for x0, x1 in zip(xs, xs[1:]):
+    for x0, x1 in pairwise(xs):
         piece = poly.intersection(box(x0, miny - 1, x1, maxy + 1))
         for g in getattr(piece, "geoms", [piece]):
             if g.area > 1e-9:

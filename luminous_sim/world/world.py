@@ -134,8 +134,8 @@ class World:
         elif name in ("LookUp", "LookDown"):
             looked = pose.looked(-1 if name == "LookUp" else 1)
             if looked is None:
-                return StepResult.fail(FailureCode.HORIZON_LIMIT, f"{name}: the horizon must stay within -30..60 degrees",
-                                       act)
+                return StepResult.fail(FailureCode.HORIZON_LIMIT,
+                                       f"{name}: the horizon must stay within -30..60 degrees", act)
             self.agent = looked
         elif name in TELEPORT_ACTIONS:
             x, y = float(act["x"]), float(act["z"] if "z" in act else act["y"])
@@ -206,8 +206,8 @@ class World:
 
     def agent_metadata(self) -> dict[str, Any]:
         p = self.agent
-        return {"position": {"x": p.x, "y": 0.9009995, "z": p.y}, "rotation": {"x": 0.0, "y": float(p.rotation), "z": 0.0},
-                "cameraHorizon": float(p.horizon)}
+        return {"position": {"x": p.x, "y": 0.9009995, "z": p.y},
+                "rotation": {"x": 0.0, "y": float(p.rotation), "z": 0.0}, "cameraHorizon": float(p.horizon)}
 
     def metadata(self) -> dict[str, Any]:
         """AI2-THOR-style metadata: agent, inventory, objects, last action result."""

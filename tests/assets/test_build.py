@@ -17,7 +17,8 @@ from luminous_sim.assets.urdf_writer import write_asset
 
 CATALOG = Catalog.load(include_user=False)
 # one asset per category plus the articulated/coacd/sliced reference builders
-SAMPLE = sorted({"Mug_01", "Chair_02", "Fridge_01", "Apple_00", "AppleSliced_02", "DeskLamp_00"} & {e.id for e in CATALOG})
+SAMPLE = sorted({"Mug_01", "Chair_02", "Fridge_01", "Apple_00", "AppleSliced_02", "DeskLamp_00"}
+                & {e.id for e in CATALOG})
 
 
 @pytest.mark.parametrize("asset_id", SAMPLE)

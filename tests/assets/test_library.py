@@ -72,7 +72,7 @@ def test_regions_lie_inside_the_asset(entry):
 
 CONTAINERS = [
     (e, r) for e in ENTRIES for r in e.regions
-    if r["kind"] == "volume" and (e.type in CONTAINER_TYPES or r["link"] != "base" and "drawer" in r["link"])
+    if r["kind"] == "volume" and (e.type in CONTAINER_TYPES or (r["link"] != "base" and "drawer" in r["link"]))
 ]
 
 
@@ -128,7 +128,7 @@ def test_articulated_types_have_their_joints():
 
 SURFACES = [(e, r) for e in ENTRIES for r in e.regions
             if r["kind"] == "surface" and r["link"] == "base" and e.type not in ("StoveBurner", "TowelHolder",
-                                                                                 "HandTowelHolder", "ToiletPaperHanger")]
+                                                                                 "HandTowelHolder", "ToiletPaperHanger")]  # noqa: E501
 
 
 @pytest.mark.parametrize("entry,region", SURFACES, ids=[f"{e.id}:{r['name']}" for e, r in SURFACES])

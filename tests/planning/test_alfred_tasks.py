@@ -58,7 +58,8 @@ CASES = [
 
 def _id(case) -> str:
     task, p, _ = case
-    return f"{task}-{p.object_type}-{p.parent_target or p.toggle_target}{'-' + p.mrecep_target if p.mrecep_target else ''}"
+    mrecep = f"-{p.mrecep_target}" if p.mrecep_target else ""
+    return f"{task}-{p.object_type}-{p.parent_target or p.toggle_target}{mrecep}"
 
 
 @pytest.mark.parametrize("close", [False, True], ids=["open-ok", "all-closed"])

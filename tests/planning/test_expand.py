@@ -56,6 +56,6 @@ def test_the_planner_macros_are_the_same_expansions_without_automatic_doors():
     macro = expand_macro(HighLevelAction("HeatObject", {"objectId": "Apple|1", "receptacleObjectId": "Microwave|1"}), s)
     assert [m["action"] for m in macro] == [x.action for x in expand(
         "HeatObject", {"objectId": "Apple|1", "receptacleObjectId": "Microwave|1"}, s)]
-    assert expand_macro(HighLevelAction("PutObject", {"objectId": "Apple|1", "receptacleObjectId": "Cabinet|1"}), s) == [
+    assert expand_macro(HighLevelAction("PutObject", {"objectId": "Apple|1", "receptacleObjectId": "Cabinet|1"}), s) == [  # noqa: E501
         {"action": "PutObject", "objectId": "Apple|1", "receptacleObjectId": "Cabinet|1"}]
     assert expand_macro(HighLevelAction("GotoLocation", {"objectId": "Fridge|1"}), s) == []

@@ -38,7 +38,7 @@ ROWS: list[tuple[str, dict[str, dict[str, Any]], str | None, str, str | None, st
     ("put target None means held", {}, "Apple|1", "PutObject", None, "Plate|1", None),
     ("put on movable receptacle", {}, "Apple|1", "PutObject", "Apple|1", "Bowl|1", None),
     ("put nothing held", {}, None, "PutObject", "Apple|1", "CounterTop|1", "nothing is held"),
-    ("put not the held one", {}, "Mug|1", "PutObject", "Apple|1", "CounterTop|1", "Apple|1 is not held (holding Mug|1)"),
+    ("put not the held one", {}, "Mug|1", "PutObject", "Apple|1", "CounterTop|1", "Apple|1 is not held (holding Mug|1)"),  # noqa: E501
     ("put no receptacle", {}, "Apple|1", "PutObject", "Apple|1", None, "PutObject needs a receptacle"),
     ("put unknown receptacle", {}, "Apple|1", "PutObject", "Apple|1", "Shelf|7", "unknown object id 'Shelf|7'"),
     ("put closed fridge", {}, "Apple|1", "PutObject", "Apple|1", "Fridge|1", "Fridge|1 is closed"),
@@ -68,7 +68,7 @@ ROWS: list[tuple[str, dict[str, dict[str, Any]], str | None, str, str | None, st
      "Fridge|1 is already open"),
     ("close already closed", {}, None, "CloseObject", "Fridge|1", None, "Fridge|1 is already closed"),
     ("close open fridge", {"Fridge|1": {"isOpen": True}}, None, "CloseObject", "Fridge|1", None, None),
-    ("open box in closed cabinet", {}, None, "OpenObject", "Box|1", None, "object Box|1 is inside the closed Cabinet|1"),
+    ("open box in closed cabinet", {}, None, "OpenObject", "Box|1", None, "object Box|1 is inside the closed Cabinet|1"),  # noqa: E501
     ("open held laptop", {}, "Laptop|1", "OpenObject", "Laptop|1", None, None),
     # ToggleObjectOn / ToggleObjectOff
     ("toggle on microwave", {}, None, "ToggleObjectOn", "Microwave|1", None, None),

@@ -27,9 +27,7 @@ def random_action(world, rng: np.random.Generator) -> dict:
         ids = visible or sorted(world.built.objects)
         target = ids[int(rng.integers(len(ids)))]
         if rng.random() < 0.3:  # by mask, as a learned agent would
-            return {"action": name, "mask": mask_to_rle(world.instance_masks().get(target, np.zeros((300, 300))))} \
-                if name != "PutObject" else {"action": name, "mask": mask_to_rle(world.instance_masks().get(
-                    target, np.zeros((300, 300))))}
+            return {"action": name, "mask": mask_to_rle(world.instance_masks().get(target, np.zeros((300, 300))))}
         key = "receptacleObjectId" if name == "PutObject" else "objectId"
         return {"action": name, key: target}
     if r < 0.95:

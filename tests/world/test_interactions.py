@@ -165,7 +165,8 @@ def test_put_refuses_incompatible_and_full_receptacles(world, kitchen_scene, mon
     assert world.step({"action": "OpenObject", "objectId": micro}).success
     before = world.view().state
     r = world.step({"action": "PutObject", "objectId": knife, "receptacleObjectId": micro})
-    assert not r.success and "compatib" in r.error and r.code == FailureCode.INCOMPATIBLE  # a knife never goes in a microwave in ALFRED
+    # a knife never goes in a microwave in ALFRED
+    assert not r.success and "compatib" in r.error and r.code == FailureCode.INCOMPATIBLE
     assert world.view().state == before and world.view().held == knife
     counter = kitchen_scene.object(knife).parent
     go_to(world, counter)

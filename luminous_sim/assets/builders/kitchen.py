@@ -315,7 +315,7 @@ def microwave(v: int, rng: np.random.Generator) -> AssetSpec:
         start_z = disp_z - 0.02 - rows * 0.03 - 0.01
         parts.append(_box((px0, pf, start_z - 0.03), (px1, pf + 0.006, start_z), "plastic", collide=False))
     else:  # dials
-        for k, zf in enumerate((0.62, 0.3)):
+        for zf in (0.62, 0.3):
             dz = foot + zf * (top_lo - foot)
             parts.append(_cyl(0.024, 0.008, (pmid, pf + 0.004, dz), "metal", axis="y", sections=16, collide=False))
             parts.append(_cyl(0.019, 0.022, (pmid, pf + 0.011, dz), "dark_plastic" if v == 3 else "metal", axis="y",
