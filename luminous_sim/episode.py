@@ -85,7 +85,6 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
     from luminous_sim.language import Describer
     from luminous_sim.planning import Oracle, draw_task
     from luminous_sim.tasks.errors import TaskSamplingError
-    from luminous_sim.tasks.evaluate import goal_conditions
     from luminous_sim.tasks.templates import task_description
 
     rng = np.random.default_rng(np.random.SeedSequence([seed, 11]))
@@ -112,7 +111,7 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
             traj = Oracle(world, record_frames=record_frames).run(task.goal)
         view = world.view()
         visible = set(view.visible_objects())
-        done, total = goal_conditions(task, view.state, visible)
+        done, total = task.conditions().alfred_counts(view.state, visible)
         traj.goal_conditions = (done, total)
         traj.success = traj.success and done == total
         text = Describer(view, rng).describe(traj, task_description(task, rng))
