@@ -10,6 +10,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from pydantic import BaseModel, ValidationError
+from pydantic_core import ErrorDetails
 
 from luminous_sim.errors import CDFError
 
@@ -101,7 +102,7 @@ def _is_model(x: Any) -> bool:
     return isinstance(x, type) and issubclass(x, BaseModel)
 
 
-def _message(err: dict[str, Any], root: type[BaseModel]) -> str:
+def _message(err: ErrorDetails, root: type[BaseModel]) -> str:
     kind, msg, loc = err["type"], err["msg"], err["loc"]
     if kind in ("model_type", "dict_type", "model_attributes_type"):
         return f"expected a mapping, got {type(err.get('input')).__name__}"

@@ -358,8 +358,8 @@ def _from_data(data: Any, bound: frozenset[str], path: str, depth: int) -> Expr:
         params, body = _quantifier_data(value, sub)
         inner = _from_data(body, bound | {p.var for p in params}, f"{sub}.body", depth + 1)
         return Exists(params, inner) if key == "exists" else ForAll(params, inner)
-    args = value if isinstance(value, list) else [value]
-    return _atom(head, args, bound, sub)
+    terms = value if isinstance(value, list) else [value]
+    return _atom(head, terms, bound, sub)
 
 
 def _quantifier_data(value: Any, path: str) -> tuple[tuple[Param, ...], Any]:

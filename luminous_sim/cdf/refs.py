@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import importlib
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Container
 
 SAFE_REF = re.compile(r"[A-Za-z0-9_\-]+")
 SAFE_REF_PATTERN = r"^[A-Za-z0-9_\-]+$"
@@ -83,7 +83,9 @@ def asset_exists(name: str) -> bool:
     has = getattr(catalog, "has_asset", None)
     if callable(has):
         return bool(_safely(has, name))
-    return bool(_safely(lambda n: n in catalog, name))  # type: ignore[operator]
+    if isinstance(catalog, Container):  # a Catalog: `in` asks whether it has the asset
+        return bool(_safely(lambda n: n in catalog, name))
+    return False
 
 
 def asset_type(name: str) -> str | None:

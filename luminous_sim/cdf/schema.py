@@ -25,7 +25,7 @@ ChallengeDefinition is built, so an invalid one cannot exist.
 from __future__ import annotations
 
 import re
-from typing import Annotated, Any, ClassVar, Literal
+from typing import Annotated, Any, ClassVar, Literal, TypeAlias, get_args
 
 from pydantic import (
     AliasChoices,
@@ -101,42 +101,49 @@ def _expression(value: Any) -> Expr:
         raise ValueError(str(exc)) from None
 
 
-Name = Annotated[
+Name: TypeAlias = Annotated[
     str,
     PlainValidator(lambda v: _name(_as_str(v))),
     WithJsonSchema({"type": "string", "pattern": NAME_PATTERN}),
 ]
-ObjectType = Annotated[
+ObjectType: TypeAlias = Annotated[
     str,
     PlainValidator(lambda v: _object_type(_as_str(v))),
     WithJsonSchema({"type": "string", "enum": list(ALL_TYPES)}),
 ]
-RoomName = Annotated[
+RoomName: TypeAlias = Annotated[
     str,
     PlainValidator(lambda v: refs.check_room(_as_str(v))),
     WithJsonSchema({"type": "string", "pattern": refs.SAFE_REF_PATTERN}),
 ]
-AssetName = Annotated[
+AssetName: TypeAlias = Annotated[
     str,
     PlainValidator(lambda v: refs.check_asset(_as_str(v))),
     WithJsonSchema({"type": "string", "pattern": refs.SAFE_REF_PATTERN}),
 ]
-RelationName = Annotated[
-    Literal[tuple(RELATIONS)],  # type: ignore[valid-type]
+CanonicalRelation: TypeAlias = Literal[
+    "on", "in", "beside", "near", "far", "away_from", "face", "in_front_of", "behind", "left_of", "right_of",
+    "aligned_with", "under", "above", "against_wall", "in_corner", "in_centre",
+]
+"""The canonical relation names, spelled out for the type checker; the same names, in the same order, as
+`relations.RELATIONS` (pydantic lists them in that order when it rejects a value)."""
+assert get_args(CanonicalRelation) == tuple(RELATIONS)
+RelationName: TypeAlias = Annotated[
+    CanonicalRelation,
     BeforeValidator(_relation),
     WithJsonSchema({"type": "string", "enum": [*RELATIONS, *ALIASES]}),
 ]
-RoomType = Literal["Kitchen", "LivingRoom", "Bedroom", "Bathroom"]
-assert set(RoomType.__args__) == set(ROOM_TYPES)  # type: ignore[attr-defined]
-Expression = Annotated[
+RoomType: TypeAlias = Literal["Kitchen", "LivingRoom", "Bedroom", "Bathroom"]
+assert set(get_args(RoomType)) == set(ROOM_TYPES)
+Expression: TypeAlias = Annotated[
     Expr,
     PlainValidator(_expression),
     PlainSerializer(to_sexpr, return_type=str),
     WithJsonSchema(EXPRESSION_MARKER),
 ]
-PositiveFinite = Annotated[float, Field(gt=0, allow_inf_nan=False)]
-Finite = Annotated[float, Field(allow_inf_nan=False)]
-Text = Annotated[str, Field(min_length=1, max_length=200)]
+PositiveFinite: TypeAlias = Annotated[float, Field(gt=0, allow_inf_nan=False)]
+Finite: TypeAlias = Annotated[float, Field(allow_inf_nan=False)]
+Text: TypeAlias = Annotated[str, Field(min_length=1, max_length=200)]
 
 
 def _as_str(value: Any) -> str:
@@ -172,7 +179,7 @@ def _room_tag(value: Any) -> str:
     return "room-constraints" if isinstance(value, (dict, RoomConstraints)) else "room-name"
 
 
-RoomSpec = Annotated[
+RoomSpec: TypeAlias = Annotated[
     Annotated[RoomName, Tag("room-name")] | Annotated[RoomConstraints, Tag("room-constraints")],
     Discriminator(_room_tag),
 ]
@@ -191,7 +198,7 @@ def _size_tag(value: Any) -> str:
     return "size-dims" if isinstance(value, (dict, Dims)) else "size-scale"
 
 
-Size = Annotated[
+Size: TypeAlias = Annotated[
     Annotated[Annotated[float, Field(gt=0, le=10, allow_inf_nan=False)], Tag("size-scale")] | Annotated[Dims, Tag("size-dims")],  # noqa: E501
     Discriminator(_size_tag),
 ]
@@ -272,7 +279,7 @@ class SceneSpec(_Model):
         return value[0] if len(value) == 1 else list(value)
 
 
-TaskType = Literal[
+TaskType: TypeAlias = Literal[
     "pick_and_place_simple",
     "pick_two_obj_and_place",
     "look_at_obj_in_light",
@@ -303,7 +310,7 @@ class Task(_Model):
     goal: Expression
 
 
-HighLevelAction = Literal[
+HighLevelAction: TypeAlias = Literal[
     "GotoLocation",
     "PickupObject",
     "PutObject",
@@ -318,7 +325,7 @@ HighLevelAction = Literal[
     "CleanObject",
     "NoOp",
 ]
-LowLevelAction = Literal[
+LowLevelAction: TypeAlias = Literal[
     "MoveAhead",
     "RotateLeft",
     "RotateRight",
@@ -392,7 +399,7 @@ def _step_tag(value: Any) -> str:
     return "high-level"
 
 
-Step = Annotated[
+Step: TypeAlias = Annotated[
     Annotated[HighLevelStep, Tag("high-level")] | Annotated[LowLevelStep, Tag("low-level")],
     Discriminator(_step_tag),
 ]

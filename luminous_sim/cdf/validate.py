@@ -395,9 +395,9 @@ def _check_expr(expr: Expr, path: str, names: dict[str, ObjectSpec]) -> list[Iss
             t = types[-1]
             if ability and t and not has_ability(t, ability):
                 issues.append(Issue(path, f"in {to_sexpr(atom)}: {_lacks(arg, t, ability)}"))
-        if atom.pred == "inReceptacle" and len(types) == 2 and all(types):
+        if atom.pred == "inReceptacle" and len(types) == 2:
             obj_t, rec_t = types
-            if is_receptacle(rec_t) and not can_support(rec_t, obj_t):  # type: ignore[arg-type]
+            if obj_t and rec_t and is_receptacle(rec_t) and not can_support(rec_t, obj_t):
                 issues.append(
                     Issue(
                         path,

@@ -4,6 +4,7 @@ interacts with the same place again."""
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 from luminous_sim.errors import PlanningError
@@ -30,7 +31,7 @@ def _gating_parent(state: WorldState, oid: str) -> str | None:
     return None
 
 
-def expand(action: str, args: dict, state: WorldState, keep_open: bool = False,
+def expand(action: str, args: Mapping[str, str], state: WorldState, keep_open: bool = False,
            auto_doors: bool = True) -> list[Step]:
     """Low-level steps of one high-level action, given the state before it.
 
@@ -40,18 +41,21 @@ def expand(action: str, args: dict, state: WorldState, keep_open: bool = False,
     expansions do; the symbolic planner, which opens doors with explicit actions, turns this off.
 
     Raises:
-        PlanningError: CleanObject at a basin no faucet serves, or an unknown action.
+        PlanningError: no `objectId`, CleanObject at a basin no faucet serves, or an unknown action.
     """
     o = args.get("objectId")
+    if o is None:
+        raise PlanningError(f"{action} needs an objectId")
     if action in ("PickupObject", "SliceObject", "PutObject"):
         r = args.get("receptacleObjectId")
         if r is None:
             gate = _gating_parent(state, o)
         else:
             gate = r if state.objects[r].object_type in GATING_OPENABLE else _gating_parent(state, r)
-        opened = auto_doors and gate is not None and not state.objects[gate].isOpen
-        steps = ([Step("OpenObject", gate)] if opened else []) + [Step(action, o, r)]
-        return steps + ([Step("CloseObject", gate)] if opened and not keep_open else [])
+        if auto_doors and gate is not None and not state.objects[gate].isOpen:
+            close = [] if keep_open else [Step("CloseObject", gate)]
+            return [Step("OpenObject", gate), Step(action, o, r), *close]
+        return [Step(action, o, r)]
     if action in ("OpenObject", "CloseObject", "ToggleObjectOn", "ToggleObjectOff"):
         return [Step(action, o)]
     if action == "ToggleObject":

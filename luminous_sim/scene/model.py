@@ -8,14 +8,14 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
-from typing import Any, Literal
+from typing import Any, Final, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
 
 from luminous_sim.errors import LuminousError
 from luminous_sim.rooms.shell import RoomShell
 
-SCENE_FORMAT = "luminous-scene/1"
+SCENE_FORMAT: Final = "luminous-scene/1"
 Layer = Literal["structure", "fixture", "furniture", "object", "decoration"]
 
 

@@ -56,6 +56,12 @@ def _type_of(arg: str, scope: Mapping[str, str | None], cdf: ChallengeDefinition
     return spec.type if spec else None
 
 
+def _all_known(types: list[str | None]) -> list[str] | None:
+    """`types` when every one is known (not None or empty), else None."""
+    known = [t for t in types if t]
+    return known if len(known) == len(types) else None
+
+
 def params_from_goal(cdf: ChallengeDefinition, goal: Expr) -> PddlParams:
     """ALFRED parameters read off a CDF goal, as far as its atoms tell (unknown slots stay "").
 
@@ -70,25 +76,26 @@ def params_from_goal(cdf: ChallengeDefinition, goal: Expr) -> PddlParams:
         types = [_type_of(a, scope, cdf) for a in atom.args]
         if any(t in SLICED_TYPES for t in types if t) or atom.pred == "isSliced":
             sliced = True
-        if atom.pred == "inReceptacleObject" and all(types):
-            slots.setdefault("object_target", parent_type(types[0]))
-            slots.setdefault("mrecep_target", types[1])
+        known = _all_known(types)
+        if atom.pred == "inReceptacleObject" and known is not None:
+            slots.setdefault("object_target", parent_type(known[0]))
+            slots.setdefault("mrecep_target", known[1])
     for atom, scope in found:
-        types = [_type_of(a, scope, cdf) for a in atom.args]
-        if not all(types):
+        known = _all_known([_type_of(a, scope, cdf) for a in atom.args])
+        if known is None:
             continue
         if atom.pred == "inReceptacle":
-            what = parent_type(types[0])
+            what = parent_type(known[0])
             # the movable receptacle's place, or (without one) the object's place
             mrecep = slots.get("mrecep_target")
-            if types[0] == mrecep or (
+            if known[0] == mrecep or (
                 not mrecep and slots.setdefault("object_target", what) == what
             ):
-                slots.setdefault("parent_target", types[1])
+                slots.setdefault("parent_target", known[1])
         elif atom.pred in ("holds", "isHot", "isCool", "isClean", "isSliced"):
-            slots.setdefault("object_target", parent_type(types[0]))
-        elif atom.pred in ("isToggled", "isOn") and types[0] in LAMPS:
-            slots.setdefault("toggle_target", types[0])
+            slots.setdefault("object_target", parent_type(known[0]))
+        elif atom.pred in ("isToggled", "isOn") and known[0] in LAMPS:
+            slots.setdefault("toggle_target", known[0])
     return PddlParams(
         object_sliced=sliced and slots.get("object_target", "") in SLICED_TYPES.values(),
         **{

@@ -51,6 +51,11 @@ def test_clean_switches_a_running_faucet_off_first_and_needs_a_faucet():
         expand("Teleport", {"objectId": "Mug|1"}, running)
 
 
+def test_an_action_without_an_object_is_refused():
+    with pytest.raises(PlanningError, match="PickupObject needs an objectId"):
+        expand("PickupObject", {}, kitchen())
+
+
 def test_the_planner_macros_are_the_same_expansions_without_automatic_doors():
     s = kitchen(held="Apple|1")
     macro = expand_macro(HighLevelAction("HeatObject", {"objectId": "Apple|1", "receptacleObjectId": "Microwave|1"}), s)

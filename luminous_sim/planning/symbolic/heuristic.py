@@ -145,10 +145,15 @@ class _Node:
 
     def _contradicts(self, e: And, env: dict[str, str]) -> bool:
         """Whether the conjunction asks for a ground atom and for its negation."""
-        pos, neg = set(), set()
+        pos: set[tuple[str, tuple[str, ...]]] = set()
+        neg: set[tuple[str, tuple[str, ...]]] = set()
         for a in e.args:
-            atom, bucket = (a, pos) if isinstance(a, Atom) else (a.arg, neg) if isinstance(a, Not) else (None, None)
-            if atom is None:
+            if isinstance(a, Atom):
+                atom, bucket = a, pos
+            elif isinstance(a, Not):
+                assert isinstance(a.arg, Atom), "the goal must be in negation normal form"
+                atom, bucket = a.arg, neg
+            else:
                 continue
             ground = self._ground(atom, env)
             if len(ground) == 1:

@@ -150,7 +150,7 @@ class _Builder:
         self.pddl: dict[str, str] = {}
         for k in self.ids + [x for xs in self.slices.values() for x in xs]:
             self.pddl[k] = pddl_name(k)
-        lowered = {}
+        lowered: dict[str, str] = {}
         for k, v in self.pddl.items():
             if v.lower() in lowered:
                 raise PlanningError(

@@ -118,18 +118,18 @@ def relevance(
     receptacles = [k for k, o in state.objects.items() if abilities(o.object_type).receptacle]
     if full:
         everything = frozenset(state.objects)
-        openers = frozenset(
+        every_opener = frozenset(
             k for k, o in state.objects.items() if abilities(o.object_type).openable
         )
-        toggles = frozenset(
+        every_lamp = frozenset(
             k for k, o in state.objects.items() if o.object_type in ("DeskLamp", "FloorLamp")
         )
         named = _named(state, goal, names)
         return Relevance(
             everything,
             frozenset(receptacles),
-            openers,
-            toggles | _toggle_targets(state, goal, names),
+            every_opener,
+            every_lamp | _toggle_targets(state, goal, names),
             devices,
             named,
             full=True,
@@ -205,8 +205,8 @@ def _candidates(
     for i, a in enumerate(atom.args):
         if not is_variable(a):
             out.append(resolve(a, state, names))
-        elif types.get(a) is not None:
-            out.append(_typed(state, types[a]))  # type: ignore[arg-type]
+        elif (a_type := types.get(a)) is not None:
+            out.append(_typed(state, a_type))
         else:
             need = info.abilities[i] if info is not None and atom.pred != AT_LOCATION else None
             out.append([k for k, o in state.objects.items() if _has_ability(o.object_type, need)])

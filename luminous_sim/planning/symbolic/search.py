@@ -69,8 +69,8 @@ def candidate_actions(node: Node, rel: Relevance) -> Iterator[HighLevelAction]:
             for k, o in s.objects.items()
             if abilities(o.object_type).pickupable and enclosing_closed(s, k) is None
         ]
-        for o in _distinct(s, pick, rel.named):
-            yield act("PickupObject", o)
+        for oid in _distinct(s, pick, rel.named):
+            yield act("PickupObject", oid)
     else:
         htype = s[held].object_type
         dests = [
@@ -102,10 +102,8 @@ def candidate_actions(node: Node, rel: Relevance) -> Iterator[HighLevelAction]:
 def successors(node: Node, rel: Relevance) -> Iterator[tuple[list[HighLevelAction], float, Node]]:
     """(actions, cost, next node) for every applicable interaction, with its GotoLocation."""
     for a in candidate_actions(node, rel):
-        place = anchor(
-            node.world,
-            a.receptacle_id if a.action == "PutObject" else (a.receptacle_id or a.object_id),
-        )
+        # where the action happens: its receptacle or device (every PutObject has one), else its object
+        place = anchor(node.world, a.receptacle_id or a.object_id)
         after, why = try_action(node.world, a)
         if why is not None:
             continue

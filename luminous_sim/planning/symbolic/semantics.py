@@ -145,8 +145,8 @@ def nnf(expr: Expr, negate: bool = False) -> Expr:
         return (Or(args) if isinstance(expr, And) else And(args)) if negate else type(expr)(args)
     if isinstance(expr, (Exists, ForAll)):
         body = nnf(expr.body, negate)
-        flip = {Exists: ForAll, ForAll: Exists}[type(expr)] if negate else type(expr)
-        return flip(expr.params, body)
+        existential = isinstance(expr, Exists) != negate
+        return Exists(expr.params, body) if existential else ForAll(expr.params, body)
     raise PlanningError(f"not a goal expression: {expr!r}")
 
 
