@@ -74,7 +74,10 @@ def scene_for_task(task_type: str, room_type: str, seed: int, catalog: Catalog |
     `run_episode(scene, task_type, ...)` finds a task (same seed, same room).
 
     Tries `DEFAULT_ROOM_TRIES` default rooms, then up to `TASK_DRAWS` rooms generated for a task drawn
-    from what the last default room holds, each draw and layout seed derived from `seed`.
+    from what the first default room that has such tasks holds, each draw and layout seed derived
+    from `seed`. A CDF cannot ask CSSG to keep area free on a receptacle, so a room generated for a task
+    is tested like a default one, and one that leaves no room for the put (two pillows on an ottoman)
+    gives way to the next draw.
 
     Raises:
         TaskSamplingError: no room tried supports such a task; the message names the task type, the
