@@ -5,8 +5,9 @@ length per type next to ALFRED's (spec 2.3, train means).
     python benchmarks/bench_oracle.py --n 50 --jobs 2   # the issue's figure (about 5 s per episode)
     python benchmarks/bench_oracle.py --n 5
 
-Rooms are default rooms of a room type the task type allows; where none of three supports a task of
-the type (two of a kind for pick_two), a room is generated for a drawn task ('for task' column).
+Rooms are default rooms of a room type the task type allows; where none of three holds a task of the
+type that fits physically (two of a kind for pick_two, room in the receptacle), a room is generated for a
+drawn task ('for task' column). 'no task' counts slots where no such room was found.
 Every episode is appended to a JSON-lines file (--out) as it finishes; a rerun with the same file
 skips the episodes already there, so a long run can be stopped and resumed.
 """

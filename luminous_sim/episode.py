@@ -9,6 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
+from luminous_sim.assets.catalog import Catalog
 from luminous_sim.assets.objio import write_atomic
 from luminous_sim.errors import FailureCode
 from luminous_sim.planning import Trajectory
@@ -66,12 +67,12 @@ def write_video(frames: list[np.ndarray], path: Path, fps: int = 6) -> Path:
     return path
 
 
-def _prepared_world(scene: Scene, task_type: str):
+def _prepared_world(scene: Scene, task_type: str, catalog: Catalog | None = None):
     """The world as ALFRED sets a scene up for a task: for cleaning, everything dirtyable is dirty."""
     from luminous_sim.vocab import abilities
     from luminous_sim.world import World
 
-    world = World(scene)
+    world = World(scene, catalog=catalog)
     if task_type == "pick_clean_then_place_in_recep":
         world.set_up_dirty([oid for oid, st in world.view().state.objects.items()
                             if abilities(st.object_type).dirtyable and abilities(st.object_type).pickupable])

@@ -1,6 +1,11 @@
-"""A generated room in which a task of a given type is feasible: a default room of the room type when
-one supports the task, else a room generated for a task drawn from what such a room holds (the
-paper's "given the tasks, resolve and generate appropriate scenes")."""
+"""A generated room in which a task of a given type is feasible, symbolically and physically: a default
+room of the room type when one supports the task, else a room generated for a task drawn from what such
+a room holds (the paper's "given the tasks, resolve and generate appropriate scenes").
+
+"Physically" is the test `run_episode` draws its task with (`planning.draw_task` in the world the
+episode builds): the task's put has a free, stable spot within reach and view, and its objects are seen
+from some reachable pose. A room that passes it is one in which `run_episode` finds a task.
+"""
 
 from __future__ import annotations
 
@@ -11,6 +16,7 @@ from luminous_sim.cssg import empty_cdf, generate
 from luminous_sim.errors import InfeasibleSceneError
 from luminous_sim.scene import Scene
 from luminous_sim.tasks import (
+    PddlParams,
     TaskError,
     TaskSamplingError,
     cdf_for_task,
@@ -21,39 +27,104 @@ from luminous_sim.tasks import (
 
 DEFAULT_ROOM_TRIES = 3
 """Default rooms tried before one is generated for the task."""
-TASK_DRAWS = 4
-"""Tasks drawn for a room generated for the task before giving up."""
+TASK_DRAWS = 6
+"""Rooms generated for drawn tasks (each a fresh draw and a fresh layout seed) before giving up."""
 TEMPLATE_TYPE: dict[str, str] = {"pick_two_obj_and_place": "pick_and_place_simple"}
 """Task types whose parameters can be drawn from another type's when no default room has two of a kind."""
+FIT_SEED = 0
+"""Seed of the task drawn by the physical check (which task is drawn does not matter, only whether one is)."""
+CAUSES_SHOWN = 3
+"""Causes named in the error when no room fits."""
+
+
+def physical_misfit(scene: Scene, task_type: str, catalog: Catalog | None = None) -> str | None:
+    """Why no `task_type` task fits `scene` physically, or None when one does.
+
+    Builds the world once, set up as `run_episode` sets it up, and draws a task through its read-only
+    view with `planning.draw_task`, the episode's own test.
+    """
+    from luminous_sim.episode import _prepared_world
+    from luminous_sim.planning import draw_task
+
+    world = _prepared_world(scene, task_type, catalog)
+    try:
+        draw_task(scene, world.view(), task_type, np.random.default_rng(FIT_SEED))
+    except TaskSamplingError as exc:
+        return str(exc)
+    finally:
+        world.close()
+    return None
+
+
+def _misfit(scene: Scene, task_type: str, catalog: Catalog | None) -> str | None:
+    """Why no `task_type` task is feasible in `scene`, symbolically first (cheap), then physically."""
+    try:
+        feasible_params(scene, state_from_scene(scene), task_type)
+    except TaskSamplingError as exc:
+        return str(exc)
+    return physical_misfit(scene, task_type, catalog)
+
+
+def _layout_seed(seq: np.random.SeedSequence) -> int:
+    return int(seq.generate_state(1, dtype=np.uint32)[0])
 
 
 def scene_for_task(task_type: str, room_type: str, seed: int, catalog: Catalog | None = None) -> Scene:
-    """A room of `room_type` with at least one feasible `task_type` task (same seed, same room).
+    """A room of `room_type` in which some `task_type` task is feasible and fits physically, so that
+    `run_episode(scene, task_type, ...)` finds a task (same seed, same room).
+
+    Tries `DEFAULT_ROOM_TRIES` default rooms, then up to `TASK_DRAWS` rooms generated for a task drawn
+    from what the first default room that has such tasks holds, each draw and layout seed derived
+    from `seed`. A CDF cannot ask CSSG to keep area free on a receptacle, so a room generated for a task
+    is tested like a default one, and one that leaves no room for the put (two pillows on an ottoman)
+    gives way to the next draw.
 
     Raises:
-        TaskSamplingError: neither a default room nor one generated for the task supports it.
-        InfeasibleSceneError: CSSG could not lay out the room generated for the task.
+        TaskSamplingError: no room tried supports such a task; the message names the task type, the
+            room type, the seed and the first causes.
     """
-    why = ""
+    causes: list[str] = []
+    template = TEMPLATE_TYPE.get(task_type, task_type)
+    cands: list[PddlParams] = []
     for attempt in range(DEFAULT_ROOM_TRIES):
         scene = generate(empty_cdf(room_type), seed=seed + 100_003 * attempt, catalog=catalog).scene
-        try:
-            feasible_params(scene, state_from_scene(scene), task_type)
+        why = _misfit(scene, task_type, catalog)
+        if why is None:
             return scene
-        except TaskSamplingError as exc:
-            why = str(exc)
-    rng = np.random.default_rng(np.random.SeedSequence([seed, 23]))
-    template = TEMPLATE_TYPE.get(task_type, task_type)
-    try:
-        cands = feasible_params(scene, state_from_scene(scene), template)
-    except TaskSamplingError as exc:
-        raise TaskSamplingError(f"no {room_type} supports a {task_type} task: {why}; {exc}") from exc
-    for _ in range(TASK_DRAWS):
+        causes.append(f"default room {attempt}: {why}")
+        if not cands:  # tasks to generate a room for: what the first room that has some holds
+            try:
+                cands = feasible_params(scene, state_from_scene(scene), template)
+            except TaskSamplingError as exc:
+                if template != task_type:
+                    causes.append(f"default room {attempt}: {exc}")
+    if not cands:
+        raise _no_scene(task_type, room_type, seed, causes)
+    draws_seq, *layout_seqs = np.random.SeedSequence([seed, 23]).spawn(1 + TASK_DRAWS)
+    rng = np.random.default_rng(draws_seq)
+    for layout_seq in layout_seqs:
         params = draw_params(cands, rng)
         try:
-            scene = generate(cdf_for_task(task_type, params, room_type), seed=seed, catalog=catalog).scene
-            feasible_params(scene, state_from_scene(scene), task_type)
-            return scene
+            cdf = cdf_for_task(task_type, params, room_type)
+            scene = generate(cdf, seed=_layout_seed(layout_seq), catalog=catalog).scene
         except (InfeasibleSceneError, TaskError) as exc:  # two boxes on a dresser; two towels on one hook
-            why = str(exc)
-    raise TaskSamplingError(f"no {room_type} could be generated for a {task_type} task: {why}")
+            causes.append(f"room for {_task_name(task_type, params)}: {exc}")
+            continue
+        why = _misfit(scene, task_type, catalog)
+        if why is None:
+            return scene
+        causes.append(f"room for {_task_name(task_type, params)}: {why}")
+    raise _no_scene(task_type, room_type, seed, causes)
+
+
+def _task_name(task_type: str, params: PddlParams) -> str:
+    """A short name of a drawn task for messages: type-object-mrecep-receptacle."""
+    return "-".join([task_type, params.object_type, params.mrecep_target or "None",
+                     params.parent_target or params.toggle_target])
+
+
+def _no_scene(task_type: str, room_type: str, seed: int, causes: list[str]) -> TaskSamplingError:
+    shown = "; ".join(causes[:CAUSES_SHOWN]) + (f"; and {len(causes) - CAUSES_SHOWN} more"
+                                                if len(causes) > CAUSES_SHOWN else "")
+    return TaskSamplingError(f"no {room_type} (seed {seed}) supports a {task_type} task that fits "
+                             f"physically, in {len(causes)} rooms tried: {shown}")

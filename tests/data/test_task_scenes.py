@@ -1,11 +1,22 @@
-"""Rooms generated to support a task type."""
+"""Rooms generated to support a task type: some task of the type is feasible and fits physically."""
 
 from __future__ import annotations
 
+import numpy as np
 import pytest
 
-from luminous_sim.data import scene_for_task
+from luminous_sim.data import scene_for_task, task_scenes
+from luminous_sim.planning import draw_task
 from luminous_sim.tasks import TaskSamplingError, feasible_params, state_from_scene
+from luminous_sim.world import World
+
+
+def _fits(scene, task_type: str) -> None:
+    """The episode's own test finds a task, whatever the draw's seed."""
+    with World(scene) as world:
+        for seed in (1, 7):
+            task = draw_task(scene, world.view(), task_type, np.random.default_rng(seed))
+            assert task.task_type == task_type
 
 
 @pytest.mark.parametrize(("task_type", "room"), [("pick_two_obj_and_place", "Bedroom"),
@@ -15,8 +26,53 @@ def test_scene_for_task_supports_the_task(task_type, room):
     scene = scene_for_task(task_type, room, seed=5)
     assert scene.room.room_type == room
     assert feasible_params(scene, state_from_scene(scene), task_type)
+    _fits(scene, task_type)
     again = scene_for_task(task_type, room, seed=5)
     assert again.model_dump_json() == scene.model_dump_json()
+
+
+@pytest.mark.parametrize(("task_type", "room", "seed"), [("pick_and_place_with_movable_recep", "Bedroom", 0),
+                                                          ("pick_two_obj_and_place", "LivingRoom", 0)])
+def test_a_task_fits_physically_where_only_a_symbolic_one_did(task_type, room, seed):
+    """The first default Bedroom of seed 0 holds movable-receptacle tasks only symbolically (a bowl or
+    a mug on a side table with room for neither): that room is passed over for one where a task fits."""
+    scene = scene_for_task(task_type, room, seed)
+    _fits(scene, task_type)
+    assert scene_for_task(task_type, room, seed).model_dump_json() == scene.model_dump_json()
+
+
+def test_default_rooms_that_do_not_fit_give_way_to_a_room_generated_for_a_task(monkeypatch):
+    real = task_scenes.physical_misfit
+    tried = []
+
+    def only_generated(scene, task_type, catalog=None):
+        tried.append(scene.source)
+        return "no room (default rooms refused by the test)" if not scene.source else real(scene, task_type, catalog)
+
+    monkeypatch.setattr(task_scenes, "physical_misfit", only_generated)
+    scene = scene_for_task("pick_and_place_simple", "Bedroom", seed=3)
+    assert scene.source and tried[:task_scenes.DEFAULT_ROOM_TRIES] == [""] * task_scenes.DEFAULT_ROOM_TRIES
+    monkeypatch.undo()
+    _fits(scene, "pick_and_place_simple")
+    monkeypatch.setattr(task_scenes, "physical_misfit", only_generated)
+    assert scene_for_task("pick_and_place_simple", "Bedroom", seed=3).model_dump_json() == scene.model_dump_json()
+
+
+def test_a_room_where_nothing_fits_physically_is_rejected(monkeypatch):
+    tried = []
+
+    def nothing_fits(scene, task_type, catalog=None):
+        tried.append(scene)
+        return "no free spot (test)"
+
+    monkeypatch.setattr(task_scenes, "physical_misfit", nothing_fits)
+    with pytest.raises(TaskSamplingError) as info:
+        scene_for_task("pick_and_place_simple", "Bedroom", seed=4)
+    message = str(info.value)
+    for part in ("pick_and_place_simple", "Bedroom", "seed 4", "no free spot (test)", "default room 0"):
+        assert part in message
+    assert len(tried) <= task_scenes.DEFAULT_ROOM_TRIES + task_scenes.TASK_DRAWS  # bounded
+    assert sum(bool(s.source) for s in tried) > 0  # rooms generated for drawn tasks were tried too
 
 
 def test_scene_for_task_refuses_a_room_type_the_task_excludes():

@@ -18,14 +18,8 @@ from luminous_sim.planning.trajectory import Trajectory
 from luminous_sim.tasks import TASK_TYPES, TaskSamplingError, task_info
 
 SEED = 0
-KNOWN_FAILURES = {
-    "pick_and_place_with_movable_recep": (
-        "scene_for_task checks tasks symbolically only: in the Bedroom of seed 0 every feasible "
-        "task puts a bowl or mug on the SideTable, which has room for neither, so draw_task "
-        "finds no task that fits physically"
-    ),
-}
-"""Types whose first seed fails today; strict, so a fix makes the test ask for the mark to go."""
+KNOWN_FAILURES: dict[str, str] = {}
+"""Types whose first seed fails today, with why; strict, so a fix makes the test ask for the mark to go."""
 CASES = [
     pytest.param(
         t, marks=pytest.mark.xfail(raises=TaskSamplingError, strict=True, reason=KNOWN_FAILURES[t])
