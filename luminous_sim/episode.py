@@ -67,7 +67,7 @@ def write_video(frames: list[np.ndarray], path: Path, fps: int = 6) -> Path:
     return path
 
 
-def _prepared_world(scene: Scene, task_type: str, catalog: Catalog | None = None):
+def prepared_world(scene: Scene, task_type: str, catalog: Catalog | None = None):
     """The world as ALFRED sets a scene up for a task: for cleaning, everything dirtyable is dirty."""
     from luminous_sim.vocab import abilities
     from luminous_sim.world import World
@@ -89,7 +89,7 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
     from luminous_sim.tasks.templates import task_description
 
     rng = np.random.default_rng(np.random.SeedSequence([seed, 11]))
-    world = _prepared_world(scene, task_type)
+    world = prepared_world(scene, task_type)
     unreachable: set[str] = set()
     full: set[str] = set()
     try:
@@ -101,7 +101,7 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
                 break
             unreachable.update(traj.unreachable)
             full.update(traj.full)
-            fresh = _prepared_world(scene, task_type)
+            fresh = prepared_world(scene, task_type)
             try:
                 redrawn = draw_task(scene, fresh.view(), task_type, rng, excluded=unreachable, full=full)
             except TaskSamplingError:  # nothing else to draw: the failed episode stands

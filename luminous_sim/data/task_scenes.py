@@ -43,10 +43,10 @@ def physical_misfit(scene: Scene, task_type: str, catalog: Catalog | None = None
     Builds the world once, set up as `run_episode` sets it up, and draws a task through its read-only
     view with `planning.draw_task`, the episode's own test.
     """
-    from luminous_sim.episode import _prepared_world
+    from luminous_sim.episode import prepared_world
     from luminous_sim.planning import draw_task
 
-    world = _prepared_world(scene, task_type, catalog)
+    world = prepared_world(scene, task_type, catalog)
     try:
         draw_task(scene, world.view(), task_type, np.random.default_rng(FIT_SEED))
     except TaskSamplingError as exc:
