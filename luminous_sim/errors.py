@@ -21,7 +21,9 @@ class FailureCode(StrEnum):
     UNKNOWN_ACTION = "unknown_action"
     """No such low-level action (or a planner-only action sent as a low-level one)."""
     INVALID_ARGUMENT = "invalid_argument"
-    """Malformed or out-of-range arguments (a moveMagnitude other than 0.25, a non-numeric x, ...)."""
+    """An argument the action does not take or that ALFRED's discrete agent cannot honour: an unknown key, a
+    value of the wrong type or not finite, a moveMagnitude other than 0.25, a turn other than 90 degrees, a
+    teleport off the 0.25 m grid (docs/failure_codes.md, "Action arguments")."""
     NO_TARGET = "no_target"
     """The action names no object: no id given, or its mask or point hits nothing to interact with."""
     UNKNOWN_OBJECT = "unknown_object"

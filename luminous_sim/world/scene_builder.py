@@ -68,8 +68,14 @@ def _apply_states(client: BulletClient, obj: SceneObject, loaded: LoadedAsset) -
 
 
 def floor_rectangles(poly) -> list[tuple[tuple[float, float], tuple[float, float]]]:
-    """Cover a rectilinear floor polygon with axis-aligned rectangles (vertical strips between vertices)."""
-    from shapely.geometry import box
+    """Cover a rectilinear floor polygon with axis-aligned rectangles (vertical strips between vertices).
+
+    Each strip's part of the polygon is a rectangle, up to floating point: two vertices meant to share an
+    x (2.755 and 2.7550000000000003 after buffering) leave a sliver of the neighbouring strip hanging off
+    it, and the bounds of that shape would cover floor outside the outline. Such a shape is cut at the
+    strip's middle instead, where it is the strip's true cross-section.
+    """
+    from shapely.geometry import LineString, box
 
     xs = sorted({round(x, 6) for x, _ in poly.exterior.coords})
     miny, maxy = poly.bounds[1], poly.bounds[3]
@@ -79,7 +85,13 @@ def floor_rectangles(poly) -> list[tuple[tuple[float, float], tuple[float, float
         for g in getattr(piece, "geoms", [piece]):
             if g.area > 1e-9:
                 bx0, by0, bx1, by1 = g.bounds
-                out.append(((bx0, by0), (bx1, by1)))
+                if g.area >= (bx1 - bx0) * (by1 - by0) - 1e-9:
+                    out.append(((bx0, by0), (bx1, by1)))
+                    continue
+                mid = g.intersection(LineString([((x0 + x1) / 2, by0 - 1), ((x0 + x1) / 2, by1 + 1)]))
+                for span in getattr(mid, "geoms", [mid]):
+                    if span.length > 1e-9:
+                        out.append(((bx0, span.bounds[1]), (bx1, span.bounds[3])))
     return out
 
 

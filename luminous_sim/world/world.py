@@ -1,7 +1,8 @@
 """A World: one scene in one PyBullet client, ALFRED's agent in it, and its low-level actions.
 
 Every action returns a StepResult; a failed or invalid action never raises and leaves the world as
-it was (lastActionSuccess false, errorMessage set), as AI2-THOR does.
+it was (lastActionSuccess false, errorMessage set), as AI2-THOR does. Arguments are checked first
+(`arguments`): one that ALFRED's discrete agent cannot honour is refused, never ignored.
 """
 
 from __future__ import annotations
@@ -16,6 +17,7 @@ from luminous_sim.errors import FailureCode
 from luminous_sim.scene.model import Scene
 from luminous_sim.vocab import AGENT_ACTIONS, INTERACTION_ACTIONS, TELEPORT_ACTIONS
 from luminous_sim.world.agent import AgentPose
+from luminous_sim.world.arguments import argument_failure, shown, teleport_pose
 from luminous_sim.world.camera import Frame, render
 from luminous_sim.world.client import body_aabb
 from luminous_sim.world.config import WorldConfig
@@ -31,7 +33,7 @@ def _action_dict(action: str | dict[str, Any], kwargs: dict[str, Any]) -> dict[s
         return {"action": action, **kwargs}
     if isinstance(action, dict) and isinstance(action.get("action"), str):
         return {**action, **kwargs}
-    return {"action": repr(action)}
+    return {"action": shown(action)}
 
 
 class World:
@@ -102,17 +104,22 @@ class World:
         name = act["action"]
         self._started = True
         try:
-            if name in AGENT_ACTIONS:
+            known = name in AGENT_ACTIONS or name in INTERACTION_ACTIONS
+            why = argument_failure(act, (self.config.height, self.config.width)) if known else None
+            if why is not None:
+                result = StepResult.of(why, act)
+            elif name in AGENT_ACTIONS:
                 result = self._navigate(name, act)
                 if result.success and self.interactions.held:
                     self.interactions.carry(self.interactions.held)
             elif name in INTERACTION_ACTIONS:
                 result = self.interactions.run(name, act)
             else:
-                result = StepResult.fail(FailureCode.UNKNOWN_ACTION, f"unknown action {name!r}; expected one of "
+                result = StepResult.fail(FailureCode.UNKNOWN_ACTION, f"unknown action {shown(name)}; expected one of "
                                          f"{', '.join(AGENT_ACTIONS + INTERACTION_ACTIONS)}", act)
         except (KeyError, ValueError, TypeError) as exc:  # malformed arguments from an agent
-            result = StepResult.fail(FailureCode.INVALID_ARGUMENT, f"invalid arguments for {name}: {exc}", act)
+            result = StepResult.fail(FailureCode.INVALID_ARGUMENT, f"invalid arguments for {name}: {shown(exc, 200)}",
+                                     act)
         if result.success:
             self._frame = None
         self.last = StepResult(result.success, result.error, act, result.code)
@@ -121,10 +128,6 @@ class World:
     def _navigate(self, name: str, act: dict[str, Any]) -> StepResult:
         pose = self.agent
         if name == "MoveAhead":
-            magnitude = float(act.get("moveMagnitude", 0.25))
-            if abs(magnitude - 0.25) > 1e-6:
-                return StepResult.fail(FailureCode.INVALID_ARGUMENT,
-                                       "MoveAhead moves 0.25 m (moveMagnitude must be 0.25)", act)
             if not self.nav.can_move(pose):
                 return StepResult.fail(FailureCode.BLOCKED,
                                        "blocked: MoveAhead would leave the navigable floor or hit something", act)
@@ -138,16 +141,12 @@ class World:
                                        f"{name}: the horizon must stay within -30..60 degrees", act)
             self.agent = looked
         elif name in TELEPORT_ACTIONS:
-            x, y = float(act["x"]), float(act["z"] if "z" in act else act["y"])
-            rot = int(act.get("rotation", pose.rotation)) % 360
-            hor = int(act.get("horizon", pose.horizon))
-            target = AgentPose(round(x, 4), round(y, 4), rot, hor)
-            if rot % 90 or hor % 15 or not -30 <= hor <= 60:
-                return StepResult.fail(FailureCode.INVALID_ARGUMENT,
-                                       "Teleport needs a rotation in 0/90/180/270 and a horizon in -30..60 (15s)", act)
+            target = teleport_pose(act, pose, self.nav)
+            if not isinstance(target, AgentPose):
+                return StepResult.of(target, act)
             if target.grid_key() not in self.nav:
-                return StepResult.fail(FailureCode.BLOCKED, f"Teleport target ({x}, {y}) is not on the navigable grid",
-                                       act)
+                return StepResult.fail(FailureCode.BLOCKED,
+                                       f"{name} target ({target.x:g}, {target.y:g}) is not on the navigable grid", act)
             self.agent = target
         return StepResult.ok(act)
 

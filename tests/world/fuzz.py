@@ -40,6 +40,25 @@ def random_action(world, rng: np.random.Generator) -> dict:
     return garbage[int(rng.integers(len(garbage)))]
 
 
+RESULT_KEYS = ("lastAction", "lastActionSuccess", "errorMessage")
+"""Metadata that reports the last action rather than the world."""
+
+
+def snapshot(world) -> dict:
+    """Everything an action could change: the agent's pose, what is held, the pure state, the metadata,
+    and every body's pose, joint positions and colours, read from PyBullet."""
+    c = world.client
+    bodies = {}
+    for oid, loaded in sorted(world.built.objects.items()):
+        b = loaded.body
+        joints = tuple(c.getJointState(b, j)[0] for j in range(c.getNumJoints(b)))
+        colours = tuple((v[1], v[7]) for v in c.getVisualShapeData(b))  # (link, rgba)
+        bodies[oid] = (c.getBasePositionAndOrientation(b), joints, colours)
+    view = world.view()
+    metadata = {k: v for k, v in view.metadata().items() if k not in RESULT_KEYS}
+    return {"agent": view.agent, "held": view.held, "state": view.state, "metadata": metadata, "bodies": bodies}
+
+
 def check_world(world) -> list[str]:
     """Problems: non-finite poses, objects outside the room or under the floor."""
     minx, miny, maxx, maxy = world.scene.room.bounds
