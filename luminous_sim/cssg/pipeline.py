@@ -216,7 +216,9 @@ def sample_layout(cdf: ChallengeDefinition, shell: RoomShell, rng: np.random.Gen
         if not ok and (backtracks >= BACKTRACKS or undo_floor[i] > i) and _fails_for_good(req, draft, ctx, unplaced):
             return draft, check_layout(draft, requests[:i + 1], ctx, unplaced, attempt, stopped_after=req.name)
         i += 1
-    return draft, check_layout(draft, requests, ctx, unplaced, attempt)
+    report = check_layout(draft, requests, ctx, unplaced, attempt)
+    report.ignored_attributes = {r.name: sorted(r.attributes) for r in requests if r.name in bound and r.attributes}
+    return draft, report
 
 
 def _undo_floors(requests: list[Request]) -> list[float]:

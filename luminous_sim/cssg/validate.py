@@ -40,6 +40,9 @@ class LayoutReport:
     required: list[str] = field(default_factory=list)
     stopped_after: str | None = None
     """The request after which a sample that could no longer pass was stopped (None: it ran to the end)."""
+    ignored_attributes: dict[str, list[str]] = field(default_factory=dict)
+    """CDF object -> the attributes (size, colour, material) not applied because the object is one of the
+    room's own fixtures (the kitchen's fridge), which keeps its asset."""
 
     @property
     def ok(self) -> bool:

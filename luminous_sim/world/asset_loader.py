@@ -5,11 +5,10 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 
 import numpy as np
-import pybullet as p
-from pybullet_utils.bullet_client import BulletClient
 
 from luminous_sim.assets.catalog import AssetEntry
 from luminous_sim.errors import AssetError
+from luminous_sim.world.client import BulletClient, p
 
 
 @dataclass

@@ -5,8 +5,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
-import pybullet as p
-from pybullet_utils.bullet_client import BulletClient
+
+from luminous_sim.world.client import BulletClient, p
 
 
 @dataclass(frozen=True)

@@ -6,8 +6,6 @@ from dataclasses import dataclass, field
 from itertools import pairwise
 
 import numpy as np
-import pybullet as p
-from pybullet_utils.bullet_client import BulletClient
 
 from luminous_sim.assets.catalog import Catalog, default_catalog
 from luminous_sim.assets.materials import palette
@@ -19,7 +17,7 @@ from luminous_sim.world.asset_loader import (
     set_joint,
     show_state,
 )
-from luminous_sim.world.client import new_client
+from luminous_sim.world.client import BulletClient, new_client, p
 
 
 @dataclass

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import json
 import os
 import subprocess
 import sys
@@ -154,6 +155,25 @@ def test_new_client_prints_nothing(capfd):
     client.disconnect()
     out = capfd.readouterr()
     assert out.out == "" and "argv[0]" not in out.err
+
+
+@pytest.mark.parametrize("module", ["camera", "asset_loader", "scene_builder", "physics_check", "world"])
+def test_importing_any_world_module_first_prints_nothing(module):
+    """PyBullet prints its build time when first imported: whichever world module comes first, nothing shows."""
+    proc = subprocess.run([sys.executable, "-c", f"import luminous_sim.world.{module}"], capture_output=True,
+                          text=True, timeout=120, cwd=REPO, env={**os.environ, "PYTHONPATH": str(REPO)})
+    assert proc.returncode == 0 and proc.stdout == "" and proc.stderr == ""
+
+
+def test_attributes_of_a_cdf_object_bound_to_the_rooms_own_fixture_are_reported(tmp_path, capsys):
+    """A kitchen's fridge is the room's own: a colour asked of it cannot be applied, and that is said."""
+    cdf = tmp_path / "fridge.yaml"
+    cdf.write_text("cdf_version: 2\nname: red_fridge\nscene:\n  room_type: Kitchen\n  objects:\n"
+                   "    - {name: fridge, type: Fridge, attributes: {colour: red}}\n")
+    assert main(["generate", "--cdf", str(cdf), "--seed", "0", "--out", str(tmp_path / "out"), "--no-physics"]) == 0
+    assert "fridge is the room's own Fridge; its attributes colour were not applied" in capsys.readouterr().out
+    report = json.loads((tmp_path / "out" / "report.json").read_text())
+    assert report["layout"]["ignored_attributes"] == {"fridge": ["colour"]}
 
 
 # item 11: YAML errors name the file; lists are called lists
