@@ -4,3 +4,7 @@ from luminous_sim.errors import LuminousError
 
 __all__ = ["LuminousError", "__version__"]
 __version__ = "0.1.0"
+
+from luminous_sim.env.registration import register_envs as _register_envs
+
+_register_envs()  # Gymnasium ids from envs/*.toml, by string entry point: no simulator import
