@@ -30,7 +30,7 @@ from __future__ import annotations
 
 import string
 from dataclasses import dataclass
-from typing import Any, ClassVar
+from typing import Any
 
 import gymnasium
 import numpy as np
@@ -46,7 +46,8 @@ from luminous_sim.errors import FailureCode
 from luminous_sim.vocab import ALL_TYPES
 
 INSTRUCTION_CHARSET = string.ascii_letters + string.digits + " .,;:'!?-()\n"
-MAX_INSTRUCTION = 400
+MAX_INSTRUCTION = 1000
+"""Characters of `instruction` kept (a directive is under 100; step instructions add about 60 a step)."""
 DEPTH_FAR = 20.0
 """The camera's far plane (metres): the largest depth."""
 POSE_BOUND = 1000.0
@@ -69,7 +70,7 @@ def _clean_text(text: str) -> str:
 class LuminousEnv(gymnasium.Env):
     """ALFRED's low-level actions, observations and limits in a generated room; see the module docstring."""
 
-    metadata: ClassVar[dict[str, Any]] = {"render_modes": ["rgb_array"], "render_fps": 6}
+    metadata: dict[str, Any] = {"render_modes": ["rgb_array"], "render_fps": 6}  # noqa: RUF012  (as gymnasium.Env)
 
     def __init__(self, render_mode: str | None = None, **kwargs: Any):
         if render_mode is not None and render_mode not in self.metadata["render_modes"]:
@@ -216,7 +217,7 @@ class LuminousEnv(gymnasium.Env):
         frame = self.world.frame()
         c = self.config
         obs: dict[str, Any] = {"rgb": np.ascontiguousarray(frame.rgb[..., :3], dtype=np.uint8),
-                               "instruction": _clean_text(self.episode.goal.instruction)}
+                               "instruction": self._instruction()}
         if c.depth:
             obs["depth"] = np.clip(frame.depth, 0.0, DEPTH_FAR).astype(np.float32)[..., None]
         if c.segmentation:
@@ -229,6 +230,14 @@ class LuminousEnv(gymnasium.Env):
             kind = self.world.view().state.objects[held].object_type if held else None
             obs["inventory"] = ALL_TYPES.index(kind) + 1 if kind in ALL_TYPES else 0
         return obs
+
+    def _instruction(self) -> str:
+        """The goal directive, then (with `step_instructions`) the expert plan's step instructions."""
+        assert self.episode is not None
+        text = self.episode.goal.instruction
+        if self.config.step_instructions and self.episode.expert is not None:
+            text = " ".join((text.rstrip(".") + ".", *self.episode.expert.steps))
+        return _clean_text(text)
 
     def _info(self, code: FailureCode | None, error: str) -> dict[str, Any]:
         assert self.episode is not None
@@ -262,7 +271,7 @@ class LuminousEnv(gymnasium.Env):
             "np_random": self._np_random,
             "episode": None if ep is None else {
                 "scene": ep.scene.to_json(), "goal": ep.goal.to_dict(), "dirty": list(ep.dirty),
-                "expert": None if ep.expert is None else list(ep.expert.actions)},
+                "expert": None if ep.expert is None else [list(ep.expert.actions), list(ep.expert.steps)]},
             "history": [(s.given, s.api, s.ok) for s in self.history],
             "counters": (self._steps, self._failures, self._reached),
         }
@@ -276,7 +285,8 @@ class LuminousEnv(gymnasium.Env):
         data = state["episode"]
         if data is None:
             return
-        expert = None if data["expert"] is None else ExpertPlan(tuple(data["expert"]))
+        plan = data["expert"]
+        expert = None if plan is None else ExpertPlan(tuple(plan[0]), steps=tuple(plan[1]))
         self.episode = Episode(Scene.from_json(data["scene"]), goal_from_dict(data["goal"]),
                                tuple(data["dirty"]), expert)
         self.world = build_world(self.episode.scene, self.config, self.episode.dirty)

@@ -45,6 +45,8 @@ class EnvConfig:
         segmentation: add a `segmentation` observation (int32 instance index, -1 for background).
         pose: add a `pose` observation (x, y metres, yaw and horizon degrees).
         inventory: add an `inventory` observation (index of the held object's type, 0 for none).
+        step_instructions: follow the goal directive in `instruction` with step-by-step instructions (the
+            language layer's templates over the expert's plan; needs `verify_expert`).
         max_steps: episode truncated after this many steps (ALFRED: 1000).
         max_failures: episode truncated after this many failed actions (ALFRED: 10).
         reward_mode: `dense` (ALFRED's configuration driven by the goal conditions) or `sparse`.
@@ -66,6 +68,7 @@ class EnvConfig:
     segmentation: bool = False
     pose: bool = False
     inventory: bool = False
+    step_instructions: bool = False
     max_steps: int = 1000
     max_failures: int = 10
     reward_mode: str = "dense"
@@ -103,6 +106,8 @@ class EnvConfig:
         for name in ("width", "height", "grid", "max_steps", "max_failures", "scene_attempts"):
             if getattr(self, name) < 1:
                 raise LuminousError(f"env config {name}: expected a positive integer, got {getattr(self, name)}")
+        if self.step_instructions and not self.verify_expert:
+            raise LuminousError("env config step_instructions: needs verify_expert (they describe the expert's plan)")
         if self.grid > min(self.width, self.height):
             raise LuminousError(f"env config grid: {self.grid} points a side do not fit a {self.width}x{self.height}"
                                 " image")

@@ -111,7 +111,7 @@ def _prove(episode: Episode, config: EnvConfig) -> ExpertPlan | None:
         ok = ok and scores == episode.goal.weights()
     finally:
         replay.close()
-    return ExpertPlan(plan.actions, exact=True) if ok else None
+    return ExpertPlan(plan.actions, exact=True, steps=plan.steps) if ok else None
 
 
 def draw_episode(config: EnvConfig, rng: np.random.Generator, scene: Scene | None = None) -> tuple[Episode, World]:

@@ -12,7 +12,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import Any, Protocol
 
+import numpy as np
+
 from luminous_sim.cdf.predicates import Atom, Exists, Param
+from luminous_sim.language import Describer
 from luminous_sim.tasks import PLAN_ORDER, PddlParams, TaskInstance
 from luminous_sim.world import World, WorldView
 
@@ -29,6 +32,8 @@ class ExpertPlan:
 
     actions: tuple[dict[str, Any], ...]
     exact: bool = True
+    steps: tuple[str, ...] = ()
+    """Step-by-step instructions, one per subgoal (the language layer's templates), when known."""
 
 
 class Goal(Protocol):
@@ -91,7 +96,9 @@ class TaskGoal:
         view = world.view()
         if not traj.success or not self.conditions.success(view.state, set(view.visible_objects())):
             return None
-        return ExpertPlan(tuple(a["api_action"] for a in traj.low_actions), exact=not traj.failures)
+        rng = np.random.default_rng(np.random.SeedSequence([world.scene.seed, 11]))
+        steps = tuple(Describer(view, rng).describe(traj, self.instruction).high_descs)
+        return ExpertPlan(tuple(a["api_action"] for a in traj.low_actions), exact=not traj.failures, steps=steps)
 
     def to_dict(self) -> dict[str, Any]:
         return {"kind": "task", "task": self.task.to_dict()}

@@ -198,3 +198,14 @@ def test_bad_options_are_named():
         LuminousEnv(colour="red")
     with pytest.raises(LuminousError, match="unknown term"):
         LuminousEnv(reward={"bonus": 1.0})
+
+
+def test_step_instructions_follow_the_directive():
+    env = gymnasium.make("Luminous-ALFRED-PickPlace-v0", step_instructions=True, room_types=["Bathroom"]).unwrapped
+    obs, _ = env.reset(seed=0)
+    directive = env.episode.goal.instruction
+    assert obs["instruction"].startswith(directive + ". ") and len(obs["instruction"]) > len(directive) + 20
+    assert env.observation_space.contains(obs)
+    with pytest.raises(LuminousError, match="step_instructions"):
+        LuminousEnv(step_instructions=True, verify_expert=False)
+    env.close()

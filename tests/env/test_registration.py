@@ -88,3 +88,14 @@ def test_a_bad_spec_names_the_file_and_the_key(text, message):
         read_spec(text.replace("[[env]]\nid = 'X-v0'\n", "[family]\nentry_point = 'm:C'\n[[env]]\nid = 'X-v0'\n")
                   if "entry_point" not in text and "id = 'X-v0'" in text else text, "bad.toml")
     assert message in str(err.value)
+
+
+def test_without_the_repository_folder_the_shipped_specs_are_read(monkeypatch):
+    from luminous_sim.env import registration
+
+    ids = [e.id for e in load_entries()]
+    monkeypatch.setattr(registration, "REPO_SPECS", REPO / "no-such-folder")
+    files = registration.spec_files()
+    assert [f.name for f in files] == sorted(p.name for p in REPO_SPECS.glob("*.toml"))
+    assert "luminous_sim" in str(files[0]) and "specs" in str(files[0])
+    assert [e.id for e in registration.load_entries()] == ids
