@@ -1,20 +1,26 @@
-"""The flat action space: ALFRED's navigation actions, Stop, and each interaction on a k x k grid of image
-points, and the full ALFRED form (a dict) that `LuminousEnv.step` takes as well.
+"""The flat action spaces: ALFRED's navigation actions, Stop, and each interaction on one of m targets,
+and the full ALFRED form (a dict) that `LuminousEnv.step` takes as well.
 
-Index layout (k = `grid`, n = k * k)::
+Two kinds of target (`EnvConfig.targets`):
 
-    0..4   MoveAhead, RotateLeft, RotateRight, LookUp, LookDown
-    5      Stop
-    6 + i * n + r * k + c   interaction i (PickupObject, PutObject, OpenObject, CloseObject,
-                            ToggleObjectOn, ToggleObjectOff, SliceObject) at grid row r, column c
+* `points` (the default): a k x k grid of image points (m = k * k). Target (r, c) is the pixel at the
+  centre of that cell, x = (c + 0.5) * width / k, y likewise; it goes to `World.step` as ALFRED's `point`
+  (`PutObject` puts the held object on what the point shows).
+* `objects` (for research): m visible-object slots. The env lists the objects in view and within reach
+  that some interaction applies to (the held one aside), most pixels first, in its `objects` observation;
+  slot i names the i-th of them by object id. An empty slot is a failed action (`no_target`).
 
-Grid point (r, c) is the pixel at the centre of that cell: x = (c + 0.5) * width / k, y likewise.
-An interaction's point goes to `World.step` as ALFRED's `point` target (`PutObject` puts the held object
-on what the point shows).
+Index layout::
+
+    0..4        MoveAhead, RotateLeft, RotateRight, LookUp, LookDown
+    5           Stop
+    6 + i*m + t interaction i (PickupObject, PutObject, OpenObject, CloseObject, ToggleObjectOn,
+                ToggleObjectOff, SliceObject) on target t (a grid cell r * k + c, or a slot)
 """
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -29,6 +35,11 @@ INTERACTIONS: tuple[str, ...] = (
 )
 ALFRED_ACTIONS = frozenset(NAVIGATION + INTERACTIONS)
 """What the dict form may name (besides Stop): ALFRED's low-level actions, no teleports."""
+TARGET_KINDS: tuple[str, ...] = ("points", "objects")
+
+
+class EmptySlot(LookupError):
+    """An object-slot action names a slot with no object in it."""
 
 
 def nav_api(name: str) -> dict[str, Any]:
@@ -38,18 +49,40 @@ def nav_api(name: str) -> dict[str, Any]:
     return {"action": name, "forceAction": True}
 
 
+def interaction_api(name: str, target: dict[str, Any]) -> dict[str, Any]:
+    """The api action of an interaction on a target (`{"point": ...}` or `{"objectId": ...}`)."""
+    if name == "PutObject":
+        key = "receptacleObjectId" if "objectId" in target else "point"
+        return {"action": name, key: target.get("objectId", target.get("point")), "forceAction": True,
+                "placeStationary": True}
+    return {"action": name, **target}
+
+
 @dataclass(frozen=True)
 class ActionTable:
-    """Discrete index <-> api action, for one image size and grid."""
+    """Discrete index <-> api action, for one image size and kind of target.
+
+    Attributes:
+        width: image width (pixels).
+        height: image height (pixels).
+        grid: k, the grid's side (`points` targets).
+        slots: the number of object slots; 0 for `points` targets.
+    """
 
     width: int
     height: int
     grid: int
+    slots: int = 0
+
+    @property
+    def targets(self) -> int:
+        """m, the targets per interaction."""
+        return self.slots or self.grid**2
 
     @property
     def n(self) -> int:
         """The number of discrete actions."""
-        return len(NAVIGATION) + 1 + len(INTERACTIONS) * self.grid**2
+        return len(NAVIGATION) + 1 + len(INTERACTIONS) * self.targets
 
     @property
     def first_interaction(self) -> int:
@@ -64,11 +97,16 @@ class ActionTable:
         """Every grid point, in cell order."""
         return [self.point(i) for i in range(self.grid**2)]
 
-    def decode(self, index: int) -> dict[str, Any]:
+    def decode(self, index: int, slots: Sequence[str] = ()) -> dict[str, Any]:
         """The api action of a discrete index (`{"action": "Stop"}` for Stop).
+
+        Args:
+            index: the action.
+            slots: the object ids in the slots now (`objects` targets).
 
         Raises:
             IndexError: the index is outside the space.
+            EmptySlot: an object-slot action on an empty slot.
         """
         if not 0 <= index < self.n:
             raise IndexError(f"action {index} is outside 0..{self.n - 1}")
@@ -76,22 +114,23 @@ class ActionTable:
             return nav_api(NAVIGATION[index])
         if index == len(NAVIGATION):
             return {"action": STOP}
-        kind, cell = divmod(index - self.first_interaction, self.grid**2)
-        x, y = self.point(cell)
-        api: dict[str, Any] = {"action": INTERACTIONS[kind], "point": [x, y]}
-        if INTERACTIONS[kind] == "PutObject":
-            api.update(forceAction=True, placeStationary=True)
-        return api
+        kind, t = divmod(index - self.first_interaction, self.targets)
+        name = INTERACTIONS[kind]
+        if not self.slots:
+            return interaction_api(name, {"point": list(self.point(t))})
+        if t >= len(slots):
+            raise EmptySlot(f"{name} on object slot {t}, which is empty ({len(slots)} objects in view)")
+        return interaction_api(name, {"objectId": slots[t]})
 
-    def index(self, name: str, cell: int | None = None) -> int:
-        """The discrete index of a navigation action, Stop, or an interaction at grid cell `cell`."""
+    def index(self, name: str, target: int | None = None) -> int:
+        """The discrete index of a navigation action, Stop, or an interaction on target `target`."""
         if name in NAVIGATION:
             return NAVIGATION.index(name)
         if name in STOP_NAMES:
             return len(NAVIGATION)
-        if cell is None or not 0 <= cell < self.grid**2:
-            raise ValueError(f"{name} needs a grid cell in 0..{self.grid**2 - 1}, got {cell}")
-        return self.first_interaction + INTERACTIONS.index(name) * self.grid**2 + cell
+        if target is None or not 0 <= target < self.targets:
+            raise ValueError(f"{name} needs a target in 0..{self.targets - 1}, got {target}")
+        return self.first_interaction + INTERACTIONS.index(name) * self.targets + target
 
     def cell_on(self, mask: np.ndarray) -> int | None:
         """The first grid cell (row-major) whose point lies on a boolean (H, W) mask, if any."""
@@ -101,8 +140,11 @@ class ActionTable:
         return None
 
     def labels(self) -> list[str]:
-        """A readable name per index: `MoveAhead`, `Stop`, `PickupObject@(r,c)`."""
+        """A readable name per index: `MoveAhead`, `Stop`, `PickupObject@(r,c)` or `PickupObject#slot`."""
         out = list(NAVIGATION) + [STOP]
         for name in INTERACTIONS:
-            out += [f"{name}@({r},{c})" for r in range(self.grid) for c in range(self.grid)]
+            if self.slots:
+                out += [f"{name}#{t}" for t in range(self.slots)]
+            else:
+                out += [f"{name}@({r},{c})" for r in range(self.grid) for c in range(self.grid)]
         return out

@@ -1,12 +1,15 @@
 """`LuminousEnv`: ALFRED-style household tasks in generated rooms, as a Gymnasium environment.
 
-Observations (a `Dict`): `rgb` (H, W, 3) uint8; `instruction` (`Text`: the goal directive); optionally
+Observations (a `Dict`): `rgb` (H, W, 3) uint8; `instruction` (`Text`: the goal directive, and with
+`step_instructions` the expert plan's step-by-step instructions after it); with `objects` targets,
+`objects` (the type of the object in each slot, as `inventory` gives it); optionally
 `depth` (H, W, 1) float32 metres, `segmentation` (H, W) int32 instance ids (PyBullet bodies, -1 for none),
 `pose` (x, y metres, yaw and horizon degrees) and `inventory` (the held object's type, an index into
 `luminous_sim.vocab.ALL_TYPES` plus one; 0 for nothing).
 
 Actions: a `Discrete` index (see `luminous_sim.env.actions`: navigation, Stop, each interaction on a k x k
-grid of image points), or the full ALFRED form for ALFRED-style agents, a dict::
+grid of image points, or with `targets="objects"` on visible-object slots), or the full ALFRED form for
+ALFRED-style agents, a dict::
 
     {"action": "PickupObject", "mask": rle}            # or "point": [x, y], or "objectId": id
     {"action": "PutObject", "mask": rle}               # puts the held object on what the mask shows
@@ -36,14 +39,14 @@ import gymnasium
 import numpy as np
 from gymnasium import spaces
 
-from luminous_sim.env.actions import ALFRED_ACTIONS, INTERACTIONS, NAVIGATION, STOP_NAMES, ActionTable
+from luminous_sim.env.actions import ALFRED_ACTIONS, INTERACTIONS, NAVIGATION, STOP_NAMES, ActionTable, EmptySlot
 from luminous_sim.env.config import EnvConfig
 from luminous_sim.env.episodes import Episode, build_world, draw_episode
 from luminous_sim.env.expert import Expert
 from luminous_sim.env.goals import goal_from_dict
 from luminous_sim.env.rewards import RewardConfig, step_reward
 from luminous_sim.errors import FailureCode
-from luminous_sim.vocab import ALL_TYPES
+from luminous_sim.vocab import ALL_TYPES, abilities
 
 INSTRUCTION_CHARSET = string.ascii_letters + string.digits + " .,;:'!?-()\n"
 MAX_INSTRUCTION = 1000
@@ -60,6 +63,16 @@ class Sent:
     given: Any
     api: dict[str, Any]
     ok: bool
+
+
+def _type_index(object_type: str | None) -> int:
+    """An object type as an observation: its index in `ALL_TYPES` plus one; 0 for none."""
+    return ALL_TYPES.index(object_type) + 1 if object_type in ALL_TYPES else 0
+
+
+def _interactable(object_type: str) -> bool:
+    ab = abilities(object_type)
+    return ab.pickupable or ab.receptacle or ab.openable or ab.toggleable or ab.sliceable
 
 
 def _clean_text(text: str) -> str:
@@ -79,7 +92,7 @@ class LuminousEnv(gymnasium.Env):
         self.config = EnvConfig.from_kwargs(kwargs)
         self.rewards = RewardConfig.of(self.config.reward_mode, self.config.reward)
         c = self.config
-        self.actions = ActionTable(c.width, c.height, c.grid)
+        self.actions = ActionTable(c.width, c.height, c.grid, c.object_slots if c.targets == "objects" else 0)
         self.action_space = spaces.Discrete(self.actions.n)
         obs: dict[str, spaces.Space] = {
             "rgb": spaces.Box(0, 255, (c.height, c.width, 3), np.uint8),
@@ -94,10 +107,14 @@ class LuminousEnv(gymnasium.Env):
                                      np.array([POSE_BOUND, POSE_BOUND, 270, 60], np.float32), dtype=np.float32)
         if c.inventory:
             obs["inventory"] = spaces.Discrete(len(ALL_TYPES) + 1)
+        if self.actions.slots:
+            obs["objects"] = spaces.MultiDiscrete(np.full(self.actions.slots, len(ALL_TYPES) + 1, np.int64))
         self.observation_space = spaces.Dict(obs)
         self.world: Any = None
         self.episode: Episode | None = None
         self.history: list[Sent] = []
+        self._slots: list[str] = []
+        """The object ids in the slots of the last observation (`objects` targets)."""
         self._expert = Expert()
         self._scores: dict[str, int] = {}
         self._steps = 0
@@ -168,8 +185,9 @@ class LuminousEnv(gymnasium.Env):
 
     def expert_action(self) -> int | dict[str, Any]:
         """The expert's next action in this env's action form: a discrete index when one names what the
-        expert means (for an interaction, a grid point on its target), else the ALFRED dict with the
-        object id (the target covers no grid point); Stop when the expert has nothing left to do."""
+        expert means (for an interaction, a grid point on its target, or its slot), else the ALFRED dict
+        with the object id (the target covers no grid point, or has no slot); Stop when the expert has
+        nothing left to do."""
         api = self._expert.next_api(self)
         action = self._env_action(api)
         self._expert.suggested(len(self.history), action)
@@ -182,6 +200,9 @@ class LuminousEnv(gymnasium.Env):
         if name in NAVIGATION:
             return self.actions.index(name)
         target = api.get("receptacleObjectId") if name == "PutObject" else api.get("objectId")
+        if self.actions.slots:
+            slot = self._slots.index(target) if target in self._slots else None
+            return self.actions.index(name, slot) if slot is not None else dict(api)
         mask = self.world.instance_masks().get(target) if name in INTERACTIONS else None
         cell = self.actions.cell_on(mask) if mask is not None else None
         return self.actions.index(name, cell) if cell is not None else dict(api)
@@ -195,7 +216,10 @@ class LuminousEnv(gymnasium.Env):
         if isinstance(action, (int, np.integer)) and not isinstance(action, bool):
             if not 0 <= int(action) < self.actions.n:
                 return None, FailureCode.INVALID_ARGUMENT, f"action {action} is outside 0..{self.actions.n - 1}"
-            return self.actions.decode(int(action)), None, ""
+            try:
+                return self.actions.decode(int(action), self._slots), None, ""
+            except EmptySlot as exc:
+                return None, FailureCode.NO_TARGET, str(exc)
         if isinstance(action, dict) and isinstance(action.get("action"), str):
             name = action["action"]
             if name in STOP_NAMES or name in ALFRED_ACTIONS:
@@ -225,11 +249,22 @@ class LuminousEnv(gymnasium.Env):
         if c.pose:
             p = self.world.agent
             obs["pose"] = np.array([p.x, p.y, p.rotation % 360, p.horizon], np.float32)
+        state = self.world.view().state
         if c.inventory:
-            held = self.world.view().held
-            kind = self.world.view().state.objects[held].object_type if held else None
-            obs["inventory"] = ALL_TYPES.index(kind) + 1 if kind in ALL_TYPES else 0
+            obs["inventory"] = _type_index(state.objects[state.held].object_type if state.held else None)
+        if self.actions.slots:
+            self._slots = self._visible_slots()
+            kinds = [_type_index(state.objects[o].object_type) for o in self._slots]
+            obs["objects"] = np.array(kinds + [0] * (self.actions.slots - len(kinds)), np.int64)
         return obs
+
+    def _visible_slots(self) -> list[str]:
+        """Objects in view and within reach that an interaction applies to, the held one aside, most pixels
+        first (ties by id), as many as there are slots."""
+        state = self.world.view().state
+        seen = [(-n, o) for o, n in self.world.visible_objects().items()
+                if o in state.objects and o != state.held and _interactable(state.objects[o].object_type)]
+        return [o for _, o in sorted(seen)[: self.actions.slots]]
 
     def _instruction(self) -> str:
         """The goal directive, then (with `step_instructions`) the expert plan's step instructions."""
@@ -296,3 +331,4 @@ class LuminousEnv(gymnasium.Env):
             self.history.append(Sent(given, api, ok))
         self._steps, self._failures, self._reached = state["counters"]
         self._scores = self._goal_scores()
+        self._observation()  # the object slots the agent saw last

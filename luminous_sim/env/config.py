@@ -27,6 +27,7 @@ SMALL_TASK_TYPES: tuple[str, ...] = ("goto_object", "pickup_object")
 TASK_KINDS: tuple[str, ...] = ALFRED_TASK_TYPES + SMALL_TASK_TYPES
 ROOM_TYPES: tuple[str, ...] = ("Kitchen", "LivingRoom", "Bedroom", "Bathroom")
 REWARD_MODES: tuple[str, ...] = ("dense", "sparse")
+TARGET_KINDS: tuple[str, ...] = ("points", "objects")
 
 
 @dataclass(frozen=True)
@@ -40,7 +41,10 @@ class EnvConfig:
             type allows (ALFRED's table).
         width: image width in pixels.
         height: image height in pixels.
-        grid: k, the side of the k x k grid of image points an interaction action targets.
+        targets: what an interaction action targets: `points` (a k x k grid of image points) or `objects`
+            (visible-object slots, listed in an `objects` observation).
+        grid: k, the side of the k x k grid of image points (`points` targets).
+        object_slots: the number of visible-object slots (`objects` targets).
         depth: add a `depth` observation (float32 metres).
         segmentation: add a `segmentation` observation (int32 instance index, -1 for background).
         pose: add a `pose` observation (x, y metres, yaw and horizon degrees).
@@ -63,7 +67,9 @@ class EnvConfig:
     room_types: tuple[str, ...] = ()
     width: int = 300
     height: int = 300
+    targets: str = "points"
     grid: int = 5
+    object_slots: int = 16
     depth: bool = False
     segmentation: bool = False
     pose: bool = False
@@ -101,9 +107,11 @@ class EnvConfig:
         bad = [r for r in self.room_types if r not in ROOM_TYPES]
         if bad:
             raise LuminousError(f"env config room_types: {bad}; expected some of {', '.join(ROOM_TYPES)}")
+        if self.targets not in TARGET_KINDS:
+            raise LuminousError(f"env config targets: {self.targets!r}; expected one of {TARGET_KINDS}")
         if self.reward_mode not in REWARD_MODES:
             raise LuminousError(f"env config reward_mode: {self.reward_mode!r}; expected one of {REWARD_MODES}")
-        for name in ("width", "height", "grid", "max_steps", "max_failures", "scene_attempts"):
+        for name in ("width", "height", "grid", "object_slots", "max_steps", "max_failures", "scene_attempts"):
             if getattr(self, name) < 1:
                 raise LuminousError(f"env config {name}: expected a positive integer, got {getattr(self, name)}")
         if self.step_instructions and not self.verify_expert:

@@ -209,3 +209,52 @@ def test_step_instructions_follow_the_directive():
     with pytest.raises(LuminousError, match="step_instructions"):
         LuminousEnv(step_instructions=True, verify_expert=False)
     env.close()
+
+
+def test_object_slot_targets_pass_check_env_and_name_visible_objects():
+    from luminous_sim.vocab import ALL_TYPES
+
+    env = small(targets="objects", object_slots=8, max_failures=50)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        check_env(env, skip_render_check=True)
+    obs, _ = env.reset(seed=0)
+    assert env.action_space.n == 6 + 7 * 8 and env.observation_space.contains(obs)
+    slots = env._slots
+    visible = env.world.visible_objects()
+    assert all(o in visible for o in slots) and [visible[o] for o in slots] == sorted(visible[o] for o in slots)[::-1]
+    assert [ALL_TYPES[k - 1] for k in obs["objects"][: len(slots)]] == [env.world.view().state[o].object_type
+                                                                        for o in slots]
+    assert not obs["objects"][len(slots):].any()
+    empty = env.actions.index("PickupObject", len(slots)) if len(slots) < 8 else None
+    if empty is not None:
+        assert env.step(empty)[4]["failure_code"] == "no_target"
+    env.close()
+
+
+def test_the_oracle_acts_through_object_slots():
+    from luminous_sim.env import OraclePolicy
+
+    env = small(targets="objects")
+    policy = OraclePolicy(env)
+    env.reset(seed=1)
+    kinds = []
+    terminated = truncated = False
+    while not (terminated or truncated):
+        action = policy()
+        kinds.append(isinstance(action, (int, np.integer)))
+        _, _, terminated, truncated, info = env.step(action)
+    assert info["success"] and all(kinds)  # the target is in view, so it has a slot
+    env.close()
+
+
+def test_action_table_with_object_slots():
+    table = ActionTable(64, 64, 3, slots=4)
+    assert table.n == 6 + 7 * 4 == len(table.labels())
+    assert table.decode(table.index("OpenObject", 1), ["A|1", "B|2"]) == {"action": "OpenObject", "objectId": "B|2"}
+    put = table.decode(table.index("PutObject", 0), ["A|1"])
+    assert put["receptacleObjectId"] == "A|1" and "objectId" not in put
+    from luminous_sim.env.actions import EmptySlot
+
+    with pytest.raises(EmptySlot):
+        table.decode(table.index("OpenObject", 3), ["A|1"])
