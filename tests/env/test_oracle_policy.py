@@ -1,5 +1,6 @@
 """OraclePolicy reaches success through the env's own action space (Minigrid's bot test): one id and
-seed in the fast suite, every registered id over two seeds in the slow sweep."""
+seed in the fast suite, every registered id over two seeds in the slow sweep. The second seed turns off
+`verify_expert`, so its episode is not one the reset already proved the oracle solves."""
 
 from __future__ import annotations
 
@@ -14,9 +15,9 @@ IDS = [e.id for e in load_entries()]
 SEEDS = (0, 1)
 
 
-def run_oracle(env_id: str, seed: int) -> tuple[dict, int, float, int]:
+def run_oracle(env_id: str, seed: int, **kwargs) -> tuple[dict, int, float, int]:
     """(last info, steps, return, discrete actions taken) of the oracle's episode."""
-    env = gymnasium.make(env_id)
+    env = gymnasium.make(env_id, **kwargs)
     policy = OraclePolicy(env)
     obs, info = env.reset(seed=seed)
     steps, total, discrete = 0, 0.0, 0
@@ -30,8 +31,8 @@ def run_oracle(env_id: str, seed: int) -> tuple[dict, int, float, int]:
     return info, steps, total, discrete
 
 
-def _check(env_id: str, seed: int) -> None:
-    info, _steps, total, discrete = run_oracle(env_id, seed)
+def _check(env_id: str, seed: int, **kwargs) -> None:
+    info, _steps, total, discrete = run_oracle(env_id, seed, **kwargs)
     assert info["success"], (env_id, seed, info)
     assert info["failures"] == 0 and info["goal_conditions"][0] == info["goal_conditions"][1] > 0
     assert total >= 5 and discrete > 0 and info["subgoal"] == ""
@@ -65,4 +66,4 @@ def test_expert_in_info_is_the_policys_action():
 @pytest.mark.parametrize("seed", SEEDS)
 @pytest.mark.parametrize("env_id", IDS)
 def test_the_oracle_solves_every_registered_id(env_id, seed):
-    _check(env_id, seed)
+    _check(env_id, seed, verify_expert=seed == SEEDS[0])
