@@ -1,0 +1,55 @@
+"""Layer L4: the Gymnasium environments (`gymnasium.make("Luminous-ALFRED-v0")` and friends).
+
+Ids are declared as data in the repository's `envs/*.toml` and registered when `luminous_sim` is imported,
+by string entry point, so that importing the package loads neither the simulator nor pybullet. Public
+names below are loaded on first use for the same reason.
+
+Typical use::
+
+    import gymnasium, luminous_sim
+    env = gymnasium.make("Luminous-PickUp-64-v0")
+    obs, info = env.reset(seed=0)
+    obs, reward, terminated, truncated, info = env.step(env.action_space.sample())
+"""
+
+from __future__ import annotations
+
+from importlib import import_module
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from luminous_sim.env.actions import ActionTable
+    from luminous_sim.env.alfred_env import LuminousEnv
+    from luminous_sim.env.config import EnvConfig
+    from luminous_sim.env.oracle_policy import OraclePolicy
+    from luminous_sim.env.registration import EnvEntry, load_entries, register_envs
+    from luminous_sim.env.rewards import RewardConfig
+    from luminous_sim.env.wrappers import InstructionTokens
+
+_WHERE = {
+    "ActionTable": "actions",
+    "LuminousEnv": "alfred_env",
+    "EnvConfig": "config",
+    "OraclePolicy": "oracle_policy",
+    "EnvEntry": "registration", "load_entries": "registration", "register_envs": "registration",
+    "RewardConfig": "rewards",
+    "InstructionTokens": "wrappers",
+}
+
+__all__ = [
+    "ActionTable",
+    "EnvConfig",
+    "EnvEntry",
+    "InstructionTokens",
+    "LuminousEnv",
+    "OraclePolicy",
+    "RewardConfig",
+    "load_entries",
+    "register_envs",
+]
+
+
+def __getattr__(name: str) -> Any:
+    if name in _WHERE:
+        return getattr(import_module(f"luminous_sim.env.{_WHERE[name]}"), name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -1,0 +1,334 @@
+"""`LuminousEnv`: ALFRED-style household tasks in generated rooms, as a Gymnasium environment.
+
+Observations (a `Dict`): `rgb` (H, W, 3) uint8; `instruction` (`Text`: the goal directive, and with
+`step_instructions` the expert plan's step-by-step instructions after it); with `objects` targets,
+`objects` (the type of the object in each slot, as `inventory` gives it); optionally
+`depth` (H, W, 1) float32 metres, `segmentation` (H, W) int32 instance ids (PyBullet bodies, -1 for none),
+`pose` (x, y metres, yaw and horizon degrees) and `inventory` (the held object's type, an index into
+`luminous_sim.vocab.ALL_TYPES` plus one; 0 for nothing).
+
+Actions: a `Discrete` index (see `luminous_sim.env.actions`: navigation, Stop, each interaction on a k x k
+grid of image points, or with `targets="objects"` on visible-object slots), or the full ALFRED form for
+ALFRED-style agents, a dict::
+
+    {"action": "PickupObject", "mask": rle}            # or "point": [x, y], or "objectId": id
+    {"action": "PutObject", "mask": rle}               # puts the held object on what the mask shows
+    {"action": "MoveAhead"}   {"action": "Stop"}       # "<<stop>>" stops too
+
+An invalid action (a failed one, an index outside the space, a malformed dict) costs a step and counts as
+a failure; it never raises. `info["failure_code"]` says why (a `FailureCode` value, None on success).
+
+Episodes end (`terminated`) on success or Stop, and are cut off (`truncated`) after `max_steps` steps or
+`max_failures` failed actions. `info`: `success`, `goal_conditions` (met, total), `subgoal` (the first
+condition not yet met), `task_type`, `failures`, `failure_code`, `error`, and with `expert_in_info` the
+expert's next action (`expert_action`, in this env's action form).
+
+`reset(seed=s)` is deterministic: the same seed gives the same scene, task and first observation;
+`options={"scene": scene}` plays in a given `Scene`. Each reset builds its world afresh (a fraction of a
+second): `World` has no save/restore yet, and slicing replaces bodies, which PyBullet's restoreState does
+not undo.
+"""
+
+from __future__ import annotations
+
+import string
+from dataclasses import dataclass
+from typing import Any
+
+import gymnasium
+import numpy as np
+from gymnasium import spaces
+
+from luminous_sim.env.actions import ALFRED_ACTIONS, INTERACTIONS, NAVIGATION, STOP_NAMES, ActionTable, EmptySlot
+from luminous_sim.env.config import EnvConfig
+from luminous_sim.env.episodes import Episode, build_world, draw_episode
+from luminous_sim.env.expert import Expert
+from luminous_sim.env.goals import goal_from_dict
+from luminous_sim.env.rewards import RewardConfig, step_reward
+from luminous_sim.errors import FailureCode
+from luminous_sim.vocab import ALL_TYPES, abilities
+
+INSTRUCTION_CHARSET = string.ascii_letters + string.digits + " .,;:'!?-()\n"
+MAX_INSTRUCTION = 1000
+"""Characters of `instruction` kept (a directive is under 100; step instructions add about 60 a step)."""
+DEPTH_FAR = 20.0
+"""The camera's far plane (metres): the largest depth."""
+POSE_BOUND = 1000.0
+
+
+@dataclass(frozen=True)
+class Sent:
+    """One action that reached the world: as the agent gave it, as sent, and whether it succeeded."""
+
+    given: Any
+    api: dict[str, Any]
+    ok: bool
+
+
+def _type_index(object_type: str | None) -> int:
+    """An object type as an observation: its index in `ALL_TYPES` plus one; 0 for none."""
+    return ALL_TYPES.index(object_type) + 1 if object_type in ALL_TYPES else 0
+
+
+def _interactable(object_type: str) -> bool:
+    ab = abilities(object_type)
+    return ab.pickupable or ab.receptacle or ab.openable or ab.toggleable or ab.sliceable
+
+
+def _clean_text(text: str) -> str:
+    out = "".join(ch if ch in INSTRUCTION_CHARSET else " " for ch in text)[:MAX_INSTRUCTION]
+    return out or "."
+
+
+class LuminousEnv(gymnasium.Env):
+    """ALFRED's low-level actions, observations and limits in a generated room; see the module docstring."""
+
+    metadata: dict[str, Any] = {"render_modes": ["rgb_array"], "render_fps": 6}  # noqa: RUF012  (as gymnasium.Env)
+
+    def __init__(self, render_mode: str | None = None, **kwargs: Any):
+        if render_mode is not None and render_mode not in self.metadata["render_modes"]:
+            raise ValueError(f"render_mode {render_mode!r}: expected one of {self.metadata['render_modes']}")
+        self.render_mode = render_mode
+        self.config = EnvConfig.from_kwargs(kwargs)
+        self.rewards = RewardConfig.of(self.config.reward_mode, self.config.reward)
+        c = self.config
+        self.actions = ActionTable(c.width, c.height, c.grid, c.object_slots if c.targets == "objects" else 0)
+        self.action_space = spaces.Discrete(self.actions.n)
+        obs: dict[str, spaces.Space] = {
+            "rgb": spaces.Box(0, 255, (c.height, c.width, 3), np.uint8),
+            "instruction": spaces.Text(MAX_INSTRUCTION, min_length=1, charset=INSTRUCTION_CHARSET),
+        }
+        if c.depth:
+            obs["depth"] = spaces.Box(0.0, DEPTH_FAR, (c.height, c.width, 1), np.float32)
+        if c.segmentation:
+            obs["segmentation"] = spaces.Box(-1, np.iinfo(np.int32).max, (c.height, c.width), np.int32)
+        if c.pose:
+            obs["pose"] = spaces.Box(np.array([-POSE_BOUND, -POSE_BOUND, 0, -30], np.float32),
+                                     np.array([POSE_BOUND, POSE_BOUND, 270, 60], np.float32), dtype=np.float32)
+        if c.inventory:
+            obs["inventory"] = spaces.Discrete(len(ALL_TYPES) + 1)
+        if self.actions.slots:
+            obs["objects"] = spaces.MultiDiscrete(np.full(self.actions.slots, len(ALL_TYPES) + 1, np.int64))
+        self.observation_space = spaces.Dict(obs)
+        self.world: Any = None
+        self.episode: Episode | None = None
+        self.history: list[Sent] = []
+        self._slots: list[str] = []
+        """The object ids in the slots of the last observation (`objects` targets)."""
+        self._expert = Expert()
+        self._scores: dict[str, int] = {}
+        self._steps = 0
+        self._failures = 0
+        self._reached = False
+
+    # ------------------------------------------------------------------ gymnasium API
+
+    def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None):
+        """A new episode: a scene (generated, or `options["scene"]`), a goal that fits it, the first view."""
+        super().reset(seed=seed)
+        options = options or {}
+        rng = np.random.default_rng(int(self.np_random.integers(2**63)))
+        self._close_world()
+        self.episode, self.world = draw_episode(self.config, rng, scene=options.get("scene"))
+        self._start()
+        return self._observation(), self._info(None, "")
+
+    def _start(self) -> None:
+        assert self.episode is not None
+        self.history, self._steps, self._failures, self._reached = [], 0, 0, False
+        self._expert.start(self.episode.expert.actions if self.episode.expert is not None else None)
+        self._scores = self._goal_scores()
+
+    def step(self, action: Any):
+        """One action (a discrete index or an ALFRED dict); see the module docstring."""
+        if self.world is None or self.episode is None:
+            raise gymnasium.error.ResetNeeded("call reset() before step()")
+        self._steps += 1
+        api, code, error = self._decode(action)
+        stopped = api is not None and api["action"] in STOP_NAMES
+        if api is not None and not stopped:
+            result = self.world.step(api)
+            self.history.append(Sent(action, api, result.success))
+            code, error = result.code, result.error
+        ok = code is None
+        if not ok:
+            self._failures += 1
+        before, self._scores = self._scores, self._goal_scores()
+        success = self._scores == self.episode.goal.weights()
+        reached = success and not self._reached
+        self._reached = self._reached or success
+        expert_length = len(self.episode.expert.actions) if self.episode.expert is not None else 0
+        reward = step_reward(self.rewards, before, self._scores, self.episode.goal.stages(), reached=reached,
+                             action_ok=ok, step=self._steps, expert_length=expert_length)
+        terminated = success or stopped
+        truncated = not terminated and (self._steps >= self.config.max_steps
+                                        or self._failures >= self.config.max_failures)
+        return self._observation(), reward, terminated, truncated, self._info(code, error)
+
+    def render(self) -> np.ndarray | None:
+        """The agent's view (rgb_array), or None without a render mode."""
+        if self.render_mode != "rgb_array" or self.world is None:
+            return None
+        return self.world.frame().rgb.copy()
+
+    def top_down(self) -> np.ndarray:
+        """A labelled top-down map of the room as it is now, with the reachable grid (an RGB array)."""
+        if self.world is None:
+            raise gymnasium.error.ResetNeeded("call reset() before top_down()")
+        return np.asarray(self.world.view().top_down(grid=True).convert("RGB"))
+
+    def close(self) -> None:
+        self._close_world()
+        super().close()
+
+    # ------------------------------------------------------------------ the expert
+
+    def expert_action(self) -> int | dict[str, Any]:
+        """The expert's next action in this env's action form: a discrete index when one names what the
+        expert means (for an interaction, a grid point on its target, or its slot), else the ALFRED dict
+        with the object id (the target covers no grid point, or has no slot); Stop when the expert has
+        nothing left to do."""
+        api = self._expert.next_api(self)
+        action = self._env_action(api)
+        self._expert.suggested(len(self.history), action)
+        return action
+
+    def _env_action(self, api: dict[str, Any] | None) -> int | dict[str, Any]:
+        if api is None:
+            return self.actions.index("Stop")
+        name = api["action"]
+        if name in NAVIGATION:
+            return self.actions.index(name)
+        target = api.get("receptacleObjectId") if name == "PutObject" else api.get("objectId")
+        if self.actions.slots:
+            slot = self._slots.index(target) if target in self._slots else None
+            return self.actions.index(name, slot) if slot is not None else dict(api)
+        mask = self.world.instance_masks().get(target) if name in INTERACTIONS else None
+        cell = self.actions.cell_on(mask) if mask is not None else None
+        return self.actions.index(name, cell) if cell is not None else dict(api)
+
+    # ------------------------------------------------------------------ insides
+
+    def _decode(self, action: Any) -> tuple[dict[str, Any] | None, FailureCode | None, str]:
+        """The api action to send, or None with the code and message of an invalid one."""
+        if isinstance(action, np.ndarray) and action.shape == () and action.dtype.kind in "iu":
+            action = int(action)
+        if isinstance(action, (int, np.integer)) and not isinstance(action, bool):
+            if not 0 <= int(action) < self.actions.n:
+                return None, FailureCode.INVALID_ARGUMENT, f"action {action} is outside 0..{self.actions.n - 1}"
+            try:
+                return self.actions.decode(int(action), self._slots), None, ""
+            except EmptySlot as exc:
+                return None, FailureCode.NO_TARGET, str(exc)
+        if isinstance(action, dict) and isinstance(action.get("action"), str):
+            name = action["action"]
+            if name in STOP_NAMES or name in ALFRED_ACTIONS:
+                return dict(action), None, ""
+            return None, FailureCode.UNKNOWN_ACTION, (f"unknown action {name!r}; expected Stop or one of "
+                                                      f"{', '.join(sorted(ALFRED_ACTIONS))}")
+        return None, FailureCode.INVALID_ARGUMENT, (f"an action is an index in 0..{self.actions.n - 1} or a dict "
+                                                    f"with an 'action' name, not {type(action).__name__}")
+
+    def _visible(self) -> set[str]:
+        return set(self.world.visible_objects())
+
+    def _goal_scores(self) -> dict[str, int]:
+        assert self.episode is not None
+        return self.episode.goal.scores(self.world.view(), self._visible())
+
+    def _observation(self) -> dict[str, Any]:
+        assert self.episode is not None
+        frame = self.world.frame()
+        c = self.config
+        obs: dict[str, Any] = {"rgb": np.ascontiguousarray(frame.rgb[..., :3], dtype=np.uint8),
+                               "instruction": self._instruction()}
+        if c.depth:
+            obs["depth"] = np.clip(frame.depth, 0.0, DEPTH_FAR).astype(np.float32)[..., None]
+        if c.segmentation:
+            obs["segmentation"] = self.world.instance_ids().astype(np.int32)
+        if c.pose:
+            p = self.world.agent
+            obs["pose"] = np.array([p.x, p.y, p.rotation % 360, p.horizon], np.float32)
+        state = self.world.view().state
+        if c.inventory:
+            obs["inventory"] = _type_index(state.objects[state.held].object_type if state.held else None)
+        if self.actions.slots:
+            self._slots = self._visible_slots()
+            kinds = [_type_index(state.objects[o].object_type) for o in self._slots]
+            obs["objects"] = np.array(kinds + [0] * (self.actions.slots - len(kinds)), np.int64)
+        return obs
+
+    def _visible_slots(self) -> list[str]:
+        """Objects in view and within reach that an interaction applies to, the held one aside, most pixels
+        first (ties by id), as many as there are slots."""
+        state = self.world.view().state
+        seen = [(-n, o) for o, n in self.world.visible_objects().items()
+                if o in state.objects and o != state.held and _interactable(state.objects[o].object_type)]
+        return [o for _, o in sorted(seen)[: self.actions.slots]]
+
+    def _instruction(self) -> str:
+        """The goal directive, then (with `step_instructions`) the expert plan's step instructions."""
+        assert self.episode is not None
+        text = self.episode.goal.instruction
+        if self.config.step_instructions and self.episode.expert is not None:
+            text = " ".join((text.rstrip(".") + ".", *self.episode.expert.steps))
+        return _clean_text(text)
+
+    def _info(self, code: FailureCode | None, error: str) -> dict[str, Any]:
+        assert self.episode is not None
+        goal = self.episode.goal
+        weights = goal.weights()
+        info: dict[str, Any] = {
+            "success": self._scores == weights,
+            "goal_conditions": (sum(self._scores.values()), sum(weights.values())),
+            "subgoal": goal.subgoal(self._scores),
+            "task_type": goal.task_type,
+            "failures": self._failures,
+            "failure_code": None if code is None else code.value,
+            "error": error,
+        }
+        if self.config.expert_in_info:
+            info["expert_action"] = self.expert_action()
+        return info
+
+    def _close_world(self) -> None:
+        if self.world is not None:
+            self.world.close()
+            self.world = None
+
+    # ------------------------------------------------------------------ pickling
+
+    def __getstate__(self) -> dict[str, Any]:
+        """The config, the random state and the episode so far; the world is rebuilt and replayed on load."""
+        ep = self.episode
+        return {
+            "render_mode": self.render_mode, "kwargs": self.config.to_kwargs(),
+            "np_random": self._np_random,
+            "episode": None if ep is None else {
+                "scene": ep.scene.to_json(), "goal": ep.goal.to_dict(), "dirty": list(ep.dirty),
+                "expert": None if ep.expert is None else [list(ep.expert.actions), list(ep.expert.steps)]},
+            "history": [(s.given, s.api, s.ok) for s in self.history],
+            "counters": (self._steps, self._failures, self._reached),
+        }
+
+    def __setstate__(self, state: dict[str, Any]) -> None:
+        from luminous_sim.env.goals import ExpertPlan
+        from luminous_sim.scene import Scene
+
+        self.__init__(state["render_mode"], **state["kwargs"])  # type: ignore[misc]
+        self._np_random = state["np_random"]
+        data = state["episode"]
+        if data is None:
+            return
+        plan = data["expert"]
+        expert = None if plan is None else ExpertPlan(tuple(plan[0]), steps=tuple(plan[1]))
+        self.episode = Episode(Scene.from_json(data["scene"]), goal_from_dict(data["goal"]),
+                               tuple(data["dirty"]), expert)
+        self.world = build_world(self.episode.scene, self.config, self.episode.dirty)
+        self._start()
+        for given, api, ok in state["history"]:
+            self.world.step(api)
+            self.history.append(Sent(given, api, ok))
+        self._steps, self._failures, self._reached = state["counters"]
+        self._scores = self._goal_scores()
+        self._observation()  # the object slots the agent saw last

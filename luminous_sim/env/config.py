@@ -1,0 +1,144 @@
+"""`EnvConfig`: everything that defines one environment id, as plain JSON-serialisable values.
+
+The keyword arguments of `LuminousEnv` (and so of a spec in `envs/*.toml`) are exactly this dataclass's
+fields; a wrong name or type is a `LuminousError` that names the field and what was expected.
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass, field, fields
+from typing import Any
+
+from luminous_sim.errors import LuminousError
+
+ALFRED_TASK_TYPES: tuple[str, ...] = (
+    "pick_and_place_simple",
+    "pick_two_obj_and_place",
+    "look_at_obj_in_light",
+    "pick_clean_then_place_in_recep",
+    "pick_heat_then_place_in_recep",
+    "pick_cool_then_place_in_recep",
+    "pick_and_place_with_movable_recep",
+)
+"""ALFRED's seven task types (the same names as `luminous_sim.tasks.TASK_TYPES`, kept here so that reading
+a spec does not import the task layer)."""
+SMALL_TASK_TYPES: tuple[str, ...] = ("goto_object", "pickup_object")
+"""Tasks for RL from scratch: stand where a named object is in view and reach; hold an object of a type."""
+TASK_KINDS: tuple[str, ...] = ALFRED_TASK_TYPES + SMALL_TASK_TYPES
+ROOM_TYPES: tuple[str, ...] = ("Kitchen", "LivingRoom", "Bedroom", "Bathroom")
+REWARD_MODES: tuple[str, ...] = ("dense", "sparse")
+TARGET_KINDS: tuple[str, ...] = ("points", "objects")
+
+
+@dataclass(frozen=True)
+class EnvConfig:
+    """One environment's definition (ALFRED's camera, limits and reward configuration by default).
+
+    Attributes:
+        task_types: the task kinds an episode draws from (uniformly): ALFRED's types, `goto_object`,
+            `pickup_object`.
+        room_types: the room types scenes are generated in; empty means every room type the drawn task
+            type allows (ALFRED's table).
+        width: image width in pixels.
+        height: image height in pixels.
+        targets: what an interaction action targets: `points` (a k x k grid of image points) or `objects`
+            (visible-object slots, listed in an `objects` observation).
+        grid: k, the side of the k x k grid of image points (`points` targets).
+        object_slots: the number of visible-object slots (`objects` targets).
+        depth: add a `depth` observation (float32 metres).
+        segmentation: add a `segmentation` observation (int32 instance index, -1 for background).
+        pose: add a `pose` observation (x, y metres, yaw and horizon degrees).
+        inventory: add an `inventory` observation (index of the held object's type, 0 for none).
+        step_instructions: follow the goal directive in `instruction` with step-by-step instructions (the
+            language layer's templates over the expert's plan; needs `verify_expert`).
+        max_steps: episode truncated after this many steps (ALFRED: 1000).
+        max_failures: episode truncated after this many failed actions (ALFRED: 10).
+        reward_mode: `dense` (ALFRED's configuration driven by the goal conditions) or `sparse`.
+        reward: overrides of `RewardConfig` fields, by name.
+        expert_in_info: put the expert's next action in `info` (it costs a plan when the agent deviates).
+        verify_expert: keep only episodes the oracle solves (as ALFRED's generator does); it also gives
+            the expert length that ALFRED's step penalty starts after.
+        scene_attempts: scenes tried before `reset` gives up on finding a task that fits.
+        min_visible_pixels: pixels an object needs to count as visible; 0 scales ALFRED's 10 at 300x300
+            to the image size.
+    """
+
+    task_types: tuple[str, ...] = ALFRED_TASK_TYPES
+    room_types: tuple[str, ...] = ()
+    width: int = 300
+    height: int = 300
+    targets: str = "points"
+    grid: int = 5
+    object_slots: int = 16
+    depth: bool = False
+    segmentation: bool = False
+    pose: bool = False
+    inventory: bool = False
+    step_instructions: bool = False
+    max_steps: int = 1000
+    max_failures: int = 10
+    reward_mode: str = "dense"
+    reward: dict[str, float] = field(default_factory=dict)
+    expert_in_info: bool = False
+    verify_expert: bool = True
+    scene_attempts: int = 8
+    min_visible_pixels: int = 0
+
+    def __post_init__(self) -> None:
+        for f in fields(self):
+            value = getattr(self, f.name)
+            if f.name in ("task_types", "room_types"):
+                if isinstance(value, str) or not all(isinstance(v, str) for v in value):
+                    raise LuminousError(f"env config {f.name}: expected a list of names, got {value!r}")
+                object.__setattr__(self, f.name, tuple(value))
+            elif f.name == "reward":
+                if not isinstance(value, dict) or not all(isinstance(v, (int, float)) for v in value.values()):
+                    raise LuminousError(f"env config reward: expected a table of numbers, got {value!r}")
+            elif f.type == "bool" and not isinstance(value, bool):
+                raise LuminousError(f"env config {f.name}: expected true or false, got {value!r}")
+            elif f.type == "int" and (isinstance(value, bool) or not isinstance(value, int)):
+                raise LuminousError(f"env config {f.name}: expected an integer, got {value!r}")
+        self._check_values()
+
+    def _check_values(self) -> None:
+        bad = [t for t in self.task_types if t not in TASK_KINDS]
+        if not self.task_types or bad:
+            raise LuminousError(f"env config task_types: {bad or 'empty'}; expected some of {', '.join(TASK_KINDS)}")
+        bad = [r for r in self.room_types if r not in ROOM_TYPES]
+        if bad:
+            raise LuminousError(f"env config room_types: {bad}; expected some of {', '.join(ROOM_TYPES)}")
+        if self.targets not in TARGET_KINDS:
+            raise LuminousError(f"env config targets: {self.targets!r}; expected one of {TARGET_KINDS}")
+        if self.reward_mode not in REWARD_MODES:
+            raise LuminousError(f"env config reward_mode: {self.reward_mode!r}; expected one of {REWARD_MODES}")
+        for name in ("width", "height", "grid", "object_slots", "max_steps", "max_failures", "scene_attempts"):
+            if getattr(self, name) < 1:
+                raise LuminousError(f"env config {name}: expected a positive integer, got {getattr(self, name)}")
+        if self.step_instructions and not self.verify_expert:
+            raise LuminousError("env config step_instructions: needs verify_expert (they describe the expert's plan)")
+        if self.grid > min(self.width, self.height):
+            raise LuminousError(f"env config grid: {self.grid} points a side do not fit a {self.width}x{self.height}"
+                                " image")
+
+    @classmethod
+    def from_kwargs(cls, kwargs: dict[str, Any]) -> EnvConfig:
+        """The config of `LuminousEnv(**kwargs)`; an unknown name is a LuminousError listing the known ones."""
+        known = {f.name for f in fields(cls)}
+        unknown = sorted(set(kwargs) - known)
+        if unknown:
+            raise LuminousError(f"env config: unknown option(s) {', '.join(unknown)}; expected some of "
+                                f"{', '.join(sorted(known))}")
+        return cls(**kwargs)
+
+    def to_kwargs(self) -> dict[str, Any]:
+        """Plain JSON data that `from_kwargs` reads back."""
+        out = asdict(self)
+        out["task_types"], out["room_types"] = list(self.task_types), list(self.room_types)
+        return out
+
+    @property
+    def visible_pixels(self) -> int:
+        """Pixels an object needs to be visible: ALFRED's 10 at 300x300, scaled to this image's area."""
+        if self.min_visible_pixels > 0:
+            return self.min_visible_pixels
+        return max(1, round(10 * self.width * self.height / (300 * 300)))

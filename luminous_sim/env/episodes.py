@@ -1,0 +1,165 @@
+"""Drawing an episode: a scene (generated on the fly, or given), a goal that fits it physically, and
+(optionally) the expert's plan, which also proves the episode solvable, as ALFRED's generator keeps only
+tasks its expert solves.
+
+Scenes come from CSSG (`cssg.generate(empty_cdf(room_type), seed)`): layer L4 may use the generator, as
+task-driven generation in `luminous_sim.data` does (this module repeats the small part of that it needs
+rather than import layer L5). A drawn scene whose task does not fit is replaced by a new one, a bounded
+number of times (`EnvConfig.scene_attempts`).
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from luminous_sim.env.config import EnvConfig
+from luminous_sim.env.goals import ExpertPlan, Goal, GotoGoal, TaskGoal, pickup_task
+from luminous_sim.errors import InfeasibleSceneError, LuminousError
+from luminous_sim.scene import Scene
+from luminous_sim.tasks import TASK_TYPES, TaskSamplingError, task_info
+from luminous_sim.vocab import ROOM_TYPES, abilities
+from luminous_sim.world import World, WorldConfig
+
+CLEANING = "pick_clean_then_place_in_recep"
+
+
+@dataclass(frozen=True)
+class Episode:
+    """One episode's set-up: replaying it (`build_world`) gives the same world, bit for bit."""
+
+    scene: Scene
+    goal: Goal
+    dirty: tuple[str, ...] = ()
+    """Objects made dirty before the first step (ALFRED's set-up for a cleaning task)."""
+    expert: ExpertPlan | None = None
+
+
+def world_config(config: EnvConfig) -> WorldConfig:
+    """The simulator settings of an environment."""
+    return WorldConfig(width=config.width, height=config.height, min_visible_pixels=config.visible_pixels)
+
+
+def build_world(scene: Scene, config: EnvConfig, dirty: tuple[str, ...] = ()) -> World:
+    """A fresh world of the scene, set up (dirty objects) and not yet stepped."""
+    world = World(scene, world_config(config))
+    if dirty:
+        world.set_up_dirty(dirty)
+    return world
+
+
+def dirty_for(world: World, task_type: str) -> tuple[str, ...]:
+    """What ALFRED makes dirty before a cleaning task: every dirtyable object that can be picked up."""
+    if task_type != CLEANING:
+        return ()
+    return tuple(sorted(oid for oid, st in world.view().state.objects.items()
+                        if abilities(st.object_type).dirtyable and abilities(st.object_type).pickupable))
+
+
+def room_types(config: EnvConfig, task_type: str) -> list[str]:
+    """The room types an episode of the type may be generated in (ALFRED's table, the config's choice)."""
+    allowed = sorted(task_info(task_type).rooms) if task_type in TASK_TYPES else list(ROOM_TYPES)
+    chosen = [r for r in allowed if not config.room_types or r in config.room_types]
+    return chosen or allowed
+
+
+def draw_goal(world: World, scene: Scene, task_type: str, rng: np.random.Generator) -> Goal:
+    """A goal of the kind that fits this world.
+
+    Raises:
+        TaskSamplingError: none fits.
+    """
+    from luminous_sim.planning import draw_task, unseeable
+
+    view = world.view()
+    if task_type not in ("goto_object", "pickup_object"):
+        return TaskGoal(draw_task(scene, view, task_type, rng))
+    hidden = unseeable(view)
+    seen = {view.state.objects[o].object_type for o in view.visible_objects() if o in view.state.objects}
+    types = sorted({st.object_type for oid, st in view.state.objects.items() if oid not in hidden
+                    and st.object_type not in seen and _goal_worthy(st.object_type, task_type)})
+    if not types:
+        raise TaskSamplingError(f"no {task_type} target in {scene.room.name} (seed {scene.seed})")
+    object_type = types[int(rng.integers(len(types)))]
+    if task_type == "goto_object":
+        return GotoGoal(object_type)
+    return TaskGoal(pickup_task(object_type, scene.seed))
+
+
+def _goal_worthy(object_type: str, task_type: str) -> bool:
+    ab = abilities(object_type)
+    if task_type == "pickup_object":
+        return ab.pickupable
+    return ab.pickupable or ab.receptacle or ab.openable or ab.toggleable
+
+
+def _prove(episode: Episode, config: EnvConfig) -> ExpertPlan | None:
+    """The expert's plan if it solves the episode in a world of its own, and its replay does too."""
+    shadow = build_world(episode.scene, config, episode.dirty)
+    try:
+        plan = episode.goal.expert_plan(shadow)
+    finally:
+        shadow.close()
+    if plan is None or plan.exact:
+        return plan
+    replay = build_world(episode.scene, config, episode.dirty)
+    try:
+        ok = all(replay.step(a).success for a in plan.actions)
+        view = replay.view()
+        scores = episode.goal.scores(view, set(view.visible_objects()))
+        ok = ok and scores == episode.goal.weights()
+    finally:
+        replay.close()
+    return ExpertPlan(plan.actions, exact=True, steps=plan.steps) if ok else None
+
+
+def draw_episode(config: EnvConfig, rng: np.random.Generator, scene: Scene | None = None) -> tuple[Episode, World]:
+    """An episode and its world, ready for the first step (same rng state, same episode).
+
+    Args:
+        config: the environment.
+        rng: every draw comes from it.
+        scene: use this scene (only the goal is drawn) instead of generating one.
+
+    Raises:
+        LuminousError: no attempt gave an episode that fits (the message lists why).
+    """
+    from luminous_sim.cssg import empty_cdf, generate
+
+    why: list[str] = []
+    for _ in range(config.scene_attempts):
+        task_type = config.task_types[int(rng.integers(len(config.task_types)))]
+        if scene is None:
+            rooms = room_types(config, task_type)
+            room = rooms[int(rng.integers(len(rooms)))]
+            seed = int(rng.integers(2**31))
+            try:
+                candidate = generate(empty_cdf(room), seed=seed).scene
+            except InfeasibleSceneError as exc:
+                why.append(f"{room} seed {seed}: {exc}")
+                continue
+        else:
+            candidate = scene
+        world = World(candidate, world_config(config))
+        dirty = dirty_for(world, task_type)
+        if dirty:
+            world.set_up_dirty(dirty)
+        try:
+            goal = draw_goal(world, candidate, task_type, rng)
+        except TaskSamplingError as exc:
+            world.close()
+            why.append(str(exc))
+            continue
+        episode = Episode(candidate, goal, dirty)
+        if config.verify_expert:
+            plan = _prove(episode, config)
+            if plan is None:
+                world.close()
+                why.append(f"the expert does not solve {goal.instruction!r} in {candidate.room.name} "
+                           f"(seed {candidate.seed})")
+                continue
+            episode = Episode(candidate, goal, dirty, plan)
+        return episode, world
+    raise LuminousError(f"no episode of {', '.join(config.task_types)} after {config.scene_attempts} attempts: "
+                        + "; ".join(why[-3:]))
