@@ -1,6 +1,7 @@
 """Layer L1: Constrained Stochastic Scene Generation (and the uniform-random baseline).
 
-A producer of scenes: nothing below layer L5 but task-driven generation (`luminous_sim.data`) imports it.
+A producer of scenes: nothing below layer L4 imports it (the environment generates scenes on the fly; `data/` builds
+datasets and task-driven scenes).
 The plain geometry it shares with the simulator and the planner lives in `luminous_sim.scene`.
 
 Typical use::
