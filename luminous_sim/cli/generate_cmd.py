@@ -94,7 +94,7 @@ def _run(args: argparse.Namespace) -> int:
         report = write_scene_outputs(generated, sub, physics=not args.no_physics)
         ok = report["layout"]["ok"] and report.get("physics", {}).get("ok", True)
         failures += not ok
-        for name, keys in generated.report.ignored_attributes.items():
+        for name, keys in report["layout"].get("ignored_attributes", {}).items():
             kind = next((o.type for o in generated.scene.objects if o.name == name), "fixture")
             print(f"note: {sub}: {name} is the room's own {kind}; its attributes {', '.join(keys)} were not applied")
         if args.count == 1:
