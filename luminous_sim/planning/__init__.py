@@ -6,8 +6,9 @@ imported without the simulator that the oracle drives.
 
 from __future__ import annotations
 
-from importlib import import_module
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING
+
+from luminous_sim.lazy import lazy_getattr
 
 if TYPE_CHECKING:
     from luminous_sim.planning.navigation import NavGraph, goto_actions, look_steps
@@ -39,7 +40,4 @@ __all__ = [
 ]
 
 
-def __getattr__(name: str) -> Any:
-    if name in _WHERE:
-        return getattr(import_module(f"luminous_sim.planning.{_WHERE[name]}"), name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+__getattr__ = lazy_getattr(__name__, _WHERE)
