@@ -81,7 +81,7 @@ def find_interaction_pose(world: World, object_id: str, limit: int = 80,
                 world.interactions.carry(held)
             if not _seen_in_preview(world, pose, body):
                 continue
-            world._frame = None
+            world.invalidate_frame()
             if object_id in world.visible_objects():
                 if prefer is None or prefer(pose):
                     return pose
@@ -91,4 +91,4 @@ def find_interaction_pose(world: World, object_id: str, limit: int = 80,
         world.agent = saved
         if held is not None:
             world.interactions.carry(held)
-        world._frame = None
+        world.invalidate_frame()

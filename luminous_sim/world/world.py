@@ -21,6 +21,7 @@ from luminous_sim.world.arguments import argument_failure, shown, teleport_pose
 from luminous_sim.world.camera import Frame, render
 from luminous_sim.world.client import body_aabb
 from luminous_sim.world.config import WorldConfig
+from luminous_sim.world.frame_facts import FrameFacts, body_ids
 from luminous_sim.world.interaction import Interactions
 from luminous_sim.world.navigation import NavGrid
 from luminous_sim.world.results import StepResult
@@ -51,7 +52,7 @@ class World:
         self.client = self.built.client
         self.nav = NavGrid.from_scene(scene)
         self.agent = agent or self.default_start()
-        self._frame: Frame | None = None
+        self._facts: FrameFacts | None = None
         self.last = StepResult(True, "", {"action": "Initialize"})
         self.interactions = Interactions(self)
         self._view = LiveView(self)
@@ -84,6 +85,7 @@ class World:
             raise LuminousError("set_up_dirty is scene set-up: call it before the first World.step")
         for oid in object_ids:
             self.interactions.set_dirty(oid, True)
+        self.invalidate_frame()
 
     def default_start(self) -> AgentPose:
         """The reachable point nearest the room's centre, facing north, looking 30 degrees down."""
@@ -103,6 +105,7 @@ class World:
         act = _action_dict(action, kwargs)
         name = act["action"]
         self._started = True
+        before = self._facts
         try:
             known = name in AGENT_ACTIONS or name in INTERACTION_ACTIONS
             why = argument_failure(act, (self.config.height, self.config.width)) if known else None
@@ -121,7 +124,11 @@ class World:
             result = StepResult.fail(FailureCode.INVALID_ARGUMENT, f"invalid arguments for {name}: {shown(exc, 200)}",
                                      act)
         if result.success:
-            self._frame = None
+            self.invalidate_frame()
+        elif self._facts is not before:
+            # A failed action leaves the world as it was, so the frame from before it is still the view;
+            # one rendered during the action (a reach check) may show a half-done change: drop it.
+            self._facts = before
         self.last = StepResult(result.success, result.error, act, result.code)
         return self.last
 
@@ -152,37 +159,39 @@ class World:
 
     # ------------------------------------------------------------------ sensing
 
-    def frame(self) -> Frame:
-        """RGB, depth and raw segmentation from the agent's camera (rendered once per state)."""
-        if self._frame is None:
+    def invalidate_frame(self) -> None:
+        """Forget the current frame and what it shows: the view may have changed (the next question renders)."""
+        self._facts = None
+
+    def _frame_facts(self) -> FrameFacts:
+        if self._facts is None:
             pose = self.agent
             eye = np.array(pose.eye())
             target = eye + np.array(pose.view_direction())
             c = self.config
-            self._frame = render(self.client, eye, target, width=c.width, height=c.height, fov=c.fov,
-                                 near=0.05, far=20.0)
-        return self._frame
+            self._facts = FrameFacts(render(self.client, eye, target, width=c.width, height=c.height, fov=c.fov,
+                                            near=0.05, far=20.0))
+        return self._facts
+
+    def frame(self) -> Frame:
+        """RGB, depth and raw segmentation from the agent's camera (rendered once per state)."""
+        return self._frame_facts().frame
 
     def instance_ids(self, seg: np.ndarray | None = None) -> np.ndarray:
-        """Per-pixel body ids (-1 for background), from PyBullet's object+link segmentation."""
-        seg = self.frame().seg if seg is None else seg
-        body = np.where(seg >= 0, seg & ((1 << 24) - 1), -1)
-        return body
+        """Per-pixel body ids (-1 for background), from PyBullet's object+link segmentation (of the current
+        frame, read-only and computed once per frame, unless `seg` is given)."""
+        return self._frame_facts().bodies() if seg is None else body_ids(seg)
 
     def body_to_object(self) -> dict[int, str]:
         return {loaded.body: oid for oid, loaded in self.built.objects.items()}
 
     def instance_masks(self) -> dict[str, np.ndarray]:
-        """Boolean mask of every object visible in the current frame."""
-        bodies = self.instance_ids()
-        names = self.body_to_object()
-        return {names[b]: bodies == b for b in np.unique(bodies) if b in names}
+        """Boolean mask (read-only) of every object visible in the current frame, computed once per frame."""
+        return dict(self._frame_facts().masks(self.body_to_object))
 
     def boxes(self) -> dict[str, list[int]]:
         """2D boxes [x_min, y_min, x_max, y_max] of every object in view, in ALFRED's convention."""
-        from luminous_sim.world.masks import bbox_from_mask
-
-        return {oid: bbox_from_mask(m) for oid, m in self.instance_masks().items()}
+        return {oid: list(box) for oid, box in self._frame_facts().boxes(self.body_to_object).items()}
 
     def top_down(self):
         """A labelled top-down map image of the room as it is now, with the reachable grid (PIL image)."""
@@ -197,11 +206,11 @@ class World:
         return float(np.linalg.norm(nearest - eye))
 
     def visible_objects(self) -> dict[str, int]:
-        """Objects with at least `min_visible_pixels` pixels in view and within the visibility distance."""
-        masks = self.instance_masks()
-        return {oid: int(m.sum()) for oid, m in masks.items()
-                if m.sum() >= self.config.min_visible_pixels
-                and self.object_distance(oid) <= self.config.visibility_distance}
+        """Objects with at least `min_visible_pixels` pixels in view and within the visibility distance
+        (computed once per frame)."""
+        c = self.config
+        return dict(self._frame_facts().visible(self.body_to_object, c.min_visible_pixels, c.visibility_distance,
+                                                self.object_distance))
 
     def agent_metadata(self) -> dict[str, Any]:
         p = self.agent
@@ -212,12 +221,12 @@ class World:
         """AI2-THOR-style metadata: agent, inventory, objects, last action result."""
         from luminous_sim.world.metadata import object_metadata
 
-        visible = self.visible_objects()
+        objects = self._frame_facts().objects(lambda: object_metadata(self, self.visible_objects()))
         held = self.interactions.held
         return {
             "agent": self.agent_metadata(),
             "inventoryObjects": [{"objectId": held, "objectType": self.interactions.type_of(held)}] if held else [],
-            "objects": object_metadata(self, visible),
+            "objects": [dict(o) for o in objects],  # per-object dicts computed once per frame; nested values shared
             "lastAction": self.last.action.get("action", ""),
             "lastActionSuccess": self.last.success,
             "errorMessage": self.last.error,

@@ -40,7 +40,7 @@ def test_open_refused_when_the_door_would_hit_the_agent(world, kitchen_scene):
     for x, y in inside:
         for rot in (0, 90, 180, 270):
             world.agent = AgentPose(float(x), float(y), rot, 30)
-            world._frame = None
+            world.invalidate_frame()
             if fridge in world.visible_objects():
                 r = world.step({"action": "OpenObject", "objectId": fridge})
                 assert not r.success and "hit the agent" in r.error
@@ -53,5 +53,5 @@ def test_open_refused_when_the_door_would_hit_the_agent(world, kitchen_scene):
     pose = find_interaction_pose(world, fridge)
     assert pose is not None and not hits_agent(boxes, pose.x, pose.y)
     world.agent = pose
-    world._frame = None
+    world.invalidate_frame()
     assert world.step({"action": "OpenObject", "objectId": fridge}).success
