@@ -19,12 +19,15 @@ def _xyz(v) -> dict[str, float]:
 def object_metadata(world: World, visible: dict[str, int]) -> list[dict[str, Any]]:
     """One dict per object, with AI2-THOR's field names."""
     inter = world.interactions
+    children: dict[str, list[str]] = {}
+    for c, s in inter.state.objects.items():  # in the state's order, as receptacleObjectIds lists them
+        if s.parent is not None:
+            children.setdefault(s.parent, []).append(c)
     out = []
     for oid in sorted(world.built.objects):
         st = inter.state.objects[oid]
         ab = abilities(st.object_type)
         pos, yaw = world.built.pose_of(oid)
-        children = [c for c, s in inter.state.objects.items() if s.parent == oid]
         out.append({
             "objectId": oid,
             "objectType": st.object_type,
@@ -42,7 +45,7 @@ def object_metadata(world: World, visible: dict[str, int]) -> list[dict[str, Any
             "isCooked": st.isCooked, "isFilledWithLiquid": st.isFilledWithLiquid, "isPickedUp": st.isPickedUp,
             "temperature": st.temperature,
             "parentReceptacles": [st.parent] if st.parent else [],
-            "receptacleObjectIds": children,
+            "receptacleObjectIds": list(children.get(oid, ())),
         })
     return out
 

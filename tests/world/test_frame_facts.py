@@ -81,7 +81,11 @@ def test_cached_facts_equal_the_uncached_computation(world):
         visible = {k: int(m.sum()) for k, m in masks.items()
                    if m.sum() >= cfg.min_visible_pixels and world.object_distance(k) <= cfg.visibility_distance}
         assert world.visible_objects() == visible
-        assert world.metadata()["objects"] == object_metadata(world, visible)
+        objects = world.metadata()["objects"]
+        assert objects == object_metadata(world, visible)
+        state = world.view().state.objects
+        assert all(o["receptacleObjectIds"] == [c for c, s in state.items() if s.parent == o["objectId"]]
+                   for o in objects)
         assert np.array_equal(world.frame().rgb, fresh_render(world).rgb)
 
 
