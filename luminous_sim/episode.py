@@ -43,6 +43,8 @@ class EpisodeRecord:
     task: Any
     """The `TaskInstance` that was solved (after any redraws)."""
     trajectory: Trajectory
+    start_state: Any
+    """The `WorldState` the oracle started from (after ALFRED's set-up, e.g. everything dirty for cleaning)."""
     instructions: list[Any]
     """`Instructions`: first the one written to `instructions.txt`, then `extra_annotations` more, each
     from its own random stream (so the written files do not depend on how many are asked for)."""
@@ -112,7 +114,7 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
     full: set[str] = set()
     try:
         task = draw_task(scene, world.view(), task_type, rng)
-        start = world.agent
+        start, start_state = world.agent, world.view().state
         traj = Oracle(world, record_frames=record_frames).run(task.goal)
         for _ in range(TASK_REDRAWS):  # ALFRED's generator also drops tasks its expert cannot do
             if traj.success or not REDRAW_ON.intersection(traj.failure_codes):
@@ -127,6 +129,7 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
                 break
             world.close()
             world, task = fresh, redrawn
+            start_state = world.view().state
             traj = Oracle(world, record_frames=record_frames).run(task.goal)
         view = world.view()
         visible = set(view.visible_objects())
@@ -146,7 +149,7 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
     result = EpisodeResult(task_type, to_sexpr(task.goal), traj.success, (done, total), len(traj.low_actions),
                            traj.planning_seconds, Path(out_dir) if out_dir else None)
     if return_record:
-        return result, EpisodeRecord(task, traj, texts)
+        return result, EpisodeRecord(task, traj, start_state, texts)
     return (result, traj) if return_trajectory else result
 
 

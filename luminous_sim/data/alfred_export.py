@@ -1,8 +1,9 @@
 """Export one solved episode in ALFRED's json_2.1.0 layout (spec section 4):
 `<task_type>-<object>-<mrecep>-<parent>-<scene_num>/<task_id>/` with `traj_data.json`, `raw_images/`
-(one JPEG per recorded frame), optionally `video.mp4`, and a sidecar `luminous.json` with what ALFRED has
-no field for (task and goal, seed, the scene itself, evaluation, replans, package version), enough to
-regenerate the trajectory with `run_episode(Scene.from_json(sidecar["scene"]), task_type, seed)`.
+(one JPEG per recorded frame), `pddl_states/problem_0.pddl` (the starting state and the goal, for our
+planner's domain `planning.symbolic.domain_text()`), optionally `video.mp4`, and a sidecar `luminous.json`
+with what ALFRED has no field for (task and goal, seed, the scene itself, evaluation, replans, package
+version), enough to regenerate the trajectory with `run_episode(Scene.from_json(sidecar["scene"]), task_type, seed)`.
 
 Where ALFRED records something we cannot know, the value is ALFRED-typed and generated, and the sidecar
 says so (`generated`): the task id's timestamp, MTurk assignment ids and votes, object names' hex
@@ -262,6 +263,10 @@ def export_alfred(out_root: Path, scene: Scene, record: EpisodeRecord, seed: int
     write_atomic(trial / "traj_data.json", json.dumps(data, sort_keys=True, indent=4))
     for im, frame in zip(traj.images, traj.frames, strict=True):
         write_atomic(trial / "raw_images" / im["image_name"].replace(".png", ".jpg"), _jpeg(frame))
+    from luminous_sim.planning.symbolic import to_pddl_problem
+
+    problem = to_pddl_problem(record.start_state, record.task.goal, name=data["task_id"].lower())
+    write_atomic(trial / "pddl_states" / "problem_0.pddl", problem)
     if video and traj.frames:
         write_video(traj.frames, trial / "video.mp4")
     sidecar = {

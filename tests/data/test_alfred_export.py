@@ -67,6 +67,8 @@ def test_folder_images_and_sidecar(exported):
 
     assert Image.open(io.BytesIO((trial / "raw_images" / names[0]).read_bytes())).format == "JPEG"
     assert (trial / "video.mp4").stat().st_size > 0
+    problem = (trial / "pddl_states" / "problem_0.pddl").read_text()
+    assert problem.startswith("(define (problem") and "(:goal" in problem
     side = json.loads((trial / "luminous.json").read_text())
     assert side["seed"] == 0 and side["task"] == record.task.to_dict()
     assert side["goal_conditions"] == list(record.trajectory.goal_conditions)
@@ -87,6 +89,24 @@ def test_high_pddl_has_only_alfred_subgoals_and_low_actions_stay_ordered(exporte
     k = next(i for i, h in enumerate(high) if h["planner_action"]["action"] == "PickupObject")
     pick, goto = high[k]["planner_action"], high[k - 1]  # ALFRED names the walk by where the object lies
     assert goto["discrete_action"]["args"] == [pick["coordinateReceptacleObjectId"][0].lower()]
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("task_type,room", [
+    ("pick_heat_then_place_in_recep", "Kitchen"), ("pick_cool_then_place_in_recep", "Kitchen"),
+    ("pick_clean_then_place_in_recep", "Kitchen"), ("look_at_obj_in_light", "Bedroom"),
+])
+def test_other_task_types_match_every_real_file(task_type, room, tmp_path, real_structures):
+    """Heat, cool, clean and look-at bring CleanObject/HeatObject keys, the toggles that carry them,
+    object_toggles and dirty_and_empty (about 3-8 s each)."""
+    scene = scene_for_task(task_type, room, seed=0)
+    result, record = run_episode(scene, task_type, seed=0, return_record=True)
+    assert result.success
+    data = json.loads((export_alfred(tmp_path, scene, record, seed=0) / "traj_data.json").read_text())
+    problems = structure_differences(structure(data), real_structures)
+    assert not problems, "\n".join(problems[:50])
+    assert data["scene"]["dirty_and_empty"] == (task_type == "pick_clean_then_place_in_recep")
+    assert bool(data["scene"]["object_toggles"]) == (task_type == "look_at_obj_in_light")
 
 
 def test_open_and_close_subgoals_fold_into_their_interactions():
