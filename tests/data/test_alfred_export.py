@@ -124,3 +124,13 @@ def test_returning_a_record_changes_nothing_that_is_written(tmp_path: Path, expo
     assert (tmp_path / "rec" / "instructions.txt").read_text().startswith(rec.instructions[0].task_desc + "\n")
     for name in ("trajectory.json", "instructions.txt"):
         assert (tmp_path / "plain" / name).read_bytes() == (tmp_path / "rec" / name).read_bytes()
+
+
+def test_sidecar_alone_regenerates_the_same_files(tmp_path: Path, exported):
+    *_, trial, _ = exported
+    side = json.loads((trial / "luminous.json").read_text())
+    scene = Scene.from_json(json.dumps(side["scene"]))
+    _, record = run_episode(scene, side["task"]["task_type"], side["seed"], return_record=True)
+    again = export_alfred(tmp_path, scene, record, seed=side["seed"])
+    for rel in ("traj_data.json", "luminous.json", "pddl_states/problem_0.pddl", "raw_images/000000005.jpg"):
+        assert (again / rel).read_bytes() == (trial / rel).read_bytes(), rel
