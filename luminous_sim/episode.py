@@ -6,6 +6,7 @@ from __future__ import annotations
 import json
 from dataclasses import dataclass
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
@@ -33,6 +34,20 @@ class EpisodeResult:
     low_actions: int
     planning_seconds: float
     out_dir: Path | None
+
+
+@dataclass(frozen=True)
+class EpisodeRecord:
+    """What an exporter needs beyond the files `run_episode` writes (`return_record=True`)."""
+
+    task: Any
+    """The `TaskInstance` that was solved (after any redraws)."""
+    trajectory: Trajectory
+    start_state: Any
+    """The `WorldState` the oracle started from (after ALFRED's set-up, e.g. everything dirty for cleaning)."""
+    instructions: list[Any]
+    """`Instructions`: first the one written to `instructions.txt`, then `extra_annotations` more, each
+    from its own random stream (so the written files do not depend on how many are asked for)."""
 
 
 def poses_along(traj: Trajectory, start: AgentPose) -> list[AgentPose]:
@@ -80,8 +95,13 @@ def prepared_world(scene: Scene, task_type: str, catalog: Catalog | None = None)
 
 
 def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = None,
-                record_frames: bool = True, return_trajectory: bool = False):
-    """Sample a `task_type` task in `scene`, solve it with the oracle, evaluate it, and write the files."""
+                record_frames: bool = True, return_trajectory: bool = False, return_record: bool = False,
+                extra_annotations: int = 2):
+    """Sample a `task_type` task in `scene`, solve it with the oracle, evaluate it, and write the files.
+
+    Returns the `EpisodeResult`; with `return_trajectory`, `(result, trajectory)`; with `return_record`,
+    `(result, EpisodeRecord)` holding the task, the trajectory and `1 + extra_annotations` instructions.
+    """
     from luminous_sim.cdf.predicates import to_sexpr
     from luminous_sim.language import Describer
     from luminous_sim.planning import Oracle, draw_task
@@ -94,7 +114,7 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
     full: set[str] = set()
     try:
         task = draw_task(scene, world.view(), task_type, rng)
-        start = world.agent
+        start, start_state = world.agent, world.view().state
         traj = Oracle(world, record_frames=record_frames).run(task.goal)
         for _ in range(TASK_REDRAWS):  # ALFRED's generator also drops tasks its expert cannot do
             if traj.success or not REDRAW_ON.intersection(traj.failure_codes):
@@ -109,6 +129,7 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
                 break
             world.close()
             world, task = fresh, redrawn
+            start_state = world.view().state
             traj = Oracle(world, record_frames=record_frames).run(task.goal)
         view = world.view()
         visible = set(view.visible_objects())
@@ -116,12 +137,19 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
         traj.goal_conditions = (done, total)
         traj.success = traj.success and done == total
         text = Describer(view, rng).describe(traj, task_description(task, rng))
+        texts = [text]
+        if return_record:
+            for k in range(extra_annotations):
+                more = np.random.default_rng(np.random.SeedSequence([seed, 12, k]))
+                texts.append(Describer(view, more).describe(traj, task_description(task, more)))
         if out_dir is not None:
             _write(Path(out_dir), scene, task, traj, text, start, view)
     finally:
         world.close()
     result = EpisodeResult(task_type, to_sexpr(task.goal), traj.success, (done, total), len(traj.low_actions),
                            traj.planning_seconds, Path(out_dir) if out_dir else None)
+    if return_record:
+        return result, EpisodeRecord(task, traj, start_state, texts)
     return (result, traj) if return_trajectory else result
 
 
