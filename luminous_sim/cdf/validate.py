@@ -17,11 +17,13 @@ from luminous_sim.cdf.affordances import (
     has_ability,
     is_receptacle,
 )
+from luminous_sim.cdf.contradictions import find_conflicts
 from luminous_sim.cdf.graph import find_axis_contradiction, find_fixed_cycle
 from luminous_sim.cdf.issues import CDFValidationError, Issue
 from luminous_sim.cdf.predicates import (
     PREDICATES,
     Expr,
+    Param,
     atoms,
     is_ground_conjunction,
     is_variable,
@@ -374,8 +376,18 @@ def _check_task(cdf: ChallengeDefinition, names: dict[str, ObjectSpec]) -> list[
                 )
             )
         issues += _check_expr(task.initial, "task.initial", names)
+        issues += _check_conflicts(task.initial, "task.initial", names)
     issues += _check_expr(task.goal, "task.goal", names)
+    issues += _check_conflicts(task.goal, "task.goal", names)
     return issues
+
+
+def _check_conflicts(expr: Expr, path: str, names: dict[str, ObjectSpec]) -> list[Issue]:
+    def nonempty(param: Param) -> bool:
+        return any(param.type is None or o.type == param.type for o in names.values())
+
+    type_of = {n: o.type for n, o in names.items()}
+    return [Issue(path, c.message()) for c in find_conflicts(expr, type_of, nonempty)]
 
 
 def _check_expr(expr: Expr, path: str, names: dict[str, ObjectSpec]) -> list[Issue]:
