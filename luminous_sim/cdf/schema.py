@@ -11,7 +11,7 @@ Structure (YAML)::
       relations: [{subject, relation, target, weight, hard}]
     task:                                  # optional
       type: pick_cool_then_place_in_recep  # optional ALFRED task type
-      agent: {position: [x, z], rotation: 90, horizon: 30}
+      agent: {position: [x, y], rotation: 90, horizon: 30}
       initial: "(isOpen fridge)"           # optional ground literals
       goal: "(and (inReceptacle apple fridge) (isCool apple))"
     execution:                             # optional: high-level and/or low-level steps
@@ -28,6 +28,7 @@ import re
 from typing import Annotated, Any, ClassVar, Literal, TypeAlias, get_args
 
 from pydantic import (
+    AfterValidator,
     AliasChoices,
     BaseModel,
     BeforeValidator,
@@ -290,13 +291,34 @@ TaskType: TypeAlias = Literal[
 ]
 
 
+MAX_START_COORDINATE = 25.0
+"""Largest |x| or |y| of a start, in metres: every library room lies within 15 m of its origin."""
+
+
+def _plausible_coordinate(value: float) -> float:
+    if abs(value) > MAX_START_COORDINATE:
+        raise ValueError(
+            f"{value:g} m is outside -{MAX_START_COORDINATE:g}..{MAX_START_COORDINATE:g} m, farther from the "
+            "origin than any room extends; expected a start inside the room"
+        )
+    return value
+
+
+StartCoordinate: TypeAlias = Annotated[
+    float,
+    Field(allow_inf_nan=False, json_schema_extra={"minimum": -MAX_START_COORDINATE, "maximum": MAX_START_COORDINATE}),
+    AfterValidator(_plausible_coordinate),
+]
+
+
 class AgentPoseSpec(_Model):
-    """The agent's start: position (x, z) in metres, yaw in degrees, horizon (positive = down)."""
+    """The agent's start: position (x, y) on the room's floor in metres, yaw in degrees, horizon (+ = down)."""
 
     # The simulator's pose is `world.agent.AgentPose`; the JSON Schema keeps the document's name.
+    # Whether the position lies inside a named room is checked where the room is loaded (rooms is L1).
     model_config = ConfigDict(title="AgentPose")
 
-    position: tuple[Finite, Finite] | None = None
+    position: tuple[StartCoordinate, StartCoordinate] | None = None
     rotation: Literal[0, 90, 180, 270] | None = None
     horizon: Literal[-30, -15, 0, 15, 30, 45, 60] | None = None
 

@@ -8,7 +8,7 @@ from pathlib import Path
 from luminous_sim.cdf import CDF_VERSION, export_schema, from_document, read_document, summarize
 from luminous_sim.cdf.issues import CDFValidationError, Issue
 from luminous_sim.cli.args import output_dir
-from luminous_sim.errors import CDFError
+from luminous_sim.errors import CDFError, RoomError
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
@@ -36,6 +36,23 @@ def _check_sizes(cdf, path: Path) -> None:
         raise CDFError(f"{path}: {exc}") from None
 
 
+def _check_start(cdf, path: Path) -> None:
+    """An agent start outside the named library room (procedural rooms are drawn at generation time)."""
+    from luminous_sim.cssg.pipeline import start_outside
+    from luminous_sim.rooms.library import is_procedural, load_room
+
+    room = cdf.scene.room
+    if cdf.task is None or cdf.task.agent is None or not isinstance(room, str) or is_procedural(room):
+        return
+    try:
+        shell = load_room(room)
+    except RoomError as exc:
+        raise CDFValidationError(str(path), [Issue("scene.room", str(exc))]) from None
+    outside = start_outside(cdf, shell)
+    if outside:
+        raise CDFValidationError(str(path), [Issue("task.agent.position", outside)])
+
+
 def run_validate(args: argparse.Namespace) -> int:
     """Validate each file; print a summary of each valid one, raise one error listing the others."""
     issues: list[str] = []
@@ -44,6 +61,7 @@ def run_validate(args: argparse.Namespace) -> int:
             doc = read_document(path)
             cdf = from_document(doc, str(path))
             _check_sizes(cdf, path)
+            _check_start(cdf, path)
         except CDFError as exc:
             issues.append(str(exc))
             continue

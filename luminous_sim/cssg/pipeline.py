@@ -71,6 +71,28 @@ def choose_room(cdf: ChallengeDefinition, rng: np.random.Generator, catalog: Cat
     raise InfeasibleSceneError(f"no {room_type} room shell meets the CDF's room constraints {room}")
 
 
+def start_outside(cdf: ChallengeDefinition, shell: RoomShell) -> str | None:
+    """Why the CDF's agent start (task.agent.position) is not on the room's floor, or None when it is or is unset."""
+    from shapely.geometry import Point
+
+    agent = cdf.task.agent if cdf.task is not None else None
+    if agent is None or agent.position is None:
+        return None
+    x, y = agent.position
+    if shell.polygon().contains(Point(x, y)):
+        return None
+    minx, miny, maxx, maxy = shell.bounds
+    return (f"({x:g}, {y:g}) is outside room {shell.name!r} (x {minx:g}..{maxx:g}, y {miny:g}..{maxy:g} m); "
+            "expected a start inside its floor outline")
+
+
+def _fixed_room(cdf: ChallengeDefinition) -> bool:
+    """Whether the CDF names a library room (the same shell on every attempt, unlike a procedural one)."""
+    from luminous_sim.rooms.library import is_procedural
+
+    return isinstance(cdf.scene.room, str) and not is_procedural(cdf.scene.room)
+
+
 def _meets(shell: RoomShell, c) -> bool:
     minx, miny, maxx, maxy = shell.bounds
     width = min(maxx - minx, maxy - miny)
@@ -258,6 +280,10 @@ def generate(cdf: ChallengeDefinition, seed: int = 0, room: RoomShell | None = N
         rng = np.random.default_rng(np.random.SeedSequence([seed, attempt]))
         if room is None:
             shell = choose_room(cdf, rng, catalog)
+        if attempt == 0 and (room is not None or _fixed_room(cdf)):
+            outside = start_outside(cdf, shell)
+            if outside:
+                raise InfeasibleSceneError(f"CDF{' ' + cdf.name if cdf.name else ''}: task.agent.position: {outside}")
         draft, report = sample_layout(cdf, shell, rng, catalog, attempt)
         if report.ok:
             scene = draft.to_scene("cssg", seed, source=cdf.name or "", notes={"attempt": attempt,
