@@ -38,7 +38,7 @@ def _check_sizes(cdf, path: Path) -> None:
 
 def _check_start(cdf, path: Path) -> None:
     """An agent start outside the named library room (procedural rooms are drawn at generation time)."""
-    from luminous_sim.cssg.pipeline import start_outside
+    from luminous_sim.cssg import start_outside
     from luminous_sim.rooms.library import is_procedural, load_room
 
     room = cdf.scene.room

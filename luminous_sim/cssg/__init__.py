@@ -11,7 +11,7 @@ Typical use::
 """
 
 from luminous_sim.cssg.baseline import empty_cdf, generate_uniform, sample_uniform
-from luminous_sim.cssg.pipeline import ATTEMPTS, Generated, choose_room, generate, sample_layout
+from luminous_sim.cssg.pipeline import ATTEMPTS, Generated, choose_room, generate, sample_layout, start_outside
 from luminous_sim.cssg.validate import LayoutReport, RelationCheck, check_layout
 
 __all__ = [
@@ -26,4 +26,5 @@ __all__ = [
     "generate_uniform",
     "sample_layout",
     "sample_uniform",
+    "start_outside",
 ]

@@ -9,8 +9,7 @@ import yaml
 
 from luminous_sim.cdf import CDFValidationError, from_document
 from luminous_sim.cli import main as cli
-from luminous_sim.cssg import generate
-from luminous_sim.cssg.pipeline import start_outside
+from luminous_sim.cssg import generate, start_outside
 from luminous_sim.errors import InfeasibleSceneError
 from luminous_sim.rooms import load_room
 from tests.cdf.helpers import base
