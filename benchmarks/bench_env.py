@@ -1,0 +1,157 @@
+"""Gymnasium environment speed: steps/s and reset time of `LuminousEnv` through `gymnasium.make`.
+
+    python benchmarks/bench_env.py                       # about a minute
+    python benchmarks/bench_env.py --repeats 5 --seconds 5   # longer, tighter figures
+
+Prints the machine load (`os.getloadavg()`) at the start and the end, then for ALFRED's camera (300x300,
+`Luminous-ALFRED-PickPlace-v0` by default) and the small ids' size (64 px, `Luminous-NavToObject-64-v0`),
+each figure as the median over repeats with its spread (min..max):
+
+- env steps/s, single process, for two action mixes from a seeded generator: `random`, a random policy
+  that never stops (uniform over every action but Stop: mostly interactions at grid points, which mostly
+  fail and then render nothing new), and `nav`, navigation actions only (uniform over the five: most
+  succeed and each success renders a new frame); episode limits raised so that an episode rarely ends
+  while timed; an episode that does end is reset outside the timed span;
+- env steps/s with `gymnasium.vector.AsyncVectorEnv` of 2 workers, the same id and seed in each worker,
+  counted as environment steps (2 per vector step); an episode that ends is reset by the vector env's
+  autoreset inside the timed span (the count of such resets is printed);
+- reset time for a new scene (`reset(seed=s)`, a fresh seed each repeat: CSSG generates a room, a goal is
+  drawn and the expert's plan proved) and for a reused one (`reset(seed=s, options={"scene": scene})`
+  with the scene of the previous episode: no generation, the rest as before).
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import statistics
+import sys
+import time
+from pathlib import Path
+
+import gymnasium
+import numpy as np
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+import luminous_sim  # noqa: F401  (registers the ids)
+
+LIMITS = {"max_steps": 10**6, "max_failures": 10**6}
+"""Episode limits while timing steps, so that truncation does not interrupt the timed span."""
+STOP = 5
+"""Index of Stop in the flat action space (`luminous_sim.env.actions`)."""
+
+
+def spread(values: list[float], fmt: str = ".1f") -> str:
+    """'median (min..max, n=K)' of the repeats."""
+    return (f"{statistics.median(values):{fmt}} ({min(values):{fmt}}..{max(values):{fmt}}, "
+            f"n={len(values)})")
+
+
+MIXES = ("random", "nav")
+
+
+def _actions(mix: str, n: int, rng: np.random.Generator, count: int) -> np.ndarray:
+    """`count` uniform draws: from 0..n-1 without Stop (`random`), or from the navigation actions (`nav`)."""
+    if mix == "nav":
+        return rng.integers(STOP, size=count)
+    draws = rng.integers(n - 1, size=count)
+    return draws + (draws >= STOP)
+
+
+def single_steps_per_s(env_id: str, mix: str, seed: int, repeats: int, seconds: float) -> tuple[list[float], int]:
+    """Steps/s of one env per repeat, and how many episodes ended while stepping."""
+    env = gymnasium.make(env_id, **LIMITS)
+    rng = np.random.default_rng(seed)
+    env.reset(seed=seed)
+    rates, ended = [], 0
+    for _ in range(repeats):
+        steps, busy = 0, 0.0
+        while busy < seconds:
+            acts = _actions(mix, int(env.action_space.n), rng, 64)
+            t0 = time.perf_counter()
+            done = False
+            for a in acts:
+                _, _, terminated, truncated, _ = env.step(int(a))
+                steps += 1
+                if terminated or truncated:
+                    done = True
+                    break
+            busy += time.perf_counter() - t0
+            if done:
+                ended += 1
+                env.reset()
+        rates.append(steps / busy)
+    env.close()
+    return rates, ended
+
+
+def vector_steps_per_s(env_id: str, mix: str, seed: int, repeats: int, seconds: float,
+                       workers: int = 2) -> tuple[list[float], int]:
+    """Environment steps/s (workers per vector step) of an AsyncVectorEnv per repeat, and the autoresets."""
+    envs = gymnasium.vector.AsyncVectorEnv([lambda: gymnasium.make(env_id, **LIMITS)] * workers)
+    rng = np.random.default_rng(seed)
+    envs.reset(seed=[seed] * workers)
+    n = int(envs.single_action_space.n)
+    rates, ended = [], 0
+    for _ in range(repeats):
+        steps = 0
+        t0 = time.perf_counter()
+        while time.perf_counter() - t0 < seconds:
+            _, _, terminated, truncated, _ = envs.step(_actions(mix, n, rng, workers))
+            steps += workers
+            ended += int(np.sum(terminated | truncated))
+        rates.append(steps / (time.perf_counter() - t0))
+    envs.close()
+    return rates, ended
+
+
+def reset_seconds(env_id: str, seed: int, repeats: int) -> tuple[list[float], list[float]]:
+    """Seconds per reset: a new scene each repeat, and the previous episode's scene passed again."""
+    env = gymnasium.make(env_id)
+    env.reset(seed=seed)  # imports and first-use costs stay out of the figures
+    new, reused = [], []
+    for i in range(repeats):
+        t0 = time.perf_counter()
+        env.reset(seed=seed + 1 + i)
+        new.append(time.perf_counter() - t0)
+        scene = env.unwrapped.episode.scene  # type: ignore[attr-defined]
+        t0 = time.perf_counter()
+        env.reset(seed=seed + 1000 + i, options={"scene": scene})
+        reused.append(time.perf_counter() - t0)
+    env.close()
+    return new, reused
+
+
+def bench(env_id: str, args: argparse.Namespace) -> None:
+    spec = gymnasium.spec(env_id)
+    size = f"{spec.kwargs.get('width', 300)}x{spec.kwargs.get('height', 300)}"
+    print(f"\n{env_id} ({size})")
+    for mix in args.mixes:
+        rates, ended = single_steps_per_s(env_id, mix, args.seed, args.repeats, args.seconds)
+        print(f"  steps/s, {mix:6} single process:    {spread(rates)}   episodes ended: {ended}")
+        vrates, vended = vector_steps_per_s(env_id, mix, args.seed, args.repeats, args.seconds)
+        print(f"  steps/s, {mix:6} AsyncVectorEnv x2: {spread(vrates)}   autoresets: {vended}"
+              f"   ({statistics.median(vrates) / statistics.median(rates):.2f}x single)")
+    new, reused = reset_seconds(env_id, args.seed, args.repeats)
+    print(f"  reset s, new scene:                 {spread(new, '.2f')}")
+    print(f"  reset s, reused scene:              {spread(reused, '.2f')}")
+
+
+def main(argv: list[str] | None = None) -> None:
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--ids", nargs="+", default=["Luminous-ALFRED-PickPlace-v0", "Luminous-NavToObject-64-v0"],
+                    help="environment ids to measure")
+    ap.add_argument("--mixes", nargs="+", choices=MIXES, default=list(MIXES), help="action mixes to time")
+    ap.add_argument("--seed", type=int, default=0, help="episode seed (and action-generator seed)")
+    ap.add_argument("--repeats", type=int, default=3, help="repeats per figure (median and min..max reported)")
+    ap.add_argument("--seconds", type=float, default=1.5, help="seconds stepping per repeat of a steps/s figure")
+    args = ap.parse_args(argv)
+    print(f"load average at start (1, 5, 15 min): {os.getloadavg()}; cores: {os.cpu_count()}")
+    for env_id in args.ids:
+        bench(env_id, args)
+    print(f"\nload average at end (1, 5, 15 min): {os.getloadavg()}")
+
+
+if __name__ == "__main__":
+    main()
