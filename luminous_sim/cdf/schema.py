@@ -49,7 +49,7 @@ from luminous_sim.cdf import refs
 from luminous_sim.cdf.predicates import Expr, ExprError, expr_from_data, to_sexpr
 from luminous_sim.cdf.relations import ALIASES, RELATIONS, canonical, unknown_relation_message
 from luminous_sim.errors import VocabularyError
-from luminous_sim.vocab import ALL_TYPES, NAVIGATION_ACTIONS, ROOM_TYPES, check_type
+from luminous_sim.vocab import ALFRED_TASK_TYPES, ALL_TYPES, NAVIGATION_ACTIONS, ROOM_TYPES, check_type
 
 CDF_VERSION = 2
 """The version this model describes; older documents are upgraded on load (see upgrade.py)."""
@@ -289,6 +289,7 @@ TaskType: TypeAlias = Literal[
     "pick_cool_then_place_in_recep",
     "pick_and_place_with_movable_recep",
 ]
+assert get_args(TaskType) == ALFRED_TASK_TYPES, "TaskType must list vocab's ALFRED_TASK_TYPES in order"
 
 
 MAX_START_COORDINATE = 25.0

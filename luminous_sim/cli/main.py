@@ -9,6 +9,7 @@ A reader that stops reading (`luminous rooms list --json | head`) ends the comma
 from __future__ import annotations
 
 import argparse
+import contextlib
 import importlib
 import os
 import sys
@@ -43,11 +44,9 @@ def build_parser() -> argparse.ArgumentParser:
 
 def _quiet_stdout() -> None:
     """Point stdout at /dev/null so that flushing it at exit raises no second BrokenPipeError."""
-    try:
+    with contextlib.suppress(OSError, ValueError):  # stdout without a file descriptor (captured in tests)
         devnull = os.open(os.devnull, os.O_WRONLY)
         os.dup2(devnull, sys.stdout.fileno())
-    except (OSError, ValueError):  # stdout without a file descriptor (captured in tests)
-        pass
 
 
 def _os_message(exc: OSError) -> str:

@@ -10,18 +10,8 @@ from dataclasses import asdict, dataclass, field, fields
 from typing import Any
 
 from luminous_sim.errors import LuminousError
+from luminous_sim.vocab import ALFRED_TASK_TYPES
 
-ALFRED_TASK_TYPES: tuple[str, ...] = (
-    "pick_and_place_simple",
-    "pick_two_obj_and_place",
-    "look_at_obj_in_light",
-    "pick_clean_then_place_in_recep",
-    "pick_heat_then_place_in_recep",
-    "pick_cool_then_place_in_recep",
-    "pick_and_place_with_movable_recep",
-)
-"""ALFRED's seven task types (the same names as `luminous_sim.tasks.TASK_TYPES`, kept here so that reading
-a spec does not import the task layer)."""
 SMALL_TASK_TYPES: tuple[str, ...] = ("goto_object", "pickup_object")
 """Tasks for RL from scratch: stand where a named object is in view and reach; hold an object of a type."""
 TASK_KINDS: tuple[str, ...] = ALFRED_TASK_TYPES + SMALL_TASK_TYPES

@@ -15,6 +15,7 @@ from typing import Any, Protocol
 import numpy as np
 
 from luminous_sim.cdf.predicates import Atom, Exists, Param
+from luminous_sim.errors import PlanningError
 from luminous_sim.language import Describer
 from luminous_sim.tasks import PLAN_ORDER, PddlParams, TaskInstance
 from luminous_sim.world import World, WorldView
@@ -148,7 +149,7 @@ class GotoGoal:
                 continue
             try:
                 steps = goto_actions(graph, view.agent, pose)
-            except Exception:  # networkx.NetworkXNoPath: that one is walled off
+            except PlanningError:  # that one is walled off
                 continue
             if best is None or len(steps) < len(best):
                 best = steps

@@ -9,6 +9,7 @@ from itertools import pairwise
 
 import networkx as nx
 
+from luminous_sim.errors import FailureCode, PlanningError
 from luminous_sim.world import NavGrid
 from luminous_sim.world.agent import GRID, HORIZON_STEP, AgentPose
 
@@ -49,17 +50,24 @@ class NavGraph:
         return (gx, gy, pose.rotation % 360)
 
     def path(self, start: AgentPose, goal: AgentPose) -> list[str]:
-        """Shortest list of MoveAhead/Rotate actions from `start` to `goal` (horizon ignored)."""
+        """Shortest list of MoveAhead/Rotate actions from `start` to `goal` (horizon ignored).
+
+        Raises:
+            PlanningError: (code NO_PATH) the goal is walled off, or either pose is off the graph.
+        """
         a, b = self.node(start), self.node(goal)
         if a == b:
             return []
-        nodes = nx.dijkstra_path(self.graph, a, b)
+        try:
+            nodes = nx.dijkstra_path(self.graph, a, b)
+        except (nx.NetworkXNoPath, nx.NodeNotFound) as exc:
+            raise PlanningError(f"no path from {start} to {goal}: {exc}", FailureCode.NO_PATH) from None
         return [self.graph.edges[u, v]["action"] for u, v in pairwise(nodes)]
 
     def distance(self, start: AgentPose, goal: AgentPose) -> int:
         try:
             return len(self.path(start, goal))
-        except nx.NetworkXNoPath:
+        except PlanningError:
             return 10**9
 
 

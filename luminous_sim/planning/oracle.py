@@ -176,8 +176,8 @@ class Oracle:
                                  unreachable=object_id)
         try:
             steps = goto_actions(self.graph, self.view.agent, pose)
-        except Exception as exc:  # networkx.NetworkXNoPath
-            raise ExecutionError(f"no path to {object_id}: {exc}", FailureCode.NO_PATH) from exc
+        except PlanningError as exc:
+            raise ExecutionError(f"no path to {object_id}: {exc}", exc.code) from exc
         for a in steps:
             self._low(nav_api(a), {"action": DISCRETE_NAVIGATION[a], "args": {}}, high_idx, traj)
         return pose

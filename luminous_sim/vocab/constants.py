@@ -69,6 +69,8 @@ INTERACTION_ACTIONS: tuple[str, ...] = tuple(_ACTIONS["interaction"])
 """ALFRED's seven low-level interaction actions (spec section 2.2)."""
 
 HIGH_LEVEL_ACTIONS: tuple[str, ...] = tuple(_ACTIONS["high_level"])
+ALFRED_TASK_TYPES: tuple[str, ...] = tuple(_D["task_types"])
+"""ALFRED's seven task types, in its order."""
 """ALFRED's high-level planner actions (its `End` is not listed)."""
 
 NOOP_ACTION: str = _ACTIONS["noop"]

@@ -3,7 +3,7 @@ style of Minigrid's bot test), and the same seed gives the same low-level trajec
 
 The room is the first room type the task type allows in alphabetical order (Bathroom and Bedroom,
 which hold the fewest objects, come first); the scene and episode seed is the first seed, 0.
-Neither is chosen to make a type pass: a type that fails is listed in KNOWN_FAILURES with why.
+Neither is chosen to make a type pass: every type must pass on this first seed.
 """
 
 from __future__ import annotations
@@ -15,19 +15,9 @@ import pytest
 from luminous_sim.data import scene_for_task
 from luminous_sim.episode import EpisodeResult, run_episode
 from luminous_sim.planning.trajectory import Trajectory
-from luminous_sim.tasks import TASK_TYPES, TaskSamplingError, task_info
+from luminous_sim.tasks import TASK_TYPES, task_info
 
 SEED = 0
-KNOWN_FAILURES: dict[str, str] = {}
-"""Types whose first seed fails today, with why; strict, so a fix makes the test ask for the mark to go."""
-CASES = [
-    pytest.param(
-        t, marks=pytest.mark.xfail(raises=TaskSamplingError, strict=True, reason=KNOWN_FAILURES[t])
-    )
-    if t in KNOWN_FAILURES
-    else t
-    for t in TASK_TYPES
-]
 
 
 def _room(task_type: str) -> str:
@@ -43,7 +33,7 @@ def _low_actions(traj: Trajectory) -> list[dict[str, Any]]:
     return [a["api_action"] for a in traj.low_actions]
 
 
-@pytest.mark.parametrize("task_type", CASES)
+@pytest.mark.parametrize("task_type", TASK_TYPES)
 def test_oracle_solves_a_sampled_task_and_replays(task_type: str) -> None:
     result, traj = _episode(task_type)
     done, total = result.goal_conditions

@@ -124,3 +124,10 @@ def test_the_two_layer_classifications(object_type: str, cdf_layer: str, generat
 
     assert layer_of(object_type).name == cdf_layer
     assert generation_layer(object_type) == generation
+
+
+def test_the_task_layer_knows_exactly_vocabs_task_types_in_order():
+    from luminous_sim.tasks import TASK_TYPES
+    from luminous_sim.vocab import ALFRED_TASK_TYPES
+
+    assert tuple(TASK_TYPES) == ALFRED_TASK_TYPES
