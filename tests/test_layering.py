@@ -13,7 +13,7 @@ LAYER = {
     "errors": 0, "lazy": 0, "vocab": 0, "assets": 0, "cdf": 0,
     "scene": 1, "rooms": 1, "cssg": 1, "states": 1,
     "world": 2,
-    "tasks": 3, "planning": 3, "language": 3,
+    "tasks": 3, "planning": 3, "language": 3, "splits": 3,
     "env": 4,
     "data": 5, "eval": 5, "cli": 5, "demo": 5, "episode": 5, "scene_outputs": 5,
 }

@@ -1,0 +1,133 @@
+"""LUMINOUS's evaluation splits (paper section 4.3): ALFRED's room structures with new layouts.
+
+- **S+** (Seen Plus): 10 room structures per room type drawn from ALFRED's training (seen) scenes, one new
+  layout each; the paper generated 1,405 trajectories in these 40 scenes.
+- **U+** (Unseen Plus): the 4 room structures of ALFRED's valid_unseen split, 4 new layouts each (16
+  scenes; 435 trajectories in the paper).
+- **U+test**: the same over the 8 structures of ALFRED's tests_unseen split (beyond the paper).
+
+An episode of a split is named by its index alone: `split_entry("S+", i)` says which room structure,
+which layout seed, which task type and which task seed episode `i` uses, the same on every machine.
+Task types go round ALFRED's seven in order; each is placed only in structures of the room types ALFRED
+generates it in.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from luminous_sim.errors import LuminousError
+from luminous_sim.rooms import ALFRED_SPLITS, scene_room_type, scene_split
+from luminous_sim.tasks import task_info
+from luminous_sim.vocab import ALFRED_TASK_TYPES, ROOM_TYPES
+
+SEEN_PER_ROOM_TYPE = 10
+"""Training structures per room type in S+ (the paper's "10 room structures ... for each room type")."""
+SPLIT_SEED = 2021
+"""Seed of the draw of S+'s structures (fixed: the split is part of the benchmark's definition)."""
+
+
+class SplitError(LuminousError):
+    """An unknown split name or an index outside a split."""
+
+
+@dataclass(frozen=True)
+class PlusSplit:
+    """A split's room structures and how many layouts each gets."""
+
+    name: str
+    structures: tuple[str, ...]
+    layouts: int
+    code: int
+    """A number that keeps the seeds of different splits apart."""
+
+
+@dataclass(frozen=True)
+class SplitEntry:
+    """One episode of a split: where it happens and what is asked."""
+
+    split: str
+    index: int
+    floor_plan: str
+    room_type: str
+    layout: int
+    """Which of the structure's layouts (0 .. layouts-1)."""
+    layout_seed: int
+    task_type: str
+    task_seed: int
+
+
+def _numbers(scenes: list[int]) -> tuple[str, ...]:
+    return tuple(f"FloorPlan{n}" for n in sorted(scenes))
+
+
+def _seen_structures() -> tuple[str, ...]:
+    rng = np.random.default_rng(SPLIT_SEED)
+    chosen: list[int] = []
+    for hundred in (0, 2, 3, 4):
+        seen = [hundred * 100 + i for i in range(1, 31) if scene_split(hundred * 100 + i) == "seen"]
+        chosen.extend(int(n) for n in rng.choice(seen, SEEN_PER_ROOM_TYPE, replace=False))
+    return _numbers(chosen)
+
+
+PLUS_SPLITS: dict[str, PlusSplit] = {
+    "S+": PlusSplit("S+", _seen_structures(), layouts=1, code=1),
+    "U+": PlusSplit("U+", _numbers(list(ALFRED_SPLITS["valid_unseen"])), layouts=4, code=2),
+    "U+test": PlusSplit("U+test", _numbers(list(ALFRED_SPLITS["tests_unseen"])), layouts=4, code=3),
+}
+"""The splits by name."""
+
+
+def plus_split(name: str) -> PlusSplit:
+    """The split called `name` (S+, U+ or U+test).
+
+    Raises:
+        SplitError: no such split.
+    """
+    if name not in PLUS_SPLITS:
+        raise SplitError(f"unknown split {name!r}; expected one of {', '.join(PLUS_SPLITS)}")
+    return PLUS_SPLITS[name]
+
+
+def _seed(*words: int) -> int:
+    return int(np.random.SeedSequence(list(words)).generate_state(1, dtype=np.uint32)[0])
+
+
+def split_entry(name: str, index: int) -> SplitEntry:
+    """Episode `index` of split `name`: task type `index mod 7`, then the structures that allow that
+    type in turn, then their layouts in turn.
+
+    Raises:
+        SplitError: unknown split or a negative index.
+    """
+    split = plus_split(name)
+    if index < 0:
+        raise SplitError(f"split {name}: episode index {index} is negative")
+    types = len(ALFRED_TASK_TYPES)
+    task_type = ALFRED_TASK_TYPES[index % types]
+    rooms = task_info(task_type).rooms
+    structures = [s for s in split.structures if scene_room_type(int(s[len("FloorPlan"):])) in rooms]
+    turn = index // types
+    floor_plan = structures[turn % len(structures)]
+    layout = (turn // len(structures)) % split.layouts
+    number = int(floor_plan[len("FloorPlan"):])
+    return SplitEntry(split=name, index=index, floor_plan=floor_plan, room_type=scene_room_type(number),
+                      layout=layout, layout_seed=_seed(split.code, number, layout), task_type=task_type,
+                      task_seed=_seed(split.code, 7, index))
+
+
+def split_entries(name: str, count: int, start: int = 0) -> list[SplitEntry]:
+    """Episodes `start .. start + count - 1` of split `name`."""
+    return [split_entry(name, i) for i in range(start, start + count)]
+
+
+def oct21_document(built: dict[str, list[str]], annotations: int = 3) -> dict[str, list[dict[str, object]]]:
+    """An ALFRED `oct21.json`-style split file: per split, one entry per (trajectory, annotation index),
+    `{"repeat_idx": k, "task": "<task dir>/<trial dir>"}`, trajectories in the order given."""
+    return {name: [{"repeat_idx": k, "task": task} for task in tasks for k in range(annotations)]
+            for name, tasks in built.items()}
+
+
+assert set(ROOM_TYPES) == {"Kitchen", "LivingRoom", "Bedroom", "Bathroom"}, "S+ draws 10 per ALFRED room type"
