@@ -36,7 +36,7 @@ from luminous_sim.cdf.relations import (
     RELATIONS,
     STRUCTURE_ELEMENTS,
 )
-from luminous_sim.vocab import ALL_TYPES
+from luminous_sim.vocab import ALFRED_TASK_ROOMS, ALL_TYPES
 
 if TYPE_CHECKING:
     from luminous_sim.cdf.schema import ChallengeDefinition, HighLevelStep, LowLevelStep, ObjectSpec
@@ -68,16 +68,6 @@ ACTION_ABILITY: dict[str, str | None] = {
 }
 """Execution action -> the ability its object's type needs (receptacles need `receptacle`)."""
 
-TASK_ROOMS: dict[str, frozenset[str]] = {
-    "pick_and_place_simple": frozenset({"Kitchen", "LivingRoom", "Bedroom", "Bathroom"}),
-    "pick_two_obj_and_place": frozenset({"Kitchen", "LivingRoom", "Bedroom", "Bathroom"}),
-    "look_at_obj_in_light": frozenset({"LivingRoom", "Bedroom"}),
-    "pick_clean_then_place_in_recep": frozenset({"Kitchen", "Bathroom"}),
-    "pick_heat_then_place_in_recep": frozenset({"Kitchen"}),
-    "pick_cool_then_place_in_recep": frozenset({"Kitchen"}),
-    "pick_and_place_with_movable_recep": frozenset({"Kitchen", "LivingRoom", "Bedroom"}),
-}
-"""ALFRED task type -> the room types it is generated in (spec/alfred.md, section 1)."""
 
 _RECEPTACLES = tuple(t for t in ALL_TYPES if is_receptacle(t))
 
@@ -358,11 +348,11 @@ def _check_task(cdf: ChallengeDefinition, names: dict[str, ObjectSpec]) -> list[
     task = cdf.task
     assert task is not None
     issues = []
-    if task.type is not None and not TASK_ROOMS[task.type] & set(cdf.scene.room_type):
+    if task.type is not None and not ALFRED_TASK_ROOMS[task.type] & set(cdf.scene.room_type):
         issues.append(
             Issue(
                 "task.type",
-                f"ALFRED generates {task.type} only in {_listing(sorted(TASK_ROOMS[task.type]))}; "
+                f"ALFRED generates {task.type} only in {_listing(sorted(ALFRED_TASK_ROOMS[task.type]))}; "
                 "expected a scene.room_type among them",
             )
         )

@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from luminous_sim.cdf.predicates import And, Atom, Exists, Expr, ForAll, Not, Param
 from luminous_sim.tasks.errors import TaskError
 from luminous_sim.tasks.model import PddlParams
-from luminous_sim.vocab import ROOM_TYPES, vocab_data
+from luminous_sim.vocab import ALFRED_TASK_ROOMS, vocab_data
 
 SLICED_PARENTS: tuple[str, ...] = ("Apple", "Bread", "Lettuce", "Potato", "Tomato")
 """Types that can be the object of a sliced task (sliceable with a `<X>Sliced` type; not Egg)."""
@@ -85,41 +85,46 @@ class TaskType:
     build: Callable[[PddlParams], tuple[tuple[Param, ...], list[Expr]]]
 
 
-_ALL = frozenset(ROOM_TYPES)
+
+
+def _rooms(task_type: str) -> frozenset[str]:
+    return ALFRED_TASK_ROOMS[task_type]
+
+
 _TABLE: tuple[TaskType, ...] = (
-    TaskType("pick_and_place_simple", _ALL, True, ("parent_target",), _simple),
-    TaskType("pick_two_obj_and_place", _ALL, True, ("parent_target",), _pick_two),
+    TaskType("pick_and_place_simple", _rooms("pick_and_place_simple"), True, ("parent_target",), _simple),
+    TaskType("pick_two_obj_and_place", _rooms("pick_two_obj_and_place"), True, ("parent_target",), _pick_two),
     TaskType(
         "look_at_obj_in_light",
-        frozenset({"LivingRoom", "Bedroom"}),
+        _rooms("look_at_obj_in_light"),
         False,
         ("toggle_target",),
         _look_at,
     ),
     TaskType(
         "pick_clean_then_place_in_recep",
-        frozenset({"Kitchen", "Bathroom"}),
+        _rooms("pick_clean_then_place_in_recep"),
         True,
         ("parent_target",),
         _changed("isClean"),
     ),
     TaskType(
         "pick_heat_then_place_in_recep",
-        frozenset({"Kitchen"}),
+        _rooms("pick_heat_then_place_in_recep"),
         True,
         ("parent_target",),
         _changed("isHot"),
     ),
     TaskType(
         "pick_cool_then_place_in_recep",
-        frozenset({"Kitchen"}),
+        _rooms("pick_cool_then_place_in_recep"),
         True,
         ("parent_target",),
         _changed("isCool"),
     ),
     TaskType(
         "pick_and_place_with_movable_recep",
-        frozenset({"Kitchen", "LivingRoom", "Bedroom"}),
+        _rooms("pick_and_place_with_movable_recep"),
         True,
         ("parent_target", "mrecep_target"),
         _movable,

@@ -18,6 +18,7 @@ from luminous_sim.vocab.alfred import (
 )
 from luminous_sim.vocab.constants import (
     AGENT_ACTIONS,
+    ALFRED_TASK_ROOMS,
     ALFRED_TASK_TYPES,
     BASINS,
     DECORATION_TYPES,
@@ -43,6 +44,7 @@ from luminous_sim.vocab.constants import (
 
 __all__ = [
     "AGENT_ACTIONS",
+    "ALFRED_TASK_ROOMS",
     "ALFRED_TASK_TYPES",
     "ALL_TYPES",
     "BASINS",

@@ -69,9 +69,15 @@ INTERACTION_ACTIONS: tuple[str, ...] = tuple(_ACTIONS["interaction"])
 """ALFRED's seven low-level interaction actions (spec section 2.2)."""
 
 HIGH_LEVEL_ACTIONS: tuple[str, ...] = tuple(_ACTIONS["high_level"])
+"""ALFRED's high-level planner actions (its `End` is not listed)."""
+
 ALFRED_TASK_TYPES: tuple[str, ...] = tuple(_D["task_types"])
 """ALFRED's seven task types, in its order."""
-"""ALFRED's high-level planner actions (its `End` is not listed)."""
+
+ALFRED_TASK_ROOMS: Mapping[str, frozenset[str]] = MappingProxyType(
+    {t: frozenset(_D["task_rooms"][t]) for t in ALFRED_TASK_TYPES}
+)
+"""ALFRED task type -> the room types its generator places it in (spec/alfred.md, section 1)."""
 
 NOOP_ACTION: str = _ACTIONS["noop"]
 """The action that does nothing (ALFRED's `End` records it as its discrete action)."""

@@ -8,7 +8,6 @@ from dataclasses import FrozenInstanceError
 import pytest
 
 from luminous_sim.cdf import parse_expr, to_sexpr
-from luminous_sim.cdf.validate import TASK_ROOMS
 from luminous_sim.tasks import (
     TASK_TYPES,
     PddlParams,
@@ -19,6 +18,7 @@ from luminous_sim.tasks import (
     goal_satisfied,
     params_problems,
 )
+from luminous_sim.vocab import ALFRED_TASK_ROOMS
 from tests.tasks.helpers import KITCHEN, state_of
 
 
@@ -79,9 +79,14 @@ def test_task_types_table_matches_alfred():
         "pick_cool_then_place_in_recep",
         "pick_and_place_with_movable_recep",
     ]
-    assert {
-        k: v.rooms for k, v in TASK_TYPES.items()
-    } == TASK_ROOMS  # one truth with the CDF checker
+    everywhere = {"Kitchen", "LivingRoom", "Bedroom", "Bathroom"}
+    assert {k: v.rooms for k, v in TASK_TYPES.items()} == {  # ALFRED's table (spec section 1)
+        "pick_and_place_simple": everywhere, "pick_two_obj_and_place": everywhere,
+        "look_at_obj_in_light": {"LivingRoom", "Bedroom"}, "pick_clean_then_place_in_recep": {"Kitchen", "Bathroom"},
+        "pick_heat_then_place_in_recep": {"Kitchen"}, "pick_cool_then_place_in_recep": {"Kitchen"},
+        "pick_and_place_with_movable_recep": {"Kitchen", "LivingRoom", "Bedroom"},
+    }
+    assert ALFRED_TASK_ROOMS == {k: v.rooms for k, v in TASK_TYPES.items()}  # one table, read by the CDF checker
     assert [k for k, v in TASK_TYPES.items() if not v.sliced] == ["look_at_obj_in_light"]
 
 
