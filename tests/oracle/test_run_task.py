@@ -78,9 +78,9 @@ def test_an_initial_state_the_scene_does_not_meet_is_refused(kitchen_scene):
 
 
 def test_a_high_level_script_is_followed(kitchen_scene):
-    script = [HighLevelStep(action="GotoLocation", object="apple"), HighLevelStep(action="PickupObject", object="apple"),
-              HighLevelStep(action="GotoLocation", object="fridge"),
-              HighLevelStep(action="PutObject", receptacle="fridge")]
+    steps = [("GotoLocation", "apple"), ("PickupObject", "apple"), ("GotoLocation", "fridge")]
+    script = [HighLevelStep(action=a, object=o) for a, o in steps]
+    script.append(HighLevelStep(action="PutObject", receptacle="fridge"))
     result, record = run_task(kitchen_scene, _custom(kitchen_scene, "(and (inReceptacle apple fridge) (isCool apple))"),
                               seed=0, script=script, record_frames=False, return_record=True)
     high = [h["planner_action"]["action"] for h in record.trajectory.high_pddl]
