@@ -58,8 +58,10 @@ def run_cdf(path: Path | str, seed: int = 0, out_dir: Path | None = None, room: 
     _check_start(doc, shell, source)
     try:
         scene = generate(doc, seed=seed, room=shell).scene
-    except (InfeasibleSceneError, CDFError) as exc:
-        raise type(exc)(f"{source}: {exc}") from None
+    except InfeasibleSceneError as exc:
+        raise InfeasibleSceneError(f"{source}: {exc}") from None
+    except CDFError as exc:  # sizes no asset meets
+        raise CDFError(f"{source}: {exc}") from None
     outside = start_outside(doc, scene.room)  # a procedural room is only known now
     if outside:
         raise CDFValidationError(source, [Issue("task.agent.position", outside)])

@@ -98,3 +98,17 @@ def test_an_initial_state_the_scene_does_not_meet(tmp_path, capsys):
     code, _, err = run(["run", "--cdf", str(cdf), "--out", str(tmp_path / "o")], capsys)
     assert code == 2 and one_line_error(err)
     assert f"{cdf}: task.initial: (inReceptacle apple fridge) does not hold" in err
+
+
+def test_a_start_outside_a_procedural_room_is_refused_once_the_room_is_drawn(tmp_path, capsys):
+    bedroom = EXAMPLES / "bedroom_reading_desk.yaml"
+    cdf = _variant(tmp_path, "bed.yaml", "position: [1.0, 1.0]", "position: [1.0, -0.5]", source=bedroom)
+    code, _, err = run(["run", "--cdf", str(cdf), "--out", str(tmp_path / "o")], capsys)
+    assert code == 2 and one_line_error(err)
+    assert f"{cdf}: task.agent.position: (1, -0.5) is outside room" in err
+
+
+def test_a_cdf_size_no_asset_meets_names_the_file(tmp_path, capsys):
+    cdf = _variant(tmp_path, "huge.yaml", "attributes: {colour: red, size: 1.1}", "attributes: {colour: red, size: 9}")
+    code, _, err = run(["run", "--cdf", str(cdf), "--out", str(tmp_path / "o")], capsys)
+    assert code == 2 and one_line_error(err) and str(cdf) in err
