@@ -1,9 +1,11 @@
-"""One expert episode end to end: a scene, a sampled ALFRED task, the oracle's trajectory, ALFRED's
-evaluation, template instructions, and the files a person looks at (frames, video, top-down path)."""
+"""One expert episode end to end: a scene, a sampled ALFRED task (or a given one, with its start pose,
+initial state and script), the oracle's trajectory, ALFRED's evaluation, template instructions, and the
+files a person looks at (frames, video, top-down path)."""
 
 from __future__ import annotations
 
 import json
+from collections.abc import Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -12,9 +14,12 @@ import numpy as np
 
 from luminous_sim.assets.catalog import Catalog
 from luminous_sim.assets.objio import write_atomic
-from luminous_sim.errors import FailureCode
+from luminous_sim.cdf import AgentPoseSpec, Expr
+from luminous_sim.cdf.schema import HighLevelStep, LowLevelStep
+from luminous_sim.errors import Failure, FailureCode
 from luminous_sim.planning import Trajectory
 from luminous_sim.scene import Scene
+from luminous_sim.tasks import TaskInstance
 from luminous_sim.world import AgentPose
 
 TASK_REDRAWS = 3
@@ -34,6 +39,15 @@ class EpisodeResult:
     low_actions: int
     planning_seconds: float
     out_dir: Path | None
+    failure: str = ""
+    """The first cause of failure: the first failed attempt's (later ones often only echo it), else why the
+    goal is unmet at the end; "" when nothing failed and the goal holds."""
+    failure_code: FailureCode | None = None
+    """The first failure's code (None when nothing failed, or when the goal was simply left unmet)."""
+    failures: tuple[Failure, ...] = ()
+    """Every failed attempt's cause, in order (the oracle replans after each)."""
+    notes: tuple[str, ...] = ()
+    """What was adjusted to run a given task (an agent start moved onto the reachable grid)."""
 
 
 @dataclass(frozen=True)
@@ -41,7 +55,7 @@ class EpisodeRecord:
     """What an exporter needs beyond the files `run_episode` writes (`return_record=True`)."""
 
     task: Any
-    """The `TaskInstance` that was solved (after any redraws)."""
+    """The `TaskInstance` that was solved (after any redraws, or the one given)."""
     trajectory: Trajectory
     start_state: Any
     """The `WorldState` the oracle started from (after ALFRED's set-up, e.g. everything dirty for cleaning)."""
@@ -102,11 +116,8 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
     Returns the `EpisodeResult`; with `return_trajectory`, `(result, trajectory)`; with `return_record`,
     `(result, EpisodeRecord)` holding the task, the trajectory and `1 + extra_annotations` instructions.
     """
-    from luminous_sim.cdf.predicates import to_sexpr
-    from luminous_sim.language import Describer
     from luminous_sim.planning import Oracle, draw_task
     from luminous_sim.tasks.errors import TaskSamplingError
-    from luminous_sim.tasks.templates import task_description
 
     rng = np.random.default_rng(np.random.SeedSequence([seed, 11]))
     world = prepared_world(scene, task_type)
@@ -131,37 +142,192 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
             world, task = fresh, redrawn
             start_state = world.view().state
             traj = Oracle(world, record_frames=record_frames).run(task.goal)
-        view = world.view()
-        visible = set(view.visible_objects())
-        done, total = task.conditions().alfred_counts(view.state, visible)
-        traj.goal_conditions = (done, total)
-        traj.success = traj.success and done == total
-        text = Describer(view, rng).describe(traj, task_description(task, rng))
-        texts = [text]
-        if return_record:
-            for k in range(extra_annotations):
-                more = np.random.default_rng(np.random.SeedSequence([seed, 12, k]))
-                texts.append(Describer(view, more).describe(traj, task_description(task, more)))
-        if out_dir is not None:
-            _write(Path(out_dir), scene, task, traj, text, start, view)
+        result, record = _conclude(world, scene, task, traj, _Run(seed, rng, start, start_state, out_dir,
+                                                                  return_record, extra_annotations))
     finally:
         world.close()
-    result = EpisodeResult(task_type, to_sexpr(task.goal), traj.success, (done, total), len(traj.low_actions),
-                           traj.planning_seconds, Path(out_dir) if out_dir else None)
     if return_record:
-        return result, EpisodeRecord(task, traj, start_state, texts)
+        return result, record
     return (result, traj) if return_trajectory else result
 
 
-def _write(out: Path, scene: Scene, task, traj: Trajectory, text, start: AgentPose, view) -> None:
+def run_task(scene: Scene, task: TaskInstance, seed: int, out_dir: Path | None = None, *,
+             start: AgentPoseSpec | None = None, initial: Expr | None = None,
+             script: Sequence[HighLevelStep | LowLevelStep] | None = None, record_frames: bool = True,
+             return_record: bool = False, extra_annotations: int = 2):
+    """Solve a given task in `scene` (no redraws), evaluate it, and write the same files as `run_episode`.
+
+    Args:
+        scene: the scene; `task.names` maps the goal's (and the script's) object names to its ids.
+        task: the task, e.g. `tasks.task_from_cdf(doc, names)` or a `TaskInstance` of ALFRED parameters.
+        seed: seeds the instructions' wording.
+        out_dir: where to write trajectory.json, frames/, video.mp4, top_down.png, instructions.txt.
+        start: the agent's start (a CDF's `task.agent`); a position off the reachable grid is moved to
+            the nearest reachable point (said in `EpisodeResult.notes`); unset parts keep the default.
+        initial: ground literals that hold at the start (a CDF's `task.initial`): object states (isOpen,
+            isToggled, isDirty, isFilled, isHot, isCool) are set, then every literal is checked.
+        script: steps to follow instead of the oracle's plan (a CDF's `execution`); the goal is judged
+            after them.
+        record_frames, return_record, extra_annotations: as for `run_episode`.
+
+    Returns:
+        The `EpisodeResult`, or with `return_record` `(result, EpisodeRecord)`.
+
+    Raises:
+        TaskError: a literal of `initial` does not hold in the scene, or names an unknown object.
+        PlanningError: the script names an object the scene lacks or cannot be followed at all.
+    """
+    from luminous_sim.planning import Oracle, ScriptOracle, script_from_cdf
+
+    names = dict(task.names)
+    world = prepared_world(_with_initial(scene, initial, names), task.task_type)
+    try:
+        _check_initial(world.view().state, initial, names)
+        notes = _place_agent(world, start)
+        start_pose, start_state = world.agent, world.view().state
+        if script is not None:
+            oracle = ScriptOracle(world, record_frames=record_frames)
+            traj = oracle.execute(script_from_cdf(script, names, start_state))
+        else:
+            traj = Oracle(world, record_frames=record_frames).run(task.goal, names=names or None)
+        rng = np.random.default_rng(np.random.SeedSequence([seed, 11]))
+        result, record = _conclude(world, scene, task, traj, _Run(seed, rng, start_pose, start_state, out_dir,
+                                                                  return_record, extra_annotations, notes))
+    finally:
+        world.close()
+    return (result, record) if return_record else result
+
+
+@dataclass(frozen=True)
+class _Run:
+    """What concluding an episode needs beyond the world, the task and the trajectory."""
+
+    seed: int
+    rng: np.random.Generator
+    start: AgentPose
+    start_state: Any
+    out_dir: Path | None
+    return_record: bool
+    extra_annotations: int
+    notes: tuple[str, ...] = ()
+
+
+def _conclude(world, scene: Scene, task, traj: Trajectory, run: _Run) -> tuple[EpisodeResult, EpisodeRecord | None]:
+    """Score the trajectory by the task's goal conditions, describe it, write the files."""
+    from luminous_sim.cdf.predicates import to_sexpr
+    from luminous_sim.language import Describer
+    from luminous_sim.tasks.templates import task_description
+
+    view = world.view()
+    visible = set(view.visible_objects())
+    done, total = task.conditions().alfred_counts(view.state, visible)
+    traj.goal_conditions = (done, total)
+    traj.success = traj.success and done == total
+    text = Describer(view, run.rng).describe(traj, task_description(task, run.rng))
+    texts = [text]
+    if run.return_record:
+        for k in range(run.extra_annotations):
+            more = np.random.default_rng(np.random.SeedSequence([run.seed, 12, k]))
+            texts.append(Describer(view, more).describe(traj, task_description(task, more)))
+    failures = tuple(Failure(c, m) for c, m in zip(traj.failure_codes, traj.failures, strict=True))
+    first = failures[0].message if failures else "" if traj.success else (
+        f"the goal is not met at the end: {done} of {total} goal conditions hold")
+    if run.out_dir is not None:
+        _write(Path(run.out_dir), scene, task, traj, text, run.start, view, first)
+    result = EpisodeResult(task.task_type, to_sexpr(task.goal), traj.success, (done, total), len(traj.low_actions),
+                           traj.planning_seconds, Path(run.out_dir) if run.out_dir else None, first,
+                           failures[0].code if failures else None, failures, run.notes)
+    record = EpisodeRecord(task, traj, run.start_state, texts) if run.return_record else None
+    return result, record
+
+
+STATE_LITERALS: dict[str, str] = {"isOpen": "isOpen", "isToggled": "isToggled", "isOn": "isToggled",
+                                  "isDirty": "isDirty", "isFilled": "isFilled", "isHot": "isHot", "isCool": "isCold"}
+"""Initial-state predicates a scene object's `states` can be set by (predicate -> state key)."""
+
+
+def _literals(initial: Expr | None) -> list[tuple[Any, bool]]:
+    """(atom, positive) for each literal of a ground conjunction."""
+    from luminous_sim.cdf.predicates import And, Atom, Not
+
+    if initial is None:
+        return []
+    if isinstance(initial, And):
+        return [lit for arg in initial.args for lit in _literals(arg)]
+    if isinstance(initial, Not) and isinstance(initial.arg, Atom):
+        return [(initial.arg, False)]
+    if isinstance(initial, Atom):
+        return [(initial, True)]
+    from luminous_sim.tasks import TaskError
+
+    raise TaskError(f"task.initial: expected ground literals joined by `and`, got {initial}")
+
+
+def _with_initial(scene: Scene, initial: Expr | None, names: dict[str, str]) -> Scene:
+    """The scene with the object states `initial` asks for."""
+    from luminous_sim.tasks import TaskError
+
+    wanted: dict[str, dict[str, bool]] = {}
+    for atom, positive in _literals(initial):
+        key = STATE_LITERALS.get(atom.pred)
+        if key is None or len(atom.args) != 1:
+            continue  # where things are is the layout's business; `_check_initial` checks it
+        oid = names.get(atom.args[0], atom.args[0])
+        if oid not in {o.id for o in scene.objects}:
+            raise TaskError(f"task.initial: ({atom.pred} {atom.args[0]}) names no object of the scene")
+        wanted.setdefault(oid, {})[key] = positive
+    if not wanted:
+        return scene
+    objects = [o.model_copy(update={"states": {**o.states, **wanted[o.id]}}) if o.id in wanted else o
+               for o in scene.objects]
+    return scene.model_copy(update={"objects": objects})
+
+
+def _check_initial(state, initial: Expr | None, names: dict[str, str]) -> None:
+    from luminous_sim.cdf.predicates import Not, to_sexpr
+    from luminous_sim.tasks import TaskError, goal_satisfied
+
+    for atom, positive in _literals(initial):
+        literal = atom if positive else Not(atom)
+        if not goal_satisfied(literal, state, names):
+            raise TaskError(f"task.initial: {to_sexpr(literal)} does not hold in the generated scene "
+                            "(object states are set; where objects stand comes from scene.relations)")
+
+
+def _place_agent(world, start: AgentPoseSpec | None) -> tuple[str, ...]:
+    """Put the agent at `start` (unset parts from the default start); notes on what had to be moved."""
+    if start is None:
+        return ()
+    pose, notes = world.agent, []
+    x, y = pose.x, pose.y
+    if start.position is not None:
+        pts = world.nav.points()
+        want = np.array(start.position, dtype=float)
+        x, y = (float(v) for v in pts[int(np.argmin(np.linalg.norm(pts - want, axis=1)))])
+        if not np.allclose((x, y), want):
+            notes.append(f"task.agent.position ({want[0]:g}, {want[1]:g}) is not on the agent's reachable grid; "
+                         f"started at the nearest reachable point ({x:g}, {y:g})")
+    rotation = pose.rotation if start.rotation is None else start.rotation
+    horizon = pose.horizon if start.horizon is None else start.horizon
+    world.agent = AgentPose(x, y, rotation, horizon)
+    return tuple(notes)
+
+
+def _write(out: Path, scene: Scene, task, traj: Trajectory, text, start: AgentPose, view, first: str) -> None:
+    """The episode's files; trajectory.json's `failure` is the first cause, and when an attempt failed,
+    `failure_code` is its code and `failures` lists every attempt's code and message in order."""
     from luminous_sim.assets.objio import png_bytes
 
-    record = {
+    record: dict[str, Any] = {
         "task": task.to_dict(), "task_desc": text.task_desc, "high_descs": text.high_descs,
         "init_action": traj.init_action, "plan": {"high_pddl": traj.high_pddl, "low_actions": traj.low_actions},
         "images": traj.images, "success": traj.success, "goal_conditions": list(traj.goal_conditions),
-        "replans": traj.replans, "failure": traj.failure, "scene": scene.room.name,
+        "replans": traj.replans, "failure": first, "scene": scene.room.name,
     }
+    if traj.failures:
+        record["failure_code"] = str(traj.failure_codes[0])
+        record["failures"] = [{"code": str(c), "message": m} for c, m in zip(traj.failure_codes, traj.failures,
+                                                                             strict=True)]
     write_atomic(out / "trajectory.json", json.dumps(record, indent=1, sort_keys=True) + "\n")
     for i, frame in enumerate(traj.frames):
         write_atomic(out / "frames" / f"{i:09d}.png", png_bytes(frame))

@@ -12,7 +12,7 @@ Typical use::
 
 from luminous_sim.data.alfred_export import ExportError, alfred_traj_data, export_alfred, fold_subgoals
 from luminous_sim.data.alfred_structure import Structure, structure, structure_differences
-from luminous_sim.data.task_scenes import physical_misfit, scene_for_task
+from luminous_sim.data.task_scenes import physical_misfit, scene_for_task, task_misfit
 
 __all__ = [
     "ExportError",
@@ -24,4 +24,5 @@ __all__ = [
     "scene_for_task",
     "structure",
     "structure_differences",
+    "task_misfit",
 ]

@@ -13,6 +13,7 @@ from luminous_sim.lazy import lazy_getattr
 if TYPE_CHECKING:
     from luminous_sim.planning.navigation import NavGraph, goto_actions, look_steps
     from luminous_sim.planning.oracle import ExecutionError, Oracle, with_forbidden
+    from luminous_sim.planning.script import LowLevelAction, ScriptOracle, script_from_cdf
     from luminous_sim.planning.task_fit import draw_task, has_room, has_room_for_two, physically_feasible, unseeable
     from luminous_sim.planning.trajectory import Trajectory
 
@@ -20,14 +21,17 @@ _WHERE = {
     "ExecutionError": "oracle", "Oracle": "oracle", "with_forbidden": "oracle",
     "NavGraph": "navigation", "goto_actions": "navigation", "look_steps": "navigation",
     "Trajectory": "trajectory",
+    "LowLevelAction": "script", "ScriptOracle": "script", "script_from_cdf": "script",
     "draw_task": "task_fit", "has_room": "task_fit", "has_room_for_two": "task_fit",
     "physically_feasible": "task_fit", "unseeable": "task_fit",
 }
 
 __all__ = [
     "ExecutionError",
+    "LowLevelAction",
     "NavGraph",
     "Oracle",
+    "ScriptOracle",
     "Trajectory",
     "draw_task",
     "goto_actions",
@@ -35,6 +39,7 @@ __all__ = [
     "has_room_for_two",
     "look_steps",
     "physically_feasible",
+    "script_from_cdf",
     "unseeable",
     "with_forbidden",
 ]

@@ -187,15 +187,21 @@ class Oracle:
         view = self.view
         if look_at not in view.visible_objects() and view.open_container_in_view(look_at) is None:
             self._goto(look_at, high_idx, traj)  # e.g. an apple that an opened door revealed elsewhere
+        mask = self._mask(look_at, step.action)
+        api = interaction_api(step.action, step.object_id, step.receptacle_id)
+        self._low(api, {"action": step.action, "args": interaction_args(mask)}, high_idx, traj)
+
+    def _mask(self, look_at: str, action: str) -> np.ndarray:
+        """The mask an interaction with `look_at` points at: the object's, or the open container's it is in."""
+        view = self.view
         masks = view.instance_masks()
         mask = masks.get(look_at)
         if mask is None or mask.sum() < view.config.min_visible_pixels:
             container = view.open_container_in_view(look_at)
             mask = masks.get(container) if container else mask  # the open container it is taken from
         if mask is None:
-            raise ExecutionError(f"{look_at} is not visible for {step.action}", FailureCode.NOT_VISIBLE)
-        api = interaction_api(step.action, step.object_id, step.receptacle_id)
-        self._low(api, {"action": step.action, "args": interaction_args(mask)}, high_idx, traj)
+            raise ExecutionError(f"{look_at} is not visible for {action}", FailureCode.NOT_VISIBLE)
+        return mask
 
     def _low(self, api: dict[str, Any], discrete: dict[str, Any], high_idx: int, traj: Trajectory) -> None:
         result = self.world.step(api)

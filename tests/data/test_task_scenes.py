@@ -78,3 +78,46 @@ def test_a_room_where_nothing_fits_physically_is_rejected(monkeypatch):
 def test_scene_for_task_refuses_a_room_type_the_task_excludes():
     with pytest.raises(TaskSamplingError, match="Bathroom"):
         scene_for_task("pick_heat_then_place_in_recep", "Bathroom", seed=1)
+
+
+# issue 14: a named room and a given task
+def test_scene_for_task_in_a_named_room():
+    scene = scene_for_task("pick_and_place_simple", "Kitchen", seed=2, room="FloorPlan1")
+    assert scene.room.name == "FloorPlan1"
+    _fits(scene, "pick_and_place_simple")
+    again = scene_for_task("pick_and_place_simple", "Kitchen", seed=2, room="FloorPlan1")
+    assert again.model_dump_json() == scene.model_dump_json()
+
+
+def test_scene_for_a_given_task_in_a_named_room_fits_that_task():
+    """The default rooms of FloorPlan1 have no kettle: a room is generated for that very task."""
+    from luminous_sim.data import task_misfit
+    from luminous_sim.tasks import PddlParams
+
+    kettle = PddlParams("Kettle", "StoveBurner")
+    scene = scene_for_task("pick_and_place_simple", "Kitchen", seed=2, room="FloorPlan1", params=kettle)
+    assert scene.room.name == "FloorPlan1" and scene.source == "pick_and_place_simple-Kettle-None-StoveBurner"
+    assert kettle in feasible_params(scene, state_from_scene(scene), "pick_and_place_simple")
+    assert task_misfit(scene, "pick_and_place_simple", kettle) is None
+    default = scene_for_task("pick_and_place_simple", "Kitchen", seed=2, room="FloorPlan1")
+    assert "is not feasible here" in task_misfit(default, "pick_and_place_simple", kettle)
+
+
+def test_scene_for_task_refuses_a_room_of_another_type_and_bad_parameters():
+    from luminous_sim.tasks import PddlParams, TaskError
+
+    with pytest.raises(TaskError, match="FloorPlan301 is a Bedroom, not a Kitchen"):
+        scene_for_task("pick_and_place_simple", "Kitchen", seed=0, room="FloorPlan301")
+    with pytest.raises(TaskError, match="Apple"):
+        scene_for_task("pick_and_place_simple", "Kitchen", seed=0, params=PddlParams("Apple", "Apple"))
+
+
+def test_no_room_for_a_given_task_names_the_task_and_the_room(monkeypatch):
+    from luminous_sim.tasks import PddlParams
+
+    monkeypatch.setattr(task_scenes, "task_misfit", lambda scene, task_type, params, catalog=None: "no spot (test)")
+    with pytest.raises(TaskSamplingError) as info:
+        scene_for_task("pick_and_place_simple", "Kitchen", seed=0, room="FloorPlan1",
+                       params=PddlParams("Apple", "Fridge"))
+    for part in ("Kitchen in room FloorPlan1", "the task pick_and_place_simple-Apple-None-Fridge", "no spot (test)"):
+        assert part in str(info.value)
