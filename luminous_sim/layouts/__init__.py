@@ -8,7 +8,10 @@ Typical use::
     realized = layouts.realize(layout, seed=0)     # realized.given.generated: scene and report
 """
 
+from luminous_sim.layouts.atiss import import_atiss
 from luminous_sim.layouts.convert import layout_of_scene, room_of_shell, shell_of_room
+from luminous_sim.layouts.front import import_front
+from luminous_sim.layouts.generators import CSSGLayouts, LayoutGenerator, UniformLayouts
 from luminous_sim.layouts.matching import MAX_SCALE, MIN_SCALE, CategoryMatch, SizeMatch, match_category, match_size
 from luminous_sim.layouts.model import (
     LAYOUT_FORMAT,
@@ -23,21 +26,28 @@ from luminous_sim.layouts.model import (
     loads,
 )
 from luminous_sim.layouts.realize import Realized, realize
+from luminous_sim.layouts.schema import export_schema, schema_dict
 
 __all__ = [
     "LAYOUT_FORMAT",
     "MAX_SCALE",
     "MIN_SCALE",
+    "CSSGLayouts",
     "CategoryMatch",
     "Layout",
     "LayoutDoor",
     "LayoutError",
+    "LayoutGenerator",
     "LayoutObject",
     "LayoutRoom",
     "LayoutWindow",
     "Provenance",
     "Realized",
     "SizeMatch",
+    "UniformLayouts",
+    "export_schema",
+    "import_atiss",
+    "import_front",
     "layout_of_scene",
     "load",
     "loads",
@@ -45,5 +55,6 @@ __all__ = [
     "match_size",
     "realize",
     "room_of_shell",
+    "schema_dict",
     "shell_of_room",
 ]

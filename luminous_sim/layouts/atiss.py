@@ -27,6 +27,8 @@ MARKERS = frozenset({"start", "end"})
 
 def _read(path: Path) -> dict[str, Any]:
     where = str(path)
+    if not path.is_file():
+        raise LayoutError(f"{where}: no such file (or not a regular file)")
     if path.suffix == ".npz":
         try:
             with np.load(path, allow_pickle=False) as z:

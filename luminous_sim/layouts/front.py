@@ -58,6 +58,8 @@ def _get(d: Any, key: str, where: str, kind: type) -> Any:
 def read_model_info(path: Path) -> dict[str, str]:
     """3D-FUTURE's model_info.json: model_id -> category (entries without a category are skipped)."""
     path = Path(path)
+    if not path.is_file():
+        raise LayoutError(f"{path}: no such model info file (or not a regular file)")
     try:
         data = json.loads(path.read_text(encoding="utf-8"))
     except (OSError, ValueError) as exc:
@@ -124,6 +126,8 @@ def import_front(path: Path, room: str | None = None, model_info: Path | dict[st
     """
     path = Path(path)
     where = str(path)
+    if not path.is_file():
+        raise LayoutError(f"{where}: no such file (or not a regular file)")
     try:
         data = json.loads(path.read_text(encoding="utf-8"))
     except OSError as exc:

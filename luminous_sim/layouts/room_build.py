@@ -10,6 +10,7 @@ import numpy as np
 from shapely.geometry import Polygon
 
 from luminous_sim.layouts.model import LayoutDoor, LayoutRoom, LayoutWindow
+from luminous_sim.rooms.geometry import canonical_ring
 
 WALL_REACH = 0.35
 """metres from an outline edge within which an opening's points count as lying in that wall."""
@@ -37,14 +38,8 @@ def frame_offset(poly: Polygon) -> tuple[float, float]:
 
 
 def _ring(poly: Polygon, offset: tuple[float, float]) -> list[tuple[float, float]]:
-    pts = [(round(x - offset[0], 4) + 0.0, round(y - offset[1], 4) + 0.0) for x, y in poly.exterior.coords[:-1]]
-    out: list[tuple[float, float]] = []
-    for p in pts:
-        if not out or math.dist(p, out[-1]) > 1e-4:
-            out.append(p)
-    if len(out) > 1 and math.dist(out[0], out[-1]) <= 1e-4:
-        out.pop()
-    return out
+    """The outline moved by `offset`, as room files keep it (4 decimals, from the smallest (y, x))."""
+    return canonical_ring((x - offset[0], y - offset[1]) for x, y in poly.exterior.coords)
 
 
 def build_room(poly: Polygon, room_type: str, name: str, openings: list[Opening], notes: list[str],
