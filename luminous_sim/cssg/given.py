@@ -147,7 +147,8 @@ def _order(placements: list[Placement]) -> tuple[list[Placement], list[Repair]]:
     out: list[Placement] = []
     dropped: list[Repair] = []
     for p in placements:
-        chain, q = [], p
+        chain: list[Placement] = []
+        q: Placement | None = p
         while q is not None and q.key not in done and q not in chain:
             chain.append(q)
             q = by_key.get(q.parent) if q.parent is not None else None

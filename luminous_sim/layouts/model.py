@@ -12,14 +12,14 @@ from __future__ import annotations
 
 import json
 from pathlib import Path
-from typing import Annotated, Any, Literal
+from typing import Annotated, Any, Final, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
 from luminous_sim.errors import LuminousError
 from luminous_sim.rooms.shell import FixturePlan, RoomType
 
-LAYOUT_FORMAT = "luminous-layout/1"
+LAYOUT_FORMAT: Final = "luminous-layout/1"
 """The value of every layout file's `format` key (the `/1` is the format's version)."""
 
 Finite = Annotated[float, Field(allow_inf_nan=False)]
@@ -135,10 +135,11 @@ class Layout(_Model):
             if o.parent is not None and o.parent not in known:
                 raise ValueError(f"objects[{i}] ({o.id}): parent {o.parent!r} is not an object of the layout")
         n = len(self.room.outline)
-        for kind, items in (("doors", self.room.doors), ("windows", self.room.windows)):
-            for i, item in enumerate(items):
-                if item.wall >= n:
-                    raise ValueError(f"room.{kind}[{i}]: wall {item.wall} is not an outline edge (0..{n - 1})")
+        openings: list[tuple[str, int, int]] = [("doors", i, d.wall) for i, d in enumerate(self.room.doors)]
+        openings += [("windows", i, w.wall) for i, w in enumerate(self.room.windows)]
+        for kind, i, wall in openings:
+            if wall >= n:
+                raise ValueError(f"room.{kind}[{i}]: wall {wall} is not an outline edge (0..{n - 1})")
         return self
 
     def to_json(self) -> str:
