@@ -123,7 +123,7 @@ def _stub_heavy_work(monkeypatch) -> None:
     monkeypatch.setattr(scene_outputs, "write_scene_outputs", lambda g, out, physics=True: {"layout": {"ok": True}})
     monkeypatch.setattr(importer, "write_asset", lambda spec, out, cache: {"dims": [0.1, 0.1, 0.1],
                                                                           "collision_hulls": 1, "id": spec.asset_id,
-                                                                          "type": spec.object_type,
+                                                                          "type": spec.type,
                                                                           "variant": spec.variant})
 
 
