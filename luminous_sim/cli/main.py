@@ -28,6 +28,7 @@ SUBCOMMAND_MODULES: tuple[str, ...] = (
     "luminous_sim.cli.cdf_cmd",
     "luminous_sim.cli.demo_cmd",
     "luminous_sim.cli.generate_cmd",
+    "luminous_sim.cli.layout_cmd",
     "luminous_sim.cli.rooms_cmd",
     "luminous_sim.cli.run_cmd",
     "luminous_sim.cli.speaker_cmd",

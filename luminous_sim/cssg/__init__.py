@@ -11,19 +11,24 @@ Typical use::
 """
 
 from luminous_sim.cssg.baseline import empty_cdf, generate_uniform, sample_uniform
+from luminous_sim.cssg.given import GivenScene, Placement, Repair, place_given
 from luminous_sim.cssg.pipeline import ATTEMPTS, Generated, choose_room, generate, sample_layout, start_outside
 from luminous_sim.cssg.validate import LayoutReport, RelationCheck, check_layout
 
 __all__ = [
     "ATTEMPTS",
     "Generated",
+    "GivenScene",
     "LayoutReport",
+    "Placement",
     "RelationCheck",
+    "Repair",
     "check_layout",
     "choose_room",
     "empty_cdf",
     "generate",
     "generate_uniform",
+    "place_given",
     "sample_layout",
     "sample_uniform",
     "start_outside",

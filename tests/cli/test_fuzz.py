@@ -30,6 +30,8 @@ PATHS = ["@file", "@dir", "@fifo", "@missing", "@missing/deep/x", "/proc/nope", 
 TYPES = ["Mug", "Chair", "Fridge", "Nonsense", "mug", "Mugg", "", "Kitchen"]
 ROOMS = ["FloorPlan1", "FloorPlan12", "FloorPlan205", "kitchen_L", "bedroom", "../x", "nowhere", "", "FloorPlan99999"]
 ROOM_TYPES = ["Kitchen", "Bedroom", "LivingRoom", "Bathroom", "Garage", ""]
+LAYOUTS = [str(REPO / "tests" / "layouts" / "fixtures" / n) for n in ("front_kitchen.json", "atiss_bedroom.json")]
+MODEL_INFO = str(REPO / "tests" / "layouts" / "fixtures" / "front_model_info.json")
 
 COMMANDS: dict[tuple[str, ...], dict[str, list[str] | None]] = {
     ("assets", "build"): {"--types": TYPES, "--out": PATHS, "--jobs": NUMBERS},
@@ -43,6 +45,11 @@ COMMANDS: dict[tuple[str, ...], dict[str, list[str] | None]] = {
     ("generate",): {"--cdf": EXAMPLES + ["@bigsize", "@badyaml", *PATHS], "--room-type": ROOM_TYPES,
                     "--seed": NUMBERS, "--count": NUMBERS, "--out": PATHS, "--room": ROOMS, "--baseline": None,
                     "--no-physics": None},
+    ("import-layout",): {"": LAYOUTS + PATHS, "--format": ["front", "atiss", "luminous", "x"], "--out": PATHS,
+                         "--seed": NUMBERS, "--room": ["Kitchen-2306", "Balcony-1720", *ROOMS],
+                         "--model-info": [MODEL_INFO, *PATHS], "--room-type": ROOM_TYPES, "--require": TYPES,
+                         "--no-repair": None, "--no-physics": None},
+    ("export-layout",): {"": PATHS, "--out": PATHS},
     ("rooms", "list"): {"--json": None},
     ("rooms", "convert"): {"--layouts": PATHS, "--out": PATHS, "--scene": NUMBERS},
     ("rooms", "show"): {"": ROOMS, "--out": PATHS, "--seed": NUMBERS},
@@ -116,7 +123,7 @@ def _stub_heavy_work(monkeypatch) -> None:
     monkeypatch.setattr(scene_outputs, "write_scene_outputs", lambda g, out, physics=True: {"layout": {"ok": True}})
     monkeypatch.setattr(importer, "write_asset", lambda spec, out, cache: {"dims": [0.1, 0.1, 0.1],
                                                                           "collision_hulls": 1, "id": spec.asset_id,
-                                                                          "type": spec.object_type,
+                                                                          "type": spec.type,
                                                                           "variant": spec.variant})
 
 
