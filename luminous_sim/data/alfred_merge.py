@@ -173,12 +173,12 @@ def merge_parses(parses: Sequence[AlfredParse]) -> MergedCDF:
             conflicts.append(MergeConflict(names[key], key, "placement", _ranked(labelled), chosen, why))
     object_states: dict[str, dict[str, bool]] = {}
     for key in order:
-        for flag, counts in states.get(key, {}).items():
-            if len(counts) == 1:
-                object_states.setdefault(key, {})[flag] = next(iter(counts))
+        for flag, values in states.get(key, {}).items():
+            if len(values) == 1:
+                object_states.setdefault(key, {})[flag] = next(iter(values))
                 continue
-            (v1, n1), (_, n2) = counts.most_common(2)
-            options = _ranked(Counter({str(v).lower(): n for v, n in counts.items()}))
+            (v1, n1), (_, n2) = values.most_common(2)
+            options = _ranked(Counter({str(v).lower(): n for v, n in values.items()}))
             if n1 == n2:
                 conflicts.append(MergeConflict(names[key], key, f"state.{flag}", options, "unset",
                                                "tie; left to the generator"))

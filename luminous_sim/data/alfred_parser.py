@@ -24,7 +24,7 @@ import math
 import re
 from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, field
-from functools import cache
+from functools import cache, lru_cache
 from pathlib import Path
 from typing import Any
 
@@ -177,6 +177,12 @@ def support_relation(receptacle_type: str) -> str:
     return "in" if abilities(receptacle_type).openable else "on"
 
 
+@lru_cache(maxsize=16)
+def _room(name: str) -> Any:
+    """The room shell of a floor plan, read once per parse run (only its outline and type are used)."""
+    return load_room(name)
+
+
 def snake(object_type: str) -> str:
     """`SinkBasin` -> `sink_basin`, `CD` -> `cd`, `TVStand` -> `tv_stand`: a CDF name from a type."""
     return re.sub(r"(?<=[a-z0-9])(?=[A-Z])|(?<=[A-Z])(?=[A-Z][a-z])", "_", object_type).lower()
@@ -185,15 +191,16 @@ def snake(object_type: str) -> str:
 # -- reading the file -----------------------------------------------------------------------------
 
 
-def _get(data: Mapping[str, Any], path: str, kind: type | tuple[type, ...], source: str) -> Any:
+def _get(data: Mapping[str, Any], path: str, kind: type | tuple[type, ...], source: str, within: str = "") -> Any:
+    """`data[a][b]...` for `path` "a.b", checked to be of `kind`; `within` prefixes the path in messages."""
     value: Any = data
     for key in path.split("."):
         if not isinstance(value, Mapping) or key not in value:
-            raise AlfredParseError(f"{source}: missing key {path!r}")
+            raise AlfredParseError(f"{source}: missing key {within + path!r}")
         value = value[key]
     if not isinstance(value, kind) or (kind is int and isinstance(value, bool)):
         names = kind.__name__ if isinstance(kind, type) else " or ".join(k.__name__ for k in kind)
-        raise AlfredParseError(f"{source}: {path}: expected {names}, got {type(value).__name__} {value!r:.60}")
+        raise AlfredParseError(f"{source}: {within}{path}: expected {names}, got {type(value).__name__} {value!r:.60}")
     return value
 
 
@@ -365,7 +372,7 @@ class _Reader:
 
 
 def _scene_states(reader: _Reader, scene: Mapping[str, Any], source: str) -> None:
-    toggles = _get(scene, "object_toggles", list, source)
+    toggles = _get(scene, "object_toggles", list, source, "scene.")
     for j, entry in enumerate(toggles):
         where = f"scene.object_toggles[{j}]"
         if not isinstance(entry, Mapping) or not isinstance(entry.get("objectType"), str) or not isinstance(
@@ -379,7 +386,7 @@ def _scene_states(reader: _Reader, scene: Mapping[str, Any], source: str) -> Non
         if not hits:
             reader.dropped.append(ParseNote(where, f"{entry['objectType']} isOn={entry['isOn']}",
                                             f"no {entry['objectType']} among the objects the actions name"))
-    if not _get(scene, "dirty_and_empty", bool, source):
+    if not _get(scene, "dirty_and_empty", bool, source, "scene."):
         return
     for inst in reader.instances.values():
         if abilities(inst.type).dirtyable:
@@ -394,7 +401,7 @@ def _scene_states(reader: _Reader, scene: Mapping[str, Any], source: str) -> Non
 
 
 def _agent(scene: Mapping[str, Any], source: str, shell: Any) -> tuple[dict[str, Any] | None, ParseNote]:
-    init = _get(scene, "init_action", Mapping, source)
+    init = _get(scene, "init_action", Mapping, source, "scene.")
     where = "scene.init_action"
     try:
         x, z = float(init["x"]), float(init["z"])
@@ -451,7 +458,7 @@ def _document(
     reader: _Reader, name: str, description: str, room: str, room_type: str, task: dict[str, Any] | None,
     skip: set[tuple[str, int]],
 ) -> dict[str, Any]:
-    objects = []
+    objects: list[dict[str, Any]] = []
     for inst in reader.instances.values():
         entry: dict[str, Any] = {"name": inst.name, "type": inst.type}
         state = {f: v for f, v in inst.state.items() if (f"state:{f}", len(objects)) not in skip}
@@ -535,9 +542,9 @@ def parse_alfred(traj: Mapping[str, Any] | str | Path, source: str | None = None
     except TaskError as exc:
         raise AlfredParseError(f"{source}: {exc}") from None
     scene = _get(data, "scene", Mapping, source)
-    floor_plan = _get(scene, "floor_plan", str, source)
+    floor_plan = _get(scene, "floor_plan", str, source, "scene.")
     try:
-        shell = load_room(floor_plan)
+        shell = _room(floor_plan)
     except RoomError as exc:
         raise AlfredParseError(f"{source}: scene.floor_plan: {exc}") from None
     room_type = shell.room_type
