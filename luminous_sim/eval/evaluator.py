@@ -141,7 +141,10 @@ def run_job(job: EpisodeJob) -> EpisodeOutcome:
         env = LuminousEnv(**json.loads(job.env_json))
         _RUNNERS[key] = (env, make_agent(job.policy, env))
     env, agent = _RUNNERS[key]
-    outcome = play(env, agent, job.split, job.index, job.seed)
+    try:
+        outcome = play(env, agent, job.split, job.index, job.seed)
+    finally:
+        env.close()  # frees the episode's simulator; the next reset builds a new one
     if path is not None:
         write_atomic(path, json.dumps(outcome.to_dict(), indent=1) + "\n")
     return outcome
