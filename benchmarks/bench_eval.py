@@ -52,13 +52,16 @@ def main() -> int:
                 times.append(now - last[0])
                 last[0] = now
 
+            out = args.out / f"{policy}-{split}"
+            kept = sum((out / "episodes" / f"{split}-{i}.json").is_file() for i in range(args.episodes))
             start = time.perf_counter()
-            report = evaluate(policy, split, args.episodes, seed=args.seed, workers=args.workers,
-                              out_dir=args.out / f"{policy}-{split}", progress=tick)
+            report = evaluate(policy, split, args.episodes, seed=args.seed, workers=args.workers, out_dir=out,
+                              progress=tick)
             reports[policy, split] = report
             spread = f"{min(times):.1f}..{max(times):.1f}" if times else "-"
-            print(f"{policy:>6} {split:<3} {len(report.outcomes)} episodes in {time.perf_counter() - start:.0f} s; "
-                  f"s/episode as results arrived: median {statistics.median(times):.1f} (range {spread})")
+            print(f"{policy:>6} {split:<3} {len(report.outcomes)} episodes ({kept} read back from an earlier run) in "
+                  f"{time.perf_counter() - start:.0f} s; s/episode as results arrived: median "
+                  f"{statistics.median(times):.1f} (range {spread})")
     for policy in POLICIES:
         print(f"\n### {policy}: N = {args.episodes} episodes per split (entries 0..{args.episodes - 1})\n")
         print(markdown_table([reports[policy, s] for s in SPLITS]))

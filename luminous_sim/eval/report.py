@@ -86,7 +86,7 @@ def plot(reports: Sequence[EvalReport], path: Path) -> Path:
     import numpy as np
 
     labels = [label for _, label in TABLE4_ROWS] + ["All"]
-    fig, axes = plt.subplots(1, 2, figsize=(13, 4.2), sharey=True)
+    fig, axes = plt.subplots(1, 2, figsize=(13, 4.6), sharey=True)
     width = 0.8 / max(1, len(reports))
     x = np.arange(len(labels))
     for ax, (key, title) in zip(axes, (("sr", "Success rate (SR)"), ("gc", "Goal conditions (GC)")), strict=True):
@@ -100,8 +100,9 @@ def plot(reports: Sequence[EvalReport], path: Path) -> Path:
         ax.set_title(title)
         ax.grid(axis="y", alpha=0.3)
     axes[0].set_ylabel("fraction")
-    axes[1].legend(loc="upper right", fontsize=8)
-    fig.tight_layout()
+    handles, names = axes[0].get_legend_handles_labels()
+    fig.legend(handles, names, loc="lower center", ncol=max(1, len(reports)), fontsize=9, frameon=False)
+    fig.tight_layout(rect=(0, 0.08, 1, 1))
     buffer = io.BytesIO()
     fig.savefig(buffer, format="png", dpi=110)
     plt.close(fig)
