@@ -22,6 +22,7 @@ if TYPE_CHECKING:
     from luminous_sim.env.actions import ActionTable
     from luminous_sim.env.alfred_env import LuminousEnv
     from luminous_sim.env.config import EnvConfig
+    from luminous_sim.env.episodes import UNAVAILABLE_CAUSES, EpisodeUnavailable
     from luminous_sim.env.oracle_policy import OraclePolicy
     from luminous_sim.env.registration import EnvEntry, load_entries, register_envs
     from luminous_sim.env.rewards import RewardConfig
@@ -31,6 +32,7 @@ _WHERE = {
     "ActionTable": "actions",
     "LuminousEnv": "alfred_env",
     "EnvConfig": "config",
+    "EpisodeUnavailable": "episodes", "UNAVAILABLE_CAUSES": "episodes",
     "OraclePolicy": "oracle_policy",
     "EnvEntry": "registration", "load_entries": "registration", "register_envs": "registration",
     "RewardConfig": "rewards",
@@ -38,9 +40,11 @@ _WHERE = {
 }
 
 __all__ = [
+    "UNAVAILABLE_CAUSES",
     "ActionTable",
     "EnvConfig",
     "EnvEntry",
+    "EpisodeUnavailable",
     "InstructionTokens",
     "LuminousEnv",
     "OraclePolicy",

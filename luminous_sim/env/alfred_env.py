@@ -24,9 +24,11 @@ condition not yet met), `task_type`, `failures`, `failure_code`, `error`, and wi
 expert's next action (`expert_action`, in this env's action form).
 
 `reset(seed=s)` is deterministic: the same seed gives the same scene, task and first observation;
-`options={"scene": scene}` plays in a given `Scene`. Each reset builds its world afresh (a fraction of a
-second): `World` has no save/restore yet, and slicing replaces bodies, which PyBullet's restoreState does
-not undo.
+`options={"scene": scene}` plays in a given `Scene`; `options={"split": "U+", "index": 3}` plays episode 3
+of an evaluation split (or `split=` at construction and `options={"index": 3}`; see `EnvConfig.split`), and
+raises `EpisodeUnavailable` (with its cause) for an entry whose layout or task cannot be drawn. Each reset
+builds its world afresh (a fraction of a second): `World` has no save/restore yet, and slicing replaces
+bodies, which PyBullet's restoreState does not undo.
 """
 
 from __future__ import annotations
@@ -41,7 +43,7 @@ from gymnasium import spaces
 
 from luminous_sim.env.actions import ALFRED_ACTIONS, INTERACTIONS, NAVIGATION, STOP_NAMES, ActionTable, EmptySlot
 from luminous_sim.env.config import EnvConfig
-from luminous_sim.env.episodes import Episode, build_world, draw_episode
+from luminous_sim.env.episodes import Episode, build_world, draw_episode, requested_entry, split_episode
 from luminous_sim.env.expert import Expert
 from luminous_sim.env.goals import goal_from_dict
 from luminous_sim.env.rewards import RewardConfig, step_reward
@@ -124,12 +126,18 @@ class LuminousEnv(gymnasium.Env):
     # ------------------------------------------------------------------ gymnasium API
 
     def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None):
-        """A new episode: a scene (generated, or `options["scene"]`), a goal that fits it, the first view."""
+        """A new episode: a scene (generated, `options["scene"]`, or a split's entry), a goal that fits it,
+        the first view."""
         super().reset(seed=seed)
         options = options or {}
         rng = np.random.default_rng(int(self.np_random.integers(2**63)))
         self._close_world()
-        self.episode, self.world = draw_episode(self.config, rng, scene=options.get("scene"))
+        self.episode = None
+        entry = requested_entry(self.config, options, rng)
+        if entry is not None:
+            self.episode, self.world = split_episode(self.config, entry)
+        else:
+            self.episode, self.world = draw_episode(self.config, rng, scene=options.get("scene"))
         self._start()
         return self._observation(), self._info(None, "")
 

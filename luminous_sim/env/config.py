@@ -51,6 +51,10 @@ class EnvConfig:
         scene_attempts: scenes tried before `reset` gives up on finding a task that fits.
         min_visible_pixels: pixels an object needs to count as visible; 0 scales ALFRED's 10 at 300x300
             to the image size.
+        split: play the episodes of an evaluation split (`S+`, `U+`, `U+test`; see `luminous_sim.splits`)
+            instead of generating scenes on the fly: `reset(options={"index": i})` plays entry i, a plain
+            `reset` an entry drawn over one round of the split; "" (the default) generates on the fly.
+            `reset(options={"split": name, "index": i})` does the same for one episode of any env.
     """
 
     task_types: tuple[str, ...] = ALFRED_TASK_TYPES
@@ -73,6 +77,7 @@ class EnvConfig:
     verify_expert: bool = True
     scene_attempts: int = 8
     min_visible_pixels: int = 0
+    split: str = ""
 
     def __post_init__(self) -> None:
         for f in fields(self):
@@ -88,6 +93,8 @@ class EnvConfig:
                 raise LuminousError(f"env config {f.name}: expected true or false, got {value!r}")
             elif f.type == "int" and (isinstance(value, bool) or not isinstance(value, int)):
                 raise LuminousError(f"env config {f.name}: expected an integer, got {value!r}")
+            elif f.type == "str" and not isinstance(value, str):
+                raise LuminousError(f"env config {f.name}: expected a string, got {value!r}")
         self._check_values()
 
     def _check_values(self) -> None:
@@ -106,6 +113,11 @@ class EnvConfig:
                 raise LuminousError(f"env config {name}: expected a positive integer, got {getattr(self, name)}")
         if self.step_instructions and not self.verify_expert:
             raise LuminousError("env config step_instructions: needs verify_expert (they describe the expert's plan)")
+        if self.split:
+            from luminous_sim.splits import PLUS_SPLITS  # only when asked: `import luminous_sim` stays cheap
+
+            if self.split not in PLUS_SPLITS:
+                raise LuminousError(f"env config split: {self.split!r}; expected one of {', '.join(PLUS_SPLITS)}")
         if self.grid > min(self.width, self.height):
             raise LuminousError(f"env config grid: {self.grid} points a side do not fit a {self.width}x{self.height}"
                                 " image")

@@ -1,16 +1,24 @@
-"""Drawing an episode: a scene (generated on the fly, or given), a goal that fits it physically, and
-(optionally) the expert's plan, which also proves the episode solvable, as ALFRED's generator keeps only
-tasks its expert solves.
+"""Drawing an episode: a scene (generated on the fly, given, or an entry of an evaluation split), a goal
+that fits it physically, and (optionally) the expert's plan, which also proves the episode solvable, as
+ALFRED's generator keeps only tasks its expert solves.
 
 Scenes come from CSSG (`cssg.generate(empty_cdf(room_type), seed)`): layer L4 may use the generator, as
 task-driven generation in `luminous_sim.data` does (this module repeats the small part of that it needs
 rather than import layer L5). A drawn scene whose task does not fit is replaced by a new one, a bounded
 number of times (`EnvConfig.scene_attempts`).
+
+An entry of a split (`luminous_sim.splits`: S+, U+, U+test) fixes everything instead: the ALFRED room
+structure (`rooms.load_room(floor_plan)`), the layout (`generate(empty_cdf(room_type), seed=layout_seed,
+room=...)`) and the task type; the task is drawn from an rng seeded with the entry's task seed. An entry
+whose layout or task cannot be drawn is never replaced by another: `EpisodeUnavailable` says why, so an
+evaluation counts it as a failure of the population.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
+from functools import lru_cache
+from typing import Any
 
 import numpy as np
 
@@ -18,11 +26,27 @@ from luminous_sim.env.config import EnvConfig
 from luminous_sim.env.goals import ExpertPlan, Goal, GotoGoal, TaskGoal, pickup_task
 from luminous_sim.errors import InfeasibleSceneError, LuminousError
 from luminous_sim.scene import Scene
+from luminous_sim.splits import SplitEntry, plus_split, split_entry
 from luminous_sim.tasks import TASK_TYPES, TaskSamplingError, task_info
 from luminous_sim.vocab import ROOM_TYPES, abilities
 from luminous_sim.world import World, WorldConfig
 
 CLEANING = "pick_clean_then_place_in_recep"
+UNAVAILABLE_CAUSES: tuple[str, ...] = ("layout", "no_task", "expert")
+"""Why a split entry has no episode: CSSG found no valid layout in the structure; no task of the entry's
+type fits the layout; the expert solves none of the tasks drawn (`EnvConfig.scene_attempts` of them)."""
+
+
+class EpisodeUnavailable(LuminousError):
+    """A split entry whose episode cannot be drawn; `cause` is one of `UNAVAILABLE_CAUSES`."""
+
+    def __init__(self, entry: SplitEntry, cause: str, detail: str):
+        super().__init__(f"{entry.split} episode {entry.index} ({entry.task_type} in {entry.floor_plan}, "
+                         f"layout {entry.layout}): {detail}")
+        self.entry, self.cause, self.detail = entry, cause, detail
+
+    def __reduce__(self) -> tuple[Any, ...]:  # crosses process boundaries in an evaluation's workers
+        return (type(self), (self.entry, self.cause, self.detail))
 
 
 @dataclass(frozen=True)
@@ -163,3 +187,84 @@ def draw_episode(config: EnvConfig, rng: np.random.Generator, scene: Scene | Non
         return episode, world
     raise LuminousError(f"no episode of {', '.join(config.task_types)} after {config.scene_attempts} attempts: "
                         + "; ".join(why[-3:]))
+
+
+def split_round(name: str) -> int:
+    """Episodes in one round of a split: each task type in each structure and layout at least once."""
+    split = plus_split(name)
+    return len(TASK_TYPES) * len(split.structures) * split.layouts
+
+
+def requested_entry(config: EnvConfig, options: dict[str, Any], rng: np.random.Generator) -> SplitEntry | None:
+    """The split entry a reset asks for (`options["split"]`, else `config.split`; `options["index"]`, else one
+    drawn from `rng` over a round of the split), or None for an episode generated on the fly.
+
+    Raises:
+        LuminousError: an index without a split, a bad index, or an entry of a task type the env does not play.
+    """
+    name = options.get("split") or config.split
+    index = options.get("index")
+    if not name:
+        if index is not None:
+            raise LuminousError("reset options: 'index' names an episode of a split; give 'split' too "
+                                "(or make the env with split=...)")
+        return None
+    if index is None:
+        index = int(rng.integers(split_round(name)))
+    if isinstance(index, bool) or not isinstance(index, (int, np.integer)):
+        raise LuminousError(f"reset options: 'index' must be a whole number, got {index!r}")
+    entry = split_entry(name, int(index))
+    if entry.task_type not in config.task_types:
+        raise LuminousError(f"{name} episode {index} is a {entry.task_type} task; this env plays only "
+                            f"{', '.join(config.task_types)}")
+    return entry
+
+
+@lru_cache(maxsize=8)
+def split_scene(floor_plan: str, room_type: str, layout_seed: int) -> Scene:
+    """The layout of a split entry: CSSG in the ALFRED structure `floor_plan` (kept: entries share layouts).
+
+    Raises:
+        InfeasibleSceneError: CSSG found no valid layout.
+    """
+    from luminous_sim.cssg import empty_cdf, generate
+    from luminous_sim.rooms import load_room
+
+    return generate(empty_cdf(room_type), seed=layout_seed, room=load_room(floor_plan)).scene
+
+
+def split_episode(config: EnvConfig, entry: SplitEntry) -> tuple[Episode, World]:
+    """The episode of a split entry and its world, ready for the first step (the same every time).
+
+    The task is drawn from an rng seeded with `entry.task_seed`; with `verify_expert`, a task the expert
+    cannot solve is redrawn from the same rng, up to `config.scene_attempts` tasks in all.
+
+    Raises:
+        EpisodeUnavailable: no layout, no task of the type, or no task the expert solves (its `cause`).
+    """
+    try:
+        scene = split_scene(entry.floor_plan, entry.room_type, entry.layout_seed)
+    except InfeasibleSceneError as exc:
+        raise EpisodeUnavailable(entry, "layout", str(exc)) from None
+    rng = np.random.default_rng(entry.task_seed)
+    unsolved: list[str] = []
+    for _ in range(config.scene_attempts):
+        world = World(scene, world_config(config))
+        dirty = dirty_for(world, entry.task_type)
+        if dirty:
+            world.set_up_dirty(dirty)
+        try:
+            goal = draw_goal(world, scene, entry.task_type, rng)
+        except TaskSamplingError as exc:
+            world.close()
+            raise EpisodeUnavailable(entry, "no_task", str(exc)) from None
+        episode = Episode(scene, goal, dirty)
+        if not config.verify_expert:
+            return episode, world
+        plan = _prove(episode, config)
+        if plan is not None:
+            return Episode(scene, goal, dirty, plan), world
+        world.close()
+        unsolved.append(goal.instruction)
+    raise EpisodeUnavailable(entry, "expert", f"the expert solves none of the {len(unsolved)} tasks drawn: "
+                             + "; ".join(repr(u) for u in unsolved[:3]))

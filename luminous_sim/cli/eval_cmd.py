@@ -1,0 +1,51 @@
+"""`luminous eval`: a policy on episodes of an evaluation split, with ALFRED's metrics (see luminous_sim.eval)."""
+
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+from pathlib import Path
+
+from luminous_sim.cli.args import output_dir, positive_int, seed
+
+SPLITS: tuple[str, ...] = ("S+", "U+", "U+test")
+"""The split names (`luminous_sim.splits.PLUS_SPLITS`; a test keeps the two in step)."""
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    parser = sub.add_parser(
+        "eval", help="run a policy on S+/U+ episodes: SR, GC, PLW-SR, PLW-GC per task type",
+        description="Run a policy on the first N episodes of an evaluation split with ALFRED's limits (1000 "
+                    "steps, 10 failed actions) and write report.json, table.md (the paper's Table 4 layout), "
+                    "metrics.png and one file per episode (an interrupted run resumes in the same folder).")
+    parser.add_argument("--policy", required=True, metavar="POLICY",
+                        help="oracle, random, or MODULE:CALLABLE, a factory of your agent (docs/evaluation.md)")
+    parser.add_argument("--split", required=True, choices=SPLITS, help="the evaluation split")
+    parser.add_argument("--episodes", type=positive_int, required=True, metavar="N",
+                        help="evaluate the split's episodes 0 .. N-1")
+    parser.add_argument("--out", type=output_dir, required=True, help="output folder")
+    parser.add_argument("--workers", type=positive_int, default=1, help="local worker processes (default 1)")
+    parser.add_argument("--seed", type=seed, default=0, help="seed of the agents' randomness (default 0)")
+    parser.set_defaults(func=_run)
+
+
+def _run(args: argparse.Namespace) -> int:
+    from luminous_sim.eval import EpisodeOutcome, check_policy, evaluate, markdown_table, write_reports
+
+    if os.getcwd() not in sys.path:  # MODULE may be a file in the current folder, as with `python -m`
+        sys.path.insert(0, os.getcwd())
+    check_policy(args.policy)  # a bad spec fails here, before any episode
+
+    def show(o: EpisodeOutcome) -> None:
+        what = o.end if o.drawn else f"unavailable ({o.cause})"
+        gc = f"{o.goal_conditions[0]}/{o.goal_conditions[1]}" if o.drawn else "-"
+        print(f"{o.split} {o.index:4d} {o.task_type:<34} {what:<22} gc {gc:<5} steps {o.steps:4d} "
+              f"expert {o.expert_length:4d}", file=sys.stderr)
+
+    report = evaluate(args.policy, args.split, args.episodes, seed=args.seed, workers=args.workers,
+                      out_dir=Path(args.out), progress=show)
+    paths = write_reports(report, Path(args.out))
+    print(markdown_table([report]), end="")
+    print(f"wrote {paths['json']}, {paths['table']}, {paths['plot']}")
+    return 0

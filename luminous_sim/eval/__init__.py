@@ -1,0 +1,53 @@
+"""Layer L5: evaluation on LUMINOUS's splits (S+, U+, U+test) with ALFRED's metrics and limits.
+
+A policy (`oracle`, `random`, or a user's agent as `MODULE:CALLABLE`; see docs/evaluation.md) plays
+episodes of a split; SR, GC, PLW-SR and PLW-GC come out overall and per task type, as JSON, a markdown
+table in the layout of the paper's Table 4, and a plot.
+
+Typical use::
+
+    from luminous_sim.eval import evaluate, write_reports
+    report = evaluate("oracle", "U+", 14, workers=2)
+    print(report.overall.sr, report.per_type["pick_and_place_simple"].gc)
+    write_reports(report, Path("out/eval"))
+"""
+
+from luminous_sim.eval.evaluator import EVAL_ENV, EpisodeJob, EvalReport, evaluate, play, run_job
+from luminous_sim.eval.metrics import EpisodeOutcome, Metrics, metrics, metrics_by_type, type_average
+from luminous_sim.eval.policies import (
+    BUILT_IN,
+    Agent,
+    AgentContext,
+    PolicyError,
+    check_policy,
+    make_agent,
+    resolve_factory,
+)
+from luminous_sim.eval.report import TABLE4_ROWS, markdown_table, plot, write_reports
+from luminous_sim.eval.workers import map_local
+
+__all__ = [
+    "BUILT_IN",
+    "EVAL_ENV",
+    "TABLE4_ROWS",
+    "Agent",
+    "AgentContext",
+    "EpisodeJob",
+    "EpisodeOutcome",
+    "EvalReport",
+    "Metrics",
+    "PolicyError",
+    "check_policy",
+    "evaluate",
+    "make_agent",
+    "map_local",
+    "markdown_table",
+    "metrics",
+    "metrics_by_type",
+    "play",
+    "plot",
+    "resolve_factory",
+    "run_job",
+    "type_average",
+    "write_reports",
+]

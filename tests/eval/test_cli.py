@@ -1,0 +1,81 @@
+"""`luminous eval`: the worked example and a user's own module through MODULE:CALLABLE, the files it writes,
+and clear one-line errors (exit 2) for a bad policy spec or split name."""
+
+from __future__ import annotations
+
+import json
+import sys
+
+import pytest
+
+from luminous_sim.cli.eval_cmd import SPLITS
+from luminous_sim.cli.main import main
+from luminous_sim.splits import PLUS_SPLITS
+
+USER_AGENT = '''
+class Stopper:
+    """Stops at once: the shortest possible episode."""
+
+    def reset(self, instruction, info):
+        self.instruction = instruction
+
+    def act(self, observation, info):
+        return {"action": "<<stop>>"}
+
+
+def make(context):
+    assert context.action_space.n == context.actions.n
+    return Stopper()
+'''
+
+
+def run(argv, capsys):
+    try:
+        code = main(argv)
+    except SystemExit as exc:
+        code = exc.code
+    out = capsys.readouterr()
+    return code, out.out, out.err
+
+
+def test_split_choices_are_the_splits():
+    assert SPLITS == tuple(PLUS_SPLITS)
+
+
+def test_the_worked_example_runs_through_the_cli(tmp_path, capsys):
+    code, out, err = run(["eval", "--policy", "luminous_sim.eval.examples:wanderer", "--split", "U+",
+                          "--episodes", "1", "--out", str(tmp_path)], capsys)
+    assert code == 0, err
+    report = json.loads((tmp_path / "report.json").read_text())
+    assert report["policy"] == "luminous_sim.eval.examples:wanderer" and report["entries"] == 1
+    (episode,) = report["episodes"]
+    assert episode["end"] in ("stop", "max_failures") and 0 < episode["steps"] <= 41
+    assert "| **All** | **1/1** |" in out and "| Pick | 1/1 |" in (tmp_path / "table.md").read_text()
+    assert (tmp_path / "metrics.png").stat().st_size > 0 and "U+    0 pick_and_place_simple" in err
+
+
+def test_a_users_module_in_the_current_folder(tmp_path, capsys, monkeypatch):
+    (tmp_path / "my_agent.py").write_text(USER_AGENT)
+    monkeypatch.chdir(tmp_path)
+    monkeypatch.setattr(sys, "path", [p for p in sys.path if p not in ("", str(tmp_path))])
+    code, _out, err = run(["eval", "--policy", "my_agent:make", "--split", "U+", "--episodes", "1",
+                           "--out", "results"], capsys)
+    assert code == 0, err
+    (episode,) = json.loads((tmp_path / "results" / "report.json").read_text())["episodes"]
+    assert (episode["end"], episode["steps"], episode["success"]) == ("stop", 0, False)
+    assert episode["goal_conditions"][1] >= 1 and episode["expert_length"] > 0
+
+
+@pytest.mark.parametrize("argv, message", [
+    (["--policy", "oracel"], "policy 'oracel': expected oracle or random, or MODULE:CALLABLE"),
+    (["--policy", "no_such_agent_module:make"], "cannot import module 'no_such_agent_module'"),
+    (["--policy", "luminous_sim.eval.examples:nothing"], "has no 'nothing'"),
+    (["--split", "U"], "argument --split: invalid choice: 'U'"),
+    (["--episodes", "0"], "argument --episodes: expected a whole number at least 1"),
+])
+def test_bad_specs_are_one_line_errors_with_exit_2(argv, message, tmp_path, capsys):
+    args = {"--policy": "random", "--split": "U+", "--episodes": "1", "--out": str(tmp_path / "o")}
+    args.update(dict(zip(argv[::2], argv[1::2], strict=True)))
+    code, _out, err = run(["eval", *[x for kv in args.items() for x in kv]], capsys)
+    assert code == 2 and message in err and "Traceback" not in err
+    assert not (tmp_path / "o").exists()
