@@ -1,6 +1,7 @@
-"""Layer L5: data production on top of the generator and the task layer; for now task-driven generation
-(a room generated so that a task of a given type is feasible in it and fits physically) and export of a
-solved episode in ALFRED's json_2.1.0 layout.
+"""Layer L5: data production on top of the generator and the task layer: task-driven generation (a room
+generated so that a task of a given type is feasible in it and fits physically), export of a solved
+episode in ALFRED's json_2.1.0 layout, and dataset builds (S+/U+ splits, method (a)) that resume after a
+kill and run on local worker processes or a Ray cluster through a small reusable backend interface.
 
 Typical use::
 
@@ -8,20 +9,59 @@ Typical use::
     scene = scene_for_task("pick_heat_then_place_in_recep", "Kitchen", seed=0)
     result, record = run_episode(scene, "pick_heat_then_place_in_recep", seed=0, return_record=True)
     trial_dir = export_alfred(out_root, scene, record, seed=0)
+
+    from luminous_sim.data import build_split, make_backend
+    with make_backend("local", workers=2) as backend:
+        report = build_split(Path("out/splus"), "S+", 100, backend)
+    print(report.summary())
 """
 
 from luminous_sim.data.alfred_export import ExportError, alfred_traj_data, export_alfred, fold_subgoals
 from luminous_sim.data.alfred_structure import Structure, structure, structure_differences
+from luminous_sim.data.backends import Backend, BackendError, LocalBackend, RayBackend, make_backend, map_jobs
+from luminous_sim.data.build import (
+    BuildError,
+    BuildOptions,
+    BuildReport,
+    Job,
+    JobOutcome,
+    SplitJob,
+    build,
+    build_split,
+    layout_scene,
+    split_jobs,
+    task_fallback_scene,
+)
+from luminous_sim.data.manifest import Manifest, ManifestError
 from luminous_sim.data.task_scenes import physical_misfit, scene_for_task
 
 __all__ = [
+    "Backend",
+    "BackendError",
+    "BuildError",
+    "BuildOptions",
+    "BuildReport",
     "ExportError",
+    "Job",
+    "JobOutcome",
+    "LocalBackend",
+    "Manifest",
+    "ManifestError",
+    "RayBackend",
+    "SplitJob",
     "Structure",
     "alfred_traj_data",
+    "build",
+    "build_split",
     "export_alfred",
     "fold_subgoals",
+    "layout_scene",
+    "make_backend",
+    "map_jobs",
     "physical_misfit",
     "scene_for_task",
+    "split_jobs",
     "structure",
     "structure_differences",
+    "task_fallback_scene",
 ]
