@@ -15,13 +15,16 @@ A build folder holds::
 
 How it survives a kill: each job writes its trial under `.partial/<job>/`, fsyncs it and renames it
 into place, and only then does the driver append (and fsync) its manifest record. A restarted build
-removes `.partial/`, and any trial folder of the build's splits that the manifest does not list (one
-renamed into place just before the kill), and runs the jobs the manifest lacks. Each job depends on
+waits for the current job of any worker the killed one left running (`.workers.lock`; such a worker
+then sees a new run id in `.partial/RUN` and does nothing more), removes `.partial/` and any trial
+folder that the manifest does not list (one renamed into place just before the kill), and runs the
+jobs the manifest lacks. Each job depends on
 its own key alone, so the files are the same whatever the worker count, backend or interruptions.
 """
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import hashlib
 import json
@@ -29,8 +32,9 @@ import os
 import shutil
 import sys
 import time
+import uuid
 from collections import Counter
-from collections.abc import Sequence
+from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Protocol
@@ -49,6 +53,10 @@ MANIFEST = "manifest.jsonl"
 SPLITS = "splits.json"
 PARTIAL = ".partial"
 LOCK = ".build.lock"
+WORKERS_LOCK = ".workers.lock"
+RUN = "RUN"
+"""`.partial/RUN`: the id of the build run now going; a job of another run (a worker orphaned by a killed
+build) sees it changed and leaves the folder alone."""
 ANNOTATIONS = 3
 """Instructions per trajectory (ALFRED has about three per trajectory, `repeat_idx` 0..2)."""
 CAUSES_SHOWN = 2
@@ -234,35 +242,76 @@ class _Work:
     job: Any
     out: str
     options: BuildOptions
+    run: str
+    """The run id the driver wrote to `.partial/RUN`."""
 
 
-def _safe(key: str) -> str:
-    return "".join(c if c.isalnum() or c in "-_." else "_" for c in key)
+@contextlib.contextmanager
+def _workers_lock(out: Path, exclusive: bool) -> Iterator[None]:
+    """Jobs hold `.workers.lock` shared while they run; a starting build takes it exclusively, so that
+    it waits for the current job of any worker a killed build left running before it cleans up."""
+    import fcntl
+
+    with open(out / WORKERS_LOCK, "a") as fh:
+        fcntl.flock(fh, fcntl.LOCK_EX if exclusive else fcntl.LOCK_SH)
+        try:
+            yield
+        finally:
+            fcntl.flock(fh, fcntl.LOCK_UN)
 
 
-def run_job(work: _Work) -> Record:
-    """Run one job and put its trial in place (in a worker); its manifest record (written by the driver)."""
-    job, out = work.job, Path(work.out)
-    tmp = out / PARTIAL / _safe(job.key)
+def _work_folder(key: str) -> str:
+    """A folder name for a job key: readable, and unique through a digest of the key."""
+    readable = "".join(c if c.isalnum() or c in "-_." else "_" for c in key)
+    return f"{readable}-{hashlib.sha1(key.encode()).hexdigest()[:10]}"
+
+
+def _inside(path: Path, root: Path) -> tuple[str, ...]:
+    """`path`'s parts below `root` (empty when it is not below it)."""
+    try:
+        return Path(path).resolve().relative_to(root.resolve()).parts
+    except ValueError:
+        return ()
+
+
+def run_job(work: _Work) -> Record | None:
+    """Run one job and put its trial in place (in a worker); its manifest record (written by the driver),
+    or None when the job belongs to a build run that is over (its driver was killed)."""
+    out = Path(work.out)
+    with _workers_lock(out, exclusive=False):
+        try:
+            current = (out / PARTIAL / RUN).read_text()
+        except FileNotFoundError:
+            current = None
+        if current != work.run:
+            return None
+        return _run_job(work.job, out, work.options)
+
+
+def _run_job(job: Any, out: Path, options: BuildOptions) -> Record:
+    tmp = out / PARTIAL / _work_folder(job.key)
     if tmp.exists():
         shutil.rmtree(tmp)
     tmp.mkdir(parents=True)
     try:
-        outcome = job.run(tmp, work.options)
+        outcome = job.run(tmp, options)
+        if outcome.trial is not None and len(_inside(outcome.trial, tmp)) != 2:
+            raise BuildError(f"job {job.key} wrote its trial at {outcome.trial}; expected {tmp}/<task>/<trial>")
     except Exception as exc:  # a bug in one job is recorded, not fatal to a build of thousands
         outcome = JobOutcome(stage="crash", cause=f"{type(exc).__name__}: {exc}")
-    record: Record = {"key": job.key, "split": job.split, "order": job.order, "task_type": job.task_type,
-                      "status": "built" if outcome.trial is not None else "failed", "stage": outcome.stage,
-                      "cause": outcome.cause, "trial": None, **outcome.details}
+    record: Record = {**outcome.details, "key": job.key, "split": job.split, "order": job.order,
+                      "task_type": job.task_type, "status": "built" if outcome.trial is not None else "failed",
+                      "stage": outcome.stage, "cause": outcome.cause, "trial": None}
     if outcome.trial is not None:
-        rel = outcome.trial.relative_to(tmp)
-        record["files"], record["sha256"] = tree_digest(outcome.trial)
-        _fsync_tree(outcome.trial)
+        rel = Path(*_inside(outcome.trial, tmp))
+        written = tmp / rel
+        record["files"], record["sha256"] = tree_digest(written)
+        _fsync_tree(written)
         dest = out / job.split / rel
         dest.parent.mkdir(parents=True, exist_ok=True)
         if dest.exists():  # renamed into place by a killed build that never recorded it
             shutil.rmtree(dest)
-        os.replace(outcome.trial, dest)
+        os.replace(written, dest)
         _fsync_dir(dest.parent)
         record["trial"] = rel.as_posix()
     shutil.rmtree(tmp)
@@ -361,7 +410,7 @@ def _check_settings(out: Path, options: BuildOptions) -> None:
             raise BuildError(f"{out} holds a build made with other settings ({diff}); use the same options "
                              "or another folder")
         return
-    others = sorted(p.name for p in out.iterdir() if p.name != LOCK)
+    others = sorted(p.name for p in out.iterdir() if p.name not in (LOCK, WORKERS_LOCK))
     if others:
         raise BuildError(f"{out} is not empty and holds no dataset build ({SETTINGS} missing; it has "
                          f"{', '.join(others[:5])}{' ...' if len(others) > 5 else ''}); choose a new or empty folder")
@@ -424,14 +473,19 @@ def build(out: Path, jobs: Sequence[Job], backend: Backend | None = None, option
     with _Lock(out):
         _check_settings(out, options)
         manifest = Manifest(out / MANIFEST)
-        _clean(out, manifest)
+        run = uuid.uuid4().hex
+        with _workers_lock(out, exclusive=True):  # waits for the job of any orphaned worker to end
+            _clean(out, manifest)
+            write_atomic(out / PARTIAL / RUN, run)
         todo = [j for j in jobs if j.key not in manifest]
         workers = backend.workers if backend is not None else 1
         start = time.perf_counter()
         with tqdm(total=len(jobs), initial=len(jobs) - len(todo), file=sys.stderr, disable=not progress,
                   unit="traj", desc=f"building {out.name}", dynamic_ncols=True) as bar:
             failed = 0
-            for _, record in map_jobs(run_job, [_Work(j, str(out), options) for j in todo], backend):
+            for work, record in map_jobs(run_job, [_Work(j, str(out), options, run) for j in todo], backend):
+                if record is None:
+                    raise BuildError(f"job {work.job.key} found another build run going in {out}")
                 manifest.append(record)
                 failed += record["status"] != "built"
                 bar.set_postfix(failed=failed, refresh=False)

@@ -27,7 +27,7 @@ from luminous_sim.data import (
     make_backend,
     split_jobs,
 )
-from luminous_sim.data.build import MANIFEST, PARTIAL, SPLITS, _Work, run_job
+from luminous_sim.data.build import MANIFEST, PARTIAL, RUN, SPLITS, _run_job, _Work, run_job
 from luminous_sim.splits import split_entry
 
 REPO = Path(__file__).resolve().parents[2]
@@ -148,7 +148,7 @@ def test_a_trial_moved_into_place_but_not_recorded_is_redone(reference, tmp_path
     """The window between a trial's rename and its manifest line: a restart must not keep a stray copy."""
     out = tmp_path / "b"
     build_split(out, SPLIT, 1, options=QUICK, progress=False)  # episode 0 recorded
-    record = run_job(_Work(split_jobs(SPLIT, N)[1], str(out), QUICK))  # episode 1 in place, no record
+    record = _run_job(split_jobs(SPLIT, N)[1], out, QUICK)  # episode 1 in place, no record
     assert record["status"] != "built" or (out / SPLIT / record["trial"]).is_dir()
     stray = out / SPLIT / "pick_and_place_simple-Stray-None-Shelf-1" / "trial_T20000101_000000_000001"
     stray.mkdir(parents=True)  # and a trial no job of this build makes
@@ -157,6 +157,21 @@ def test_a_trial_moved_into_place_but_not_recorded_is_redone(reference, tmp_path
     (out / PARTIAL / "S_000002" / "half.json").write_text("{")
     build_split(out, SPLIT, N, options=QUICK, progress=False)
     assert tree(out) == tree(reference)
+
+
+def test_a_worker_of_a_build_run_that_is_over_does_nothing(tmp_path):
+    """A worker orphaned by a killed driver must not write into the folder a restarted build cleans."""
+    out = tmp_path / "b"
+    build(out, [_Failing("x/0", 0)], options=QUICK, progress=False)
+    before = tree(out)
+    assert run_job(_Work(_Failing("x/1", 1), str(out), QUICK, run="old")) is None  # no run going
+    (out / PARTIAL).mkdir()
+    (out / PARTIAL / RUN).write_text("new")
+    assert run_job(_Work(_Failing("x/1", 1), str(out), QUICK, run="old")) is None
+    assert run_job(_Work(_Failing("x/1", 1), str(out), QUICK, run="new"))["cause"] == "no Mug here"
+    (out / PARTIAL / RUN).unlink()
+    (out / PARTIAL).rmdir()
+    assert tree(out) == before
 
 
 def test_manifest_drops_a_torn_last_line_and_refuses_a_broken_one(tmp_path):
