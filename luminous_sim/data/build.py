@@ -169,15 +169,16 @@ class SplitJob:
             return JobOutcome(stage=stage, cause=cause, details=details)
 
         try:
-            scene: Scene | None = layout_scene(entry.floor_plan, entry.room_type, entry.layout_seed)
+            scene = layout_scene(entry.floor_plan, entry.room_type, entry.layout_seed)
         except LuminousError as exc:
             return failed("layout", _failure_cause(exc))
         try:
             result, record = self._episode(scene, entry, options)
         except TaskSamplingError as exc:
-            scene = task_fallback_scene(entry, str(exc))
-            if scene is None:
+            fallback = task_fallback_scene(entry, str(exc))
+            if fallback is None:
                 return failed("task", _failure_cause(exc))
+            scene = fallback
             details["fallback_scene"] = True
             try:
                 result, record = self._episode(scene, entry, options)
