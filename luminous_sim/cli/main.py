@@ -27,6 +27,7 @@ SUBCOMMAND_MODULES: tuple[str, ...] = (
     "luminous_sim.cli.alfred_cmd",
     "luminous_sim.cli.assets_cmd",
     "luminous_sim.cli.cdf_cmd",
+    "luminous_sim.cli.dataset_cmd",
     "luminous_sim.cli.demo_cmd",
     "luminous_sim.cli.eval_cmd",
     "luminous_sim.cli.generate_cmd",

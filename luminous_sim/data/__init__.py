@@ -1,7 +1,8 @@
 """Layer L5: data production on top of the generator and the task layer: task-driven generation (a room
 generated so that a task of a given type is feasible in it and fits physically), export of a solved episode
-in ALFRED's json_2.1.0 layout, and the ALFRED task parser (traj_data.json -> CDF) with the per-floor-plan
-merge and its coverage report.
+in ALFRED's json_2.1.0 layout, the ALFRED task parser (traj_data.json -> CDF) with the per-floor-plan
+merge and its coverage report, and dataset builds (S+/U+ splits, method (a)) that resume after a kill and
+run on local worker processes or a Ray cluster through a small reusable backend interface.
 
 Typical use::
 
@@ -12,6 +13,11 @@ Typical use::
 
     parse = parse_alfred("valid_seen/<task>/<trial>/traj_data.json")   # parse.cdf, .kept, .dropped
     merged = merge_by_floor_plan(parses)["FloorPlan12"]                 # merged.cdf, .conflicts
+
+    from luminous_sim.data import build_split, make_backend
+    with make_backend("local", workers=2) as backend:
+        report = build_split(Path("out/splus"), "S+", 100, backend)
+    print(report.summary())
 """
 
 from luminous_sim.data.alfred_export import ExportError, alfred_traj_data, export_alfred, fold_subgoals
@@ -19,21 +25,53 @@ from luminous_sim.data.alfred_merge import MergeConflict, MergedCDF, merge_by_fl
 from luminous_sim.data.alfred_parser import AlfredParse, AlfredParseError, ParseNote, parse_alfred
 from luminous_sim.data.alfred_report import CoverageReport, Realisation, parse_directory, realise, write_report
 from luminous_sim.data.alfred_structure import Structure, structure, structure_differences
+from luminous_sim.data.backends import Backend, BackendError, LocalBackend, RayBackend, make_backend, map_jobs
+from luminous_sim.data.build import (
+    BuildError,
+    BuildOptions,
+    BuildReport,
+    Job,
+    JobOutcome,
+    SplitJob,
+    build,
+    build_split,
+    layout_scene,
+    split_jobs,
+    task_fallback_scene,
+)
+from luminous_sim.data.manifest import Manifest, ManifestError
 from luminous_sim.data.task_scenes import physical_misfit, scene_for_task, task_misfit
 
 __all__ = [
     "AlfredParse",
     "AlfredParseError",
+    "Backend",
+    "BackendError",
+    "BuildError",
+    "BuildOptions",
+    "BuildReport",
     "CoverageReport",
     "ExportError",
+    "Job",
+    "JobOutcome",
+    "LocalBackend",
+    "Manifest",
+    "ManifestError",
     "MergeConflict",
     "MergedCDF",
     "ParseNote",
+    "RayBackend",
     "Realisation",
+    "SplitJob",
     "Structure",
     "alfred_traj_data",
+    "build",
+    "build_split",
     "export_alfred",
     "fold_subgoals",
+    "layout_scene",
+    "make_backend",
+    "map_jobs",
     "merge_by_floor_plan",
     "merge_parses",
     "parse_alfred",
@@ -41,8 +79,10 @@ __all__ = [
     "physical_misfit",
     "realise",
     "scene_for_task",
+    "split_jobs",
     "structure",
     "structure_differences",
+    "task_fallback_scene",
     "task_misfit",
     "write_report",
 ]

@@ -1,0 +1,504 @@
+"""Dataset builds: many independent jobs, each writing one ALFRED trial (or recording why it could not),
+resumable and safe against a kill at any moment, on any backend (`data.backends`).
+
+Method (a) of the paper is `SplitJob`: episode `index` of an S+/U+/U+test split (`splits.split_entry`)
+in its room structure's shared layout (`layout_scene`), a task of the entry's type drawn with the
+entry's task seed and solved by the oracle, exported in ALFRED's json_2.1.0 layout. Another job kind
+(a real ALFRED task design re-solved in its own floor plan, method (b)) plugs into the same `build`.
+
+A build folder holds::
+
+    build.json            the settings the build was started with (a resumed build must match them)
+    manifest.jsonl        one record per finished job (built or failed, with the first cause)
+    splits.json           ALFRED's oct21.json layout: split -> [{"repeat_idx", "task"}]
+    <split>/<task>/<trial>/   traj_data.json, raw_images/, pddl_states/, video.mp4, luminous.json
+
+How it survives a kill: each job writes its trial under `.partial/<job>/`, fsyncs it and renames it
+into place, and only then does the driver append (and fsync) its manifest record. A restarted build
+waits for the current job of any worker the killed one left running (`.workers.lock`; such a worker
+then sees a new run id in `.partial/RUN` and does nothing more), removes `.partial/` and any trial
+folder that the manifest does not list (one renamed into place just before the kill), and runs the
+jobs the manifest lacks. Each job depends on
+its own key alone, so the files are the same whatever the worker count, backend or interruptions.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import functools
+import hashlib
+import json
+import os
+import shutil
+import sys
+import time
+import uuid
+from collections import Counter
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Protocol
+
+from luminous_sim.assets.objio import write_atomic
+from luminous_sim.data.alfred_export import ExportError, export_alfred
+from luminous_sim.data.backends import Backend, map_jobs
+from luminous_sim.data.manifest import Manifest, Record
+from luminous_sim.errors import LuminousError
+from luminous_sim.scene import Scene
+from luminous_sim.splits import SplitEntry, oct21_document, split_entry
+
+BUILD_FORMAT = "luminous-dataset-build/1"
+SETTINGS = "build.json"
+MANIFEST = "manifest.jsonl"
+SPLITS = "splits.json"
+PARTIAL = ".partial"
+LOCK = ".build.lock"
+WORKERS_LOCK = ".workers.lock"
+RUN = "RUN"
+"""`.partial/RUN`: the id of the build run now going; a job of another run (a worker orphaned by a killed
+build) sees it changed and leaves the folder alone."""
+ANNOTATIONS = 3
+"""Instructions per trajectory (ALFRED has about three per trajectory, `repeat_idx` 0..2)."""
+CAUSES_SHOWN = 2
+"""Most frequent failure causes shown per task type in the summary."""
+STAGES = ("layout", "task", "oracle", "export", "crash")
+"""Where a job can fail: generating the layout; no task of the type fits the scene; the oracle did not
+solve it; the export refused it; an unexpected error (a bug: its type and message are recorded)."""
+
+
+class BuildError(LuminousError):
+    """A build that cannot start: a folder holding something else, settings that differ from the build
+    being resumed, another build running in the same folder, a bad job list."""
+
+
+@dataclass(frozen=True)
+class BuildOptions:
+    """What each trial holds beyond traj_data.json: frames (raw_images/) and a video of them."""
+
+    frames: bool = True
+    video: bool = True
+
+    def settings(self) -> dict[str, Any]:
+        return {"format": BUILD_FORMAT, "frames": self.frames, "video": self.video and self.frames,
+                "annotations": ANNOTATIONS}
+
+
+@dataclass(frozen=True)
+class JobOutcome:
+    """What a job did: the trial folder it wrote (inside its work folder), or the stage and first cause
+    of its failure; `details` are recorded in the manifest as they are (JSON values, deterministic)."""
+
+    trial: Path | None = None
+    stage: str | None = None
+    cause: str | None = None
+    details: dict[str, Any] = field(default_factory=dict)
+
+
+class Job(Protocol):
+    """One unit of a build: `key` unique in the build folder, `split` the folder its trial goes to,
+    `order` its place in that split's listing, `task_type` the ALFRED task type it asks for (known
+    before it runs: failures count against it). `run` writes at most one trial under `work`."""
+
+    @property
+    def task_type(self) -> str: ...
+
+    @property
+    def key(self) -> str: ...
+
+    @property
+    def split(self) -> str: ...
+
+    @property
+    def order(self) -> int: ...
+
+    def run(self, work: Path, options: BuildOptions) -> JobOutcome: ...
+
+
+@functools.lru_cache(maxsize=4)
+def layout_scene(floor_plan: str, room_type: str, layout_seed: int) -> Scene:
+    """The shared layout of a split's (structure, layout): CSSG's default furnishing of `room_type` in
+    the floor plan's shell, from the layout seed (cached: consecutive episodes often share it)."""
+    from luminous_sim.cssg import empty_cdf, generate
+    from luminous_sim.rooms import load_room
+
+    return generate(empty_cdf(room_type), seed=layout_seed, room=load_room(floor_plan)).scene
+
+
+def task_fallback_scene(entry: SplitEntry, cause: str) -> Scene | None:
+    """The scene to solve `entry`'s task in when its type does not fit the shared layout (`cause`), or
+    None to record the episode as failed at stage "task".
+
+    Not wired yet, so every such episode counts as failed: the place for a task-driven scene in the
+    entry's own floor plan (`data.scene_for_task(entry.task_type, entry.room_type, seed, room=...)`).
+    """
+    return None
+
+
+def _failure_cause(exc: BaseException) -> str:
+    return str(exc) or type(exc).__name__
+
+
+@dataclass(frozen=True)
+class SplitJob:
+    """Episode `index` of split `split` (method (a))."""
+
+    split: str
+    index: int
+
+    @property
+    def key(self) -> str:
+        return f"{self.split}/{self.index:06d}"
+
+    @property
+    def order(self) -> int:
+        return self.index
+
+    @property
+    def task_type(self) -> str:
+        return split_entry(self.split, self.index).task_type
+
+    def run(self, work: Path, options: BuildOptions) -> JobOutcome:
+        from luminous_sim.tasks import TaskSamplingError
+
+        entry = split_entry(self.split, self.index)
+        details: dict[str, Any] = {"floor_plan": entry.floor_plan, "layout": entry.layout,
+                                   "layout_seed": entry.layout_seed, "task_seed": entry.task_seed,
+                                   "fallback_scene": False}
+
+        def failed(stage: str, cause: str) -> JobOutcome:
+            return JobOutcome(stage=stage, cause=cause, details=details)
+
+        try:
+            scene = layout_scene(entry.floor_plan, entry.room_type, entry.layout_seed)
+        except LuminousError as exc:
+            return failed("layout", _failure_cause(exc))
+        try:
+            result, record = self._episode(scene, entry, options)
+        except TaskSamplingError as exc:
+            fallback = task_fallback_scene(entry, str(exc))
+            if fallback is None:
+                return failed("task", _failure_cause(exc))
+            scene = fallback
+            details["fallback_scene"] = True
+            try:
+                result, record = self._episode(scene, entry, options)
+            except TaskSamplingError as again:
+                return failed("task", _failure_cause(again))
+        traj = record.trajectory
+        details.update(goal=result.goal, low_actions=len(traj.low_actions), replans=traj.replans)
+        if not result.success:
+            done, total = result.goal_conditions
+            return failed("oracle", traj.failures[0] if traj.failures else f"{done}/{total} goal conditions met")
+        try:
+            trial = export_alfred(work, scene, record, seed=entry.task_seed, video=options.video and options.frames)
+        except ExportError as exc:
+            return failed("export", _failure_cause(exc))
+        return JobOutcome(trial=trial, details=details)
+
+    @staticmethod
+    def _episode(scene: Scene, entry: SplitEntry, options: BuildOptions):
+        from luminous_sim.episode import run_episode
+
+        return run_episode(scene, entry.task_type, entry.task_seed, record_frames=options.frames,
+                           return_record=True, extra_annotations=ANNOTATIONS - 1)
+
+
+def split_jobs(split: str, count: int, start: int = 0) -> list[SplitJob]:
+    """Jobs for episodes `start .. start + count - 1` of `split` (checked: unknown split, negative index)."""
+    if count < 0:
+        raise BuildError(f"count must be at least 0, got {count}")
+    jobs = [SplitJob(split, i) for i in range(start, start + count)]
+    for job in jobs[:1]:
+        split_entry(job.split, job.index)  # raises SplitError for an unknown split or a negative start
+    return jobs
+
+
+def tree_digest(root: Path) -> tuple[int, str]:
+    """(number of files, sha256 over their relative paths and contents, in sorted order) under `root`."""
+    outer = hashlib.sha256()
+    files = sorted(p for p in root.rglob("*") if p.is_file())
+    for p in files:
+        outer.update(p.relative_to(root).as_posix().encode() + b"\0")
+        outer.update(hashlib.sha256(p.read_bytes()).digest())
+    return len(files), outer.hexdigest()
+
+
+def _fsync_dir(path: Path) -> None:
+    """fsync a file or a folder (a folder's entries: a rename into it)."""
+    fd = os.open(path, os.O_RDONLY)
+    try:
+        os.fsync(fd)
+    finally:
+        os.close(fd)
+
+
+def _fsync_tree(root: Path) -> None:
+    """Make a trial's files and folders durable before it is renamed into place."""
+    for p in sorted(root.rglob("*"), key=lambda p: len(p.parts), reverse=True) + [root]:
+        _fsync_dir(p)
+
+
+@dataclass(frozen=True)
+class _Work:
+    job: Any
+    out: str
+    options: BuildOptions
+    run: str
+    """The run id the driver wrote to `.partial/RUN`."""
+
+
+@contextlib.contextmanager
+def _workers_lock(out: Path, exclusive: bool) -> Iterator[None]:
+    """Jobs hold `.workers.lock` shared while they run; a starting build takes it exclusively, so that
+    it waits for the current job of any worker a killed build left running before it cleans up."""
+    import fcntl
+
+    with open(out / WORKERS_LOCK, "a") as fh:
+        fcntl.flock(fh, fcntl.LOCK_EX if exclusive else fcntl.LOCK_SH)
+        try:
+            yield
+        finally:
+            fcntl.flock(fh, fcntl.LOCK_UN)
+
+
+def _work_folder(key: str) -> str:
+    """A folder name for a job key: readable, and unique through a digest of the key."""
+    readable = "".join(c if c.isalnum() or c in "-_." else "_" for c in key)
+    return f"{readable}-{hashlib.sha1(key.encode()).hexdigest()[:10]}"
+
+
+def _inside(path: Path, root: Path) -> tuple[str, ...]:
+    """`path`'s parts below `root` (empty when it is not below it)."""
+    try:
+        return Path(path).resolve().relative_to(root.resolve()).parts
+    except ValueError:
+        return ()
+
+
+def run_job(work: _Work) -> Record | None:
+    """Run one job and put its trial in place (in a worker); its manifest record (written by the driver),
+    or None when the job belongs to a build run that is over (its driver was killed)."""
+    out = Path(work.out)
+    with _workers_lock(out, exclusive=False):
+        try:
+            current = (out / PARTIAL / RUN).read_text()
+        except FileNotFoundError:
+            current = None
+        if current != work.run:
+            return None
+        return _run_job(work.job, out, work.options)
+
+
+def _run_job(job: Any, out: Path, options: BuildOptions) -> Record:
+    tmp = out / PARTIAL / _work_folder(job.key)
+    if tmp.exists():
+        shutil.rmtree(tmp)
+    tmp.mkdir(parents=True)
+    try:
+        outcome = job.run(tmp, options)
+        if outcome.trial is not None and len(_inside(outcome.trial, tmp)) != 2:
+            raise BuildError(f"job {job.key} wrote its trial at {outcome.trial}; expected {tmp}/<task>/<trial>")
+    except Exception as exc:  # a bug in one job is recorded, not fatal to a build of thousands
+        outcome = JobOutcome(stage="crash", cause=f"{type(exc).__name__}: {exc}")
+    record: Record = {**outcome.details, "key": job.key, "split": job.split, "order": job.order,
+                      "task_type": job.task_type, "status": "built" if outcome.trial is not None else "failed",
+                      "stage": outcome.stage, "cause": outcome.cause, "trial": None}
+    if outcome.trial is not None:
+        rel = Path(*_inside(outcome.trial, tmp))
+        written = tmp / rel
+        record["files"], record["sha256"] = tree_digest(written)
+        _fsync_tree(written)
+        dest = out / job.split / rel
+        dest.parent.mkdir(parents=True, exist_ok=True)
+        if dest.exists():  # renamed into place by a killed build that never recorded it
+            shutil.rmtree(dest)
+        os.replace(written, dest)
+        _fsync_dir(dest.parent)
+        record["trial"] = rel.as_posix()
+    shutil.rmtree(tmp)
+    return record
+
+
+@dataclass(frozen=True)
+class BuildReport:
+    """What a build call produced over the jobs it was given (resumed ones included)."""
+
+    out: Path
+    records: tuple[Record, ...]
+    """One manifest record per job asked for, in job order."""
+    ran: int
+    """Jobs run by this call (the others were finished before it started)."""
+    seconds: float
+    workers: int
+
+    @property
+    def built(self) -> int:
+        return sum(r["status"] == "built" for r in self.records)
+
+    @property
+    def failed(self) -> int:
+        return len(self.records) - self.built
+
+    def by_task_type(self) -> dict[str, dict[str, Any]]:
+        """Per task type: jobs, built, failed, and failures counted by (stage, first cause), most frequent first."""
+        out: dict[str, dict[str, Any]] = {}
+        for r in self.records:
+            row = out.setdefault(r["task_type"], {"jobs": 0, "built": 0, "failed": 0, "causes": Counter()})
+            row["jobs"] += 1
+            row["built" if r["status"] == "built" else "failed"] += 1
+            if r["status"] != "built":
+                row["causes"][(r["stage"], r["cause"])] += 1
+        return {t: {**row, "causes": row["causes"].most_common()} for t, row in sorted(out.items())}
+
+    def summary(self) -> str:
+        """A table for people: built / failed per task type with the most frequent first causes."""
+        rows = self.by_task_type()
+        width = max([len(t) for t in rows] + [len("task type")])
+        lines = [f"{'task type':<{width}}  built  failed  of", *(
+            f"{t:<{width}}  {row['built']:5d}  {row['failed']:6d}  {row['jobs']}" for t, row in rows.items())]
+        lines.append(f"{'all':<{width}}  {self.built:5d}  {self.failed:6d}  {len(self.records)}")
+        for t, row in rows.items():
+            for (stage, cause), n in row["causes"][:CAUSES_SHOWN]:
+                lines.append(f"  {t} failed at {stage} ({n}x): {_shorten(cause)}")
+            if len(row["causes"]) > CAUSES_SHOWN:
+                rest = sum(n for _, n in row["causes"][CAUSES_SHOWN:])
+                lines.append(f"  {t}: {rest} more failures with other causes (manifest.jsonl has each)")
+        if self.ran:
+            rate = self.ran / self.seconds * 60 if self.seconds > 0 else float("inf")
+            lines.append(f"ran {self.ran} jobs in {self.seconds:.1f} s on {self.workers} worker(s): "
+                         f"{rate:.1f} jobs/min, {rate / self.workers:.1f} per worker")
+        return "\n".join(lines)
+
+
+def _shorten(text: str | None, limit: int = 160) -> str:
+    text = " ".join((text or "").split())
+    return text if len(text) <= limit else text[: limit - 3] + "..."
+
+
+class _Lock:
+    """An exclusive lock on a build folder (released by the kernel if the process dies)."""
+
+    def __init__(self, out: Path):
+        self.path = out / LOCK
+
+    def __enter__(self) -> _Lock:
+        import fcntl
+
+        self._fh = open(self.path, "a")  # held until __exit__
+        try:
+            fcntl.flock(self._fh, fcntl.LOCK_EX | fcntl.LOCK_NB)
+        except BlockingIOError:
+            self._fh.close()
+            raise BuildError(f"{self.path.parent}: another build is running in this folder") from None
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self._fh.close()
+
+
+def _check_settings(out: Path, options: BuildOptions) -> None:
+    """Write build.json in a fresh folder; in one that holds a build, refuse different settings."""
+    path = out / SETTINGS
+    wanted = options.settings()
+    if path.exists():
+        try:
+            have = json.loads(path.read_text())
+        except ValueError as exc:
+            raise BuildError(f"{path}: not JSON ({exc})") from None
+        if have != wanted:
+            diff = ", ".join(f"{k}: {have.get(k)!r} there, {wanted.get(k)!r} now" for k in sorted(wanted)
+                             if have.get(k) != wanted.get(k))
+            raise BuildError(f"{out} holds a build made with other settings ({diff}); use the same options "
+                             "or another folder")
+        return
+    others = sorted(p.name for p in out.iterdir() if p.name not in (LOCK, WORKERS_LOCK))
+    if others:
+        raise BuildError(f"{out} is not empty and holds no dataset build ({SETTINGS} missing; it has "
+                         f"{', '.join(others[:5])}{' ...' if len(others) > 5 else ''}); choose a new or empty folder")
+    write_atomic(path, json.dumps(wanted, indent=1, sort_keys=True) + "\n")
+
+
+def _clean(out: Path, manifest: Manifest) -> int:
+    """Remove what a killed build left: `.partial/`, trial folders (`<split>/<task>/<trial>`) the
+    manifest does not list, and task folders left empty. The number of trial folders removed."""
+    shutil.rmtree(out / PARTIAL, ignore_errors=True)
+    listed = {(r["split"], r["trial"]) for r in manifest if r.get("trial")}
+    removed = 0
+    for root in sorted(p for p in out.iterdir() if p.is_dir() and not p.name.startswith(".")):
+        split = root.name
+        for task in sorted(p for p in root.iterdir() if p.is_dir()):
+            for trial in sorted(p for p in task.iterdir() if p.is_dir()):
+                if (split, f"{task.name}/{trial.name}") not in listed:
+                    shutil.rmtree(trial)
+                    removed += 1
+            if not any(task.iterdir()):
+                task.rmdir()
+    return removed
+
+
+def _check_jobs(jobs: Sequence[Job]) -> None:
+    keys = Counter(j.key for j in jobs)
+    twice = [k for k, n in keys.items() if n > 1]
+    if twice:
+        raise BuildError(f"job keys must be unique; repeated: {', '.join(sorted(twice)[:5])}")
+    for split in {j.split for j in jobs}:
+        if not split or "/" in split or split.startswith(".") or split in (SETTINGS, MANIFEST, SPLITS):
+            raise BuildError(f"a split's folder name must be a plain name, got {split!r}")
+
+
+def splits_document(manifest: Manifest) -> dict[str, list[dict[str, object]]]:
+    """ALFRED's oct21.json layout over every trial the manifest lists, per split in job order."""
+    built: dict[str, list[tuple[int, str]]] = {}
+    for r in manifest:
+        if r.get("trial"):
+            built.setdefault(r["split"], []).append((r["order"], r["trial"]))
+    return oct21_document({s: [t for _, t in sorted(v)] for s, v in sorted(built.items())}, ANNOTATIONS)
+
+
+def build(out: Path, jobs: Sequence[Job], backend: Backend | None = None, options: BuildOptions | None = None,
+          progress: bool = True) -> BuildReport:
+    """Run the `jobs` the build folder `out` has not finished, on `backend` (default: this process), and
+    write `splits.json`; resumable after a kill at any moment (see the module's docstring).
+
+    Raises:
+        BuildError: `out` holds something else or a build with other settings, another build runs there,
+            or two jobs share a key.
+        ManifestError: the manifest is corrupt.
+    """
+    from tqdm import tqdm
+
+    out = Path(out)
+    options = options or BuildOptions()
+    _check_jobs(jobs)
+    out.mkdir(parents=True, exist_ok=True)
+    with _Lock(out):
+        _check_settings(out, options)
+        manifest = Manifest(out / MANIFEST)
+        run = uuid.uuid4().hex
+        with _workers_lock(out, exclusive=True):  # waits for the job of any orphaned worker to end
+            _clean(out, manifest)
+            write_atomic(out / PARTIAL / RUN, run)
+        todo = [j for j in jobs if j.key not in manifest]
+        workers = backend.workers if backend is not None else 1
+        start = time.perf_counter()
+        with tqdm(total=len(jobs), initial=len(jobs) - len(todo), file=sys.stderr, disable=not progress,
+                  unit="traj", desc=f"building {out.name}", dynamic_ncols=True) as bar:
+            failed = 0
+            for work, record in map_jobs(run_job, [_Work(j, str(out), options, run) for j in todo], backend):
+                if record is None:
+                    raise BuildError(f"job {work.job.key} found another build run going in {out}")
+                manifest.append(record)
+                failed += record["status"] != "built"
+                bar.set_postfix(failed=failed, refresh=False)
+                bar.update()
+        seconds = time.perf_counter() - start
+        manifest.sorted_rewrite(lambda r: (r["split"], r["order"], r["key"]))
+        write_atomic(out / SPLITS, json.dumps(splits_document(manifest), indent=1, sort_keys=True) + "\n")
+        shutil.rmtree(out / PARTIAL, ignore_errors=True)
+        return BuildReport(out, tuple(manifest[j.key] for j in jobs), len(todo), seconds, workers)
+
+
+def build_split(out: Path, split: str, count: int, backend: Backend | None = None,
+                options: BuildOptions | None = None, progress: bool = True) -> BuildReport:
+    """Method (a): episodes 0 .. count-1 of `split` (S+, U+, U+test) into the build folder `out`."""
+    return build(out, split_jobs(split, count), backend, options, progress)
