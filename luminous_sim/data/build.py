@@ -39,6 +39,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Protocol
 
+import numpy as np
+
 from luminous_sim.assets.objio import write_atomic
 from luminous_sim.data.alfred_export import ExportError, export_alfred
 from luminous_sim.data.backends import Backend, map_jobs
@@ -124,14 +126,24 @@ def layout_scene(floor_plan: str, room_type: str, layout_seed: int) -> Scene:
     return generate(empty_cdf(room_type), seed=layout_seed, room=load_room(floor_plan)).scene
 
 
-def task_fallback_scene(entry: SplitEntry, cause: str) -> Scene | None:
-    """The scene to solve `entry`'s task in when its type does not fit the shared layout (`cause`), or
-    None to record the episode as failed at stage "task".
+def task_fallback_scene(entry: SplitEntry, cause: str) -> Scene:
+    """The scene to solve `entry`'s task in when its type does not fit the shared layout (`cause`): a
+    room generated for the task in the entry's own floor plan (`data.scene_for_task(..., room=...)`), from
+    a seed derived from the entry's layout and task seeds. The manifest marks such episodes
+    (`fallback_scene`), so the share of the split that needed one is known.
 
-    Not wired yet, so every such episode counts as failed: the place for a task-driven scene in the
-    entry's own floor plan (`data.scene_for_task(entry.task_type, entry.room_type, seed, room=...)`).
+    Raises:
+        TaskSamplingError: no room generated in the floor plan fits such a task either; the message
+            starts with `cause`.
     """
-    return None
+    from luminous_sim.data.task_scenes import scene_for_task
+    from luminous_sim.tasks import TaskSamplingError
+
+    seed = int(np.random.SeedSequence([entry.layout_seed, entry.task_seed]).generate_state(1)[0] % (2**31))
+    try:
+        return scene_for_task(entry.task_type, entry.room_type, seed, room=entry.floor_plan)
+    except TaskSamplingError as exc:
+        raise TaskSamplingError(f"{cause}; and in a room generated for the task: {exc}") from exc
 
 
 def _failure_cause(exc: BaseException) -> str:
@@ -175,12 +187,9 @@ class SplitJob:
         try:
             result, record = self._episode(scene, entry, options)
         except TaskSamplingError as exc:
-            fallback = task_fallback_scene(entry, str(exc))
-            if fallback is None:
-                return failed("task", _failure_cause(exc))
-            scene = fallback
-            details["fallback_scene"] = True
             try:
+                scene = task_fallback_scene(entry, _failure_cause(exc))
+                details["fallback_scene"] = True
                 result, record = self._episode(scene, entry, options)
             except TaskSamplingError as again:
                 return failed("task", _failure_cause(again))

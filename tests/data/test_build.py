@@ -22,6 +22,7 @@ from luminous_sim.data import (
     LocalBackend,
     Manifest,
     ManifestError,
+    SplitJob,
     build,
     build_split,
     make_backend,
@@ -260,3 +261,16 @@ def test_cli_refuses_bad_arguments(tmp_path, capsys):
     with pytest.raises(SystemExit) as exc:
         main(["dataset", "build", "--split", "Q+", "--count", "1", "--out", str(tmp_path / "b")])
     assert exc.value.code == 2
+
+
+def test_a_task_type_that_does_not_fit_the_shared_layout_gets_a_room_generated_for_it(tmp_path):
+    # U+ episode 8 is a pick-two task in FloorPlan219's shared layout, which has no two objects of one kind
+    job = SplitJob("U+", 8)
+    entry = split_entry("U+", 8)
+    assert entry.task_type == "pick_two_obj_and_place"
+    outcome = job.run(tmp_path, QUICK)
+    assert outcome.details["fallback_scene"] is True
+    assert outcome.trial is not None, outcome.cause
+    traj = json.loads((outcome.trial / "traj_data.json").read_text())
+    assert traj["task_type"] == "pick_two_obj_and_place"
+    assert traj["scene"]["floor_plan"] == entry.floor_plan == "FloorPlan219"
