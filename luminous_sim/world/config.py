@@ -19,3 +19,15 @@ class WorldConfig:
     min_visible_pixels: int = 10
     settle_steps: int = 240
     interaction_steps: int = 60
+    lod_max_size: int = 128
+    """Frames whose larger side is at most this many pixels render the assets' decimated level-of-detail
+    visuals (collision and physics are the same); larger frames, ALFRED's 300x300 included, the full
+    detail. 0 turns the level of detail off."""
+    cull: bool = True
+    """Leave bodies wholly outside the camera's view out of each render (the frame is the same pixel for
+    pixel; see `world.culling`)."""
+
+    @property
+    def use_lod(self) -> bool:
+        """Whether this World loads the level-of-detail visuals."""
+        return max(self.width, self.height) <= self.lod_max_size

@@ -94,8 +94,9 @@ def floor_rectangles(poly) -> list[tuple[tuple[float, float], tuple[float, float
 
 
 def build_scene(scene: Scene, catalog: Catalog | None = None, client: BulletClient | None = None,
-                settle_steps: int = 240) -> BuiltScene:
-    """Create the room and objects in `client` (a new DIRECT one by default) and let them settle."""
+                settle_steps: int = 240, lod: bool = False) -> BuiltScene:
+    """Create the room and objects in `client` (a new DIRECT one by default) and let them settle; `lod`
+    loads the assets' level-of-detail visuals (the physics is the same)."""
     catalog = catalog or default_catalog()
     client = client or new_client()
     room = scene.room
@@ -115,7 +116,7 @@ def build_scene(scene: Scene, catalog: Catalog | None = None, client: BulletClie
     for obj in scene.objects:
         entry = catalog.for_object(obj)
         loaded = load_asset(client, entry, obj.position, obj.yaw, fixed=obj.fixed,
-                            rng=np.random.default_rng(obj.color_seed), color=obj.color)
+                            rng=np.random.default_rng(obj.color_seed), color=obj.color, lod=lod)
         _apply_states(client, obj, loaded)
         objects[obj.id] = loaded
     built = BuiltScene(client, scene, objects, floor, walls)

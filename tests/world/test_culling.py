@@ -1,0 +1,61 @@
+"""Frustum culling leaves the frame as it is, pixel for pixel, and puts every visual back as it was."""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from luminous_sim.world.agent import AgentPose
+from luminous_sim.world.articulation import move_joint
+from luminous_sim.world.camera import render
+from luminous_sim.world.config import WorldConfig
+from luminous_sim.world.world import World
+from tests.world.conftest import obj
+
+
+def _views(world: World) -> list[AgentPose]:
+    """Every fourth reachable point, looking four ways, at three horizons (about 100 views)."""
+    pts = world.nav.points()[::4]
+    return [AgentPose(float(x), float(y), rot, hor) for x, y in pts for rot in (0, 90, 180, 270)
+            for hor in (-30, 30, 60)][::3]
+
+
+def _plain(world: World, pose: AgentPose, size: int):
+    eye = np.array(pose.eye())
+    return render(world.client, eye, eye + np.array(pose.view_direction()), width=size, height=size)
+
+
+@pytest.mark.parametrize("size", [300, 64])
+def test_culled_frames_equal_plain_frames(kitchen_scene, size):
+    with World(kitchen_scene, WorldConfig(width=size, height=size, settle_steps=120)) as w:
+        fridge, mug = obj(kitchen_scene, "fridge"), obj(kitchen_scene, "mug")
+        move_joint(w, w.interactions.state, fridge, True)  # a door link moved away from its loaded pose
+        assert w.view().state.objects[mug].isDirty  # a shown state visual; hidden ones elsewhere
+        views = _views(w)
+        before = [_plain(w, pose, size) for pose in views]
+        culled_any = 0
+        for pose in views:
+            eye = np.array(pose.eye())
+            target = eye + np.array(pose.view_direction())
+            plain = render(w.client, eye, target, width=size, height=size)
+            view = w.client.computeViewMatrix(list(eye), list(target), [0, 0, 1])
+            proj = w.client.computeProjectionMatrixFOV(60.0, 1.0, 0.05, 20.0)
+            culled_any += len(w._culler.outside(view, proj, size, size))
+            fast = render(w.client, eye, target, width=size, height=size, culler=w._culler)
+            for name in ("rgb", "depth", "seg"):
+                assert np.array_equal(getattr(plain, name), getattr(fast, name)), (name, pose)
+        assert culled_any > 0, "no view culled anything: the test tests nothing"
+        # every visual got its colour and alpha back (hidden state visuals stay hidden): the same frames as before
+        for pose, ref in zip(views, before, strict=True):
+            assert np.array_equal(_plain(w, pose, size).rgb, ref.rgb), ("a visual changed by culling", pose)
+
+
+def test_world_frames_use_culling_unless_turned_off(kitchen_scene):
+    with World(kitchen_scene, WorldConfig(width=64, height=64, settle_steps=120)) as on, \
+            World(kitchen_scene, WorldConfig(width=64, height=64, settle_steps=120, cull=False)) as off:
+        assert on._culler is not None and off._culler is None
+        for action in ("RotateRight", "MoveAhead", "LookDown", "RotateLeft"):
+            on.step(action)
+            off.step(action)
+            a, b = on.frame(), off.frame()
+            assert np.array_equal(a.rgb, b.rgb) and np.array_equal(a.seg, b.seg)
