@@ -24,8 +24,11 @@ class WorldConfig:
     visuals (collision and physics are the same); larger frames, ALFRED's 300x300 included, the full
     detail. 0 turns the level of detail off."""
     cull: bool = True
-    """Leave bodies wholly outside the camera's view out of each render (the frame is the same pixel for
-    pixel; see `world.culling`)."""
+    """Leave object links wholly outside the camera's view out of each render (the frame is the same pixel
+    for pixel; see `world.culling`)."""
+    structure_last: bool = True
+    """Paint the floor and walls after the objects (the same frame, less shading; see
+    `scene_builder.paint_structure_last`)."""
 
     @property
     def use_lod(self) -> bool:

@@ -19,7 +19,7 @@ from pathlib import Path
 
 import numpy as np
 
-from luminous_sim.world.asset_loader import LoadedAsset, set_visual_alpha
+from luminous_sim.world.asset_loader import LoadedAsset
 from luminous_sim.world.client import BulletClient
 
 MARGIN_PX = 2.0
@@ -84,12 +84,35 @@ class _BodyBoxes:
         self.has_base = "base" in bounds
         self.base_corners = _corners(bounds["base"][0] * s, bounds["base"][1] * s) if self.has_base else None
         self.links = [(name, j) for name, j in loaded.link_index.items() if name != "base" and name in bounds]
+        self.link_ids = [j for _, j in self.links]
+        self.visuals: dict[str, list[int]] = {}
+        """Each link's visual indices."""
+        for vis in loaded.entry.visuals:
+            self.visuals.setdefault(vis["link"], []).append(vis["index"])
         self.link_corners = [_corners(bounds[name][0] * s, bounds[name][1] * s) for name, _ in self.links]
         # PyBullet reports the base's inertial frame; the visuals hang off the base link frame
         local_pos, local_orn = client.getDynamicsInfo(loaded.body, -1)[3:5]
         inv_pos, inv_orn = client.invertTransform(local_pos, local_orn)
         self.inv_rot = _rotations(np.array([inv_orn]))[0]
         self.inv_pos = np.array(inv_pos)
+        self._seen: dict[str, tuple[tuple, np.ndarray]] = {}
+
+    def world(self, link: str, pose: tuple) -> np.ndarray:
+        """The link box's corners in world coordinates for the link's `pose` as PyBullet reports it (for the
+        base, its inertial frame); cached until the pose changes."""
+        seen = self._seen.get(link)
+        if seen is not None and seen[0] == pose:
+            return seen[1]
+        rot = _rotations(np.asarray([pose[1]], dtype=float))[0]
+        pos = np.asarray(pose[0], dtype=float)
+        if link == "base":  # world <- inertial <- base link
+            pos, rot = rot @ self.inv_pos + pos, rot @ self.inv_rot
+            local = self.base_corners
+        else:
+            local = self.link_corners[[name for name, _ in self.links].index(link)]
+        out = local @ rot.T + pos
+        self._seen[link] = (pose, out)
+        return out
 
 
 class FrustumCuller:
@@ -107,39 +130,24 @@ class FrustumCuller:
         return boxes
 
     def _boxes(self) -> tuple[list[tuple[LoadedAsset, str]], np.ndarray]:
-        """Every object link with a visual, and its box's 8 corners in world coordinates, shape (n, 8, 3)."""
+        """Every object link with a visual, and its box's 8 corners in world coordinates, shape (n, 8, 3).
+
+        Each link's pose is asked for every time; its corners are recomputed only when that pose changed."""
         c = self._client
+        base_pose, link_states = c.getBasePositionAndOrientation, c.getLinkStates  # BulletClient's lookup is slow
         keys: list[tuple[LoadedAsset, str]] = []
-        local: list[np.ndarray] = []
-        pos: list[np.ndarray] = []
-        orn: list[tuple[float, ...]] = []
-        base_fix: list[int] = []  # rows whose pose is the inertial frame, to be moved to the link frame
-        fixes: list[_BodyBoxes] = []
+        corners: list[np.ndarray] = []
         for loaded in self._objects.values():
             boxes = self._body(loaded)
             if boxes.has_base:
-                p, o = c.getBasePositionAndOrientation(loaded.body)
-                base_fix.append(len(keys))
-                fixes.append(boxes)
                 keys.append((loaded, "base"))
-                local.append(boxes.base_corners)
-                pos.append(np.asarray(p))
-                orn.append(o)
+                corners.append(boxes.world("base", base_pose(loaded.body)))
             if boxes.links:
-                states = c.getLinkStates(loaded.body, [j for _, j in boxes.links], computeForwardKinematics=1)
-                for (name, _), corners, st in zip(boxes.links, boxes.link_corners, states, strict=True):
+                states = link_states(loaded.body, boxes.link_ids, computeForwardKinematics=1)
+                for (name, _), st in zip(boxes.links, states, strict=True):
                     keys.append((loaded, name))
-                    local.append(corners)
-                    pos.append(np.asarray(st[4]))
-                    orn.append(st[5])
-        if not keys:
-            return keys, np.zeros((0, 8, 3))
-        rot = _rotations(np.asarray(orn, dtype=float))
-        trans = np.asarray(pos, dtype=float)
-        for row, boxes in zip(base_fix, fixes, strict=True):  # world <- inertial <- base link
-            trans[row] = rot[row] @ boxes.inv_pos + trans[row]
-            rot[row] = rot[row] @ boxes.inv_rot
-        return keys, np.einsum("nij,nkj->nki", rot, np.asarray(local)) + trans[:, None, :]
+                    corners.append(boxes.world(name, (st[4], st[5])))
+        return keys, np.array(corners).reshape(-1, 8, 3)
 
     def outside(self, view: list[float], proj: list[float], width: int, height: int) -> list[tuple[LoadedAsset, str]]:
         """The object links whose visual box lies wholly beyond one plane of this camera's frustum."""
@@ -157,16 +165,23 @@ class FrustumCuller:
 
     @contextmanager
     def culled(self, view: list[float], proj: list[float], width: int, height: int) -> Iterator[int]:
-        """Within the block, the links outside the view are hidden; yields how many links were hidden."""
-        hidden = [(loaded, name, vis["index"]) for loaded, name in self.outside(view, proj, width, height)
-                  for vis in loaded.entry.visuals if vis["link"] == name
-                  and loaded.alphas.get((name, vis["index"]), 1.0) > 0]
-        c = self._client
+        """Within the block, the links outside the view are hidden; yields how many links were hidden.
+
+        A link is hidden with one call (every visual of it at alpha 0); each of its visuals that was showing
+        gets its own colour and alpha back afterwards (those already at alpha 0 stay so)."""
+        change = self._client.changeVisualShape
+        hidden = []
+        for loaded, name in self.outside(view, proj, width, height):
+            showing = [i for i in self._body(loaded).visuals.get(name, ()) if loaded.alphas[(name, i)] > 0]
+            if showing:
+                hidden.append((loaded, name, showing))
         try:
-            for loaded, name, index in hidden:
-                rgba = list(loaded.colors[(name, index)][:3]) + [0.0]
-                c.changeVisualShape(loaded.body, loaded.link_index[name], shapeIndex=index, rgbaColor=rgba)
+            for loaded, name, _ in hidden:
+                change(loaded.body, loaded.link_index[name], rgbaColor=[0.0, 0.0, 0.0, 0.0])
             yield len(hidden)
         finally:
-            for loaded, name, index in hidden:
-                set_visual_alpha(c, loaded, name, index, loaded.alphas[(name, index)])
+            for loaded, name, showing in hidden:
+                link = loaded.link_index[name]
+                for i in showing:
+                    change(loaded.body, link, shapeIndex=i, rgbaColor=[*loaded.colors[(name, i)][:3],
+                                                                       loaded.alphas[(name, i)]])

@@ -49,7 +49,7 @@ class World:
 
         client = new_client(renderer=resolve_renderer(self.config.renderer))
         self.built: BuiltScene = build_scene(scene, self.catalog, client=client, settle_steps=self.config.settle_steps,
-                                             lod=self.config.use_lod)
+                                             lod=self.config.use_lod, structure_last=self.config.structure_last)
         self.client = self.built.client
         self.nav = NavGrid.from_scene(scene)
         self.agent = agent or self.default_start()
