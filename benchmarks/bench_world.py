@@ -3,6 +3,7 @@
     python benchmarks/bench_world.py                 # about three minutes
     python benchmarks/bench_world.py --repeats 9 --seconds 10 --worlds 8   # longer, tighter figures
     python benchmarks/bench_world.py --sizes 64 --only-frames               # one frame size, frames only
+    python benchmarks/bench_world.py --only-frames --ablation               # and each optimisation alone
 
 Prints the machine load at the start, then each figure as the median over repeats with its spread
 (min..max):
@@ -133,6 +134,32 @@ BEFORE = {"lod_max_size": 0, "cull": False, "structure_last": False}
 """The World as it rendered before the level of detail, culling and the structure painted last."""
 
 
+def ablation(seed: int, size: int, steps: int, repeats: int) -> None:
+    """CPU-time steps/s with each render optimisation alone, on the same views (which change buys what)."""
+    from luminous_sim.world.config import WorldConfig
+    from luminous_sim.world.world import World
+
+    scene = _scene(seed)
+    variants = {"before": BEFORE, "culling only": {**BEFORE, "cull": True},
+                "structure last only": {**BEFORE, "structure_last": True}}
+    if size <= WorldConfig().lod_max_size:
+        variants["LOD only"] = {**BEFORE, "lod_max_size": WorldConfig().lod_max_size}
+    variants["all (default)"] = {}
+    worlds = {name: World(scene, WorldConfig(width=size, height=size, **cfg)) for name, cfg in variants.items()}
+    try:
+        rates: dict[str, list[float]] = {name: [] for name in worlds}
+        for _ in range(repeats):
+            for name, w in worlds.items():
+                rates[name].append(env_steps_per_s(w, steps)[1])
+        base = statistics.median(rates["before"])
+        print(f"{size}x{size}, CPU-time steps/s with one change at a time:")
+        for name, r in rates.items():
+            print(f"  {name}: {spread(r)} ({statistics.median(r) / base:.2f}x)")
+    finally:
+        for w in worlds.values():
+            w.close()
+
+
 def frame_figures(seed: int, size: int, steps: int, repeats: int) -> None:
     """Before/after steps/s at one frame size on the same recorded views, and env vs raw (after)."""
     from luminous_sim.world.config import WorldConfig
@@ -252,6 +279,7 @@ def main(argv: list[str] | None = None) -> None:
     ap.add_argument("--worlds", type=int, default=4, help="Worlds held at once for the memory figure")
     ap.add_argument("--sizes", default="300,128,64", help="frame sizes for the before/after frame figures")
     ap.add_argument("--only-frames", action="store_true", help="only the before/after frame figures")
+    ap.add_argument("--ablation", action="store_true", help="also each render optimisation alone, per size")
     args = ap.parse_args(argv)
 
     load = os.getloadavg()
@@ -259,6 +287,8 @@ def main(argv: list[str] | None = None) -> None:
           f"(1/5/15 min)")
     for size in (int(x) for x in args.sizes.split(",")):
         frame_figures(args.seed, size, args.steps, args.repeats)
+        if args.ablation:
+            ablation(args.seed, size, args.steps, args.repeats)
     if args.only_frames:
         load = os.getloadavg()
         print(f"load average at the end {load[0]:.2f} {load[1]:.2f} {load[2]:.2f}")

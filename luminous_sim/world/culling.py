@@ -26,7 +26,7 @@ MARGIN_PX = 2.0
 """A link is culled only if its box is at least this many pixels beyond the picture's edge."""
 
 _LINK = re.compile(r'<link name="([^"]+)"')
-_MESH = re.compile(r'<visual [^>]*>.*?<mesh filename="([^"]+)"')
+_VISUAL = re.compile(r'<visual [^>]*><origin xyz="0 0 0" rpy="0 0 0"/><geometry><mesh filename="([^"]+)"/>')
 
 
 @lru_cache(maxsize=4096)
@@ -38,26 +38,34 @@ def _obj_bounds(path: str) -> tuple[tuple[float, ...], tuple[float, ...]] | None
     return tuple(v.min(axis=0)), tuple(v.max(axis=0))
 
 
-@lru_cache(maxsize=1024)
 def link_visual_bounds(urdf: str) -> dict[str, tuple[np.ndarray, np.ndarray]]:
     """Each link's visual bounding box (lo, hi) in its own frame, every visual included (hidden state
-    visuals too), at scale 1, read from the URDF's mesh files (visual origins are the link frame)."""
+    visuals too), at scale 1, read from the URDF's mesh files. A link with a visual this cannot bound (an
+    offset origin, a scaled mesh, another geometry) is left out: it is never culled."""
+    return _link_visual_bounds(urdf, Path(urdf).stat().st_mtime_ns)
+
+
+@lru_cache(maxsize=1024)
+def _link_visual_bounds(urdf: str, _mtime: int) -> dict[str, tuple[np.ndarray, np.ndarray]]:
     out: dict[str, tuple[np.ndarray, np.ndarray]] = {}
+    unbounded: set[str] = set()
     link = None
     for line in Path(urdf).read_text().splitlines():
         m = _LINK.search(line)
         if m:
             link = m.group(1)
-        mesh = _MESH.search(line)
-        if mesh and link is not None:
-            b = _obj_bounds(str(Path(urdf).parent / mesh.group(1)))
-            if b is None:
-                continue
-            lo, hi = np.array(b[0]), np.array(b[1])
-            if link in out:
-                lo, hi = np.minimum(out[link][0], lo), np.maximum(out[link][1], hi)
-            out[link] = (lo, hi)
-    return out
+        if "<visual" not in line or link is None:
+            continue
+        mesh = _VISUAL.search(line)
+        b = _obj_bounds(str(Path(urdf).parent / mesh.group(1))) if mesh and "scale=" not in line else None
+        if b is None:
+            unbounded.add(link)
+            continue
+        lo, hi = np.array(b[0]), np.array(b[1])
+        if link in out:
+            lo, hi = np.minimum(out[link][0], lo), np.maximum(out[link][1], hi)
+        out[link] = (lo, hi)
+    return {k: v for k, v in out.items() if k not in unbounded}
 
 
 def _corners(lo: np.ndarray, hi: np.ndarray) -> np.ndarray:

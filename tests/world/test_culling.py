@@ -76,3 +76,19 @@ def test_optimised_world_renders_what_the_plain_one_renders(kitchen_scene, size)
             a, b = fast.frame(), plain.frame()
             assert np.array_equal(a.rgb, b.rgb) and np.array_equal(a.depth, b.depth), pose
             assert np.array_equal(_objects_only(fast, a.seg), _objects_only(plain, b.seg)), pose
+
+
+def test_links_the_culler_cannot_bound_are_never_culled(tmp_path):
+    from luminous_sim.world.culling import link_visual_bounds
+
+    (tmp_path / "a.obj").write_text("v 0 0 0\nv 1 2 3\nf 1 2 1\n")
+    (tmp_path / "t.urdf").write_text(
+        '<robot name="t">\n  <link name="base">\n'
+        '    <visual name="v"><origin xyz="0 0 0" rpy="0 0 0"/><geometry><mesh filename="a.obj"/></geometry></visual>\n'
+        '  </link>\n  <link name="lid">\n'
+        '    <visual name="w"><origin xyz="0 0 0.5" rpy="0 0 0"/><geometry><mesh filename="a.obj"/></geometry>'
+        '</visual>\n'
+        '  </link>\n</robot>\n')
+    bounds = link_visual_bounds(str(tmp_path / "t.urdf"))
+    assert set(bounds) == {"base"}, "a visual with an offset origin is not bounded by its mesh file"
+    assert bounds["base"][0].tolist() == [0, 0, 0] and bounds["base"][1].tolist() == [1, 2, 3]
