@@ -23,6 +23,9 @@ class LoadedAsset:
     """Current colour of each (link, visual index), alpha excluded from state toggling."""
     alphas: dict[tuple[str, int], float] = field(default_factory=dict)
     """Current alpha of each (link, visual index): 0 for a hidden state visual."""
+    last_set: dict[str, int] = field(default_factory=dict)
+    """The visual of each link whose colour was set last: `getVisualShapeData` reports that colour for
+    every visual of the link (what is drawn keeps each visual's own)."""
     lod: bool = False
     """Whether the level-of-detail visuals were loaded (what replaces this body, its slices, loads the same)."""
 
@@ -87,6 +90,7 @@ def set_visual_alpha(client: BulletClient, loaded: LoadedAsset, link: str, index
     """Show (alpha 1) or hide (alpha 0: gone from RGB and segmentation) one visual of an asset."""
     rgba = list(loaded.colors[(link, index)][:3]) + [alpha]
     loaded.alphas[(link, index)] = alpha
+    loaded.last_set[link] = index
     client.changeVisualShape(loaded.body, loaded.link_index[link], shapeIndex=index, rgbaColor=rgba)
 
 

@@ -176,7 +176,8 @@ class FrustumCuller:
         """Within the block, the links outside the view are hidden; yields how many links were hidden.
 
         A link is hidden with one call (every visual of it at alpha 0); each of its visuals that was showing
-        gets its own colour and alpha back afterwards (those already at alpha 0 stay so)."""
+        gets its own colour and alpha back afterwards (those already at alpha 0 stay so), the link's
+        last-set visual last, as `getVisualShapeData` reports the last colour set on a link."""
         change = self._client.changeVisualShape
         hidden = []
         for loaded, name in self.outside(view, proj, width, height):
@@ -190,6 +191,7 @@ class FrustumCuller:
         finally:
             for loaded, name, showing in hidden:
                 link = loaded.link_index[name]
-                for i in showing:
+                last = loaded.last_set.get(name)  # set last again, so that PyBullet reports what it did before
+                for i in [i for i in showing if i != last] + ([] if last is None else [last]):
                     change(loaded.body, link, shapeIndex=i, rgbaColor=[*loaded.colors[(name, i)][:3],
                                                                        loaded.alphas[(name, i)]])

@@ -92,3 +92,21 @@ def test_links_the_culler_cannot_bound_are_never_culled(tmp_path):
     bounds = link_visual_bounds(str(tmp_path / "t.urdf"))
     assert set(bounds) == {"base"}, "a visual with an offset origin is not bounded by its mesh file"
     assert bounds["base"][0].tolist() == [0, 0, 0] and bounds["base"][1].tolist() == [1, 2, 3]
+
+
+def test_culled_render_leaves_what_pybullet_reports_unchanged(kitchen_scene):
+    """PyBullet reports, for every visual of a link, the colour last set on that link: the restore sets the
+    link's last-set visual last, so `getVisualShapeData` reads as before the render."""
+    with World(kitchen_scene, WorldConfig(width=64, height=64, settle_steps=120)) as w:
+        w.set_up_dirty([obj(kitchen_scene, "plate")])
+        report = [w.client.getVisualShapeData(lo.body) for lo in w.built.objects.values()]
+        culled = 0
+        for pose in _views(w)[:12]:
+            w.agent = pose
+            w.invalidate_frame()
+            w.frame()
+            view = w.client.computeViewMatrix(list(pose.eye()), list(np.array(pose.eye())
+                                                                     + np.array(pose.view_direction())), [0, 0, 1])
+            culled += len(w._culler.outside(view, w.client.computeProjectionMatrixFOV(60.0, 1.0, 0.05, 20.0), 64, 64))
+            assert [w.client.getVisualShapeData(lo.body) for lo in w.built.objects.values()] == report, pose
+        assert culled
