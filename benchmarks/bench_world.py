@@ -1,14 +1,22 @@
 """Simulator speed and memory, measured so that each figure means what it says.
 
-    python benchmarks/bench_world.py                 # about a minute and a half
+    python benchmarks/bench_world.py                 # about three minutes
     python benchmarks/bench_world.py --repeats 9 --seconds 10 --worlds 8   # longer, tighter figures
+    python benchmarks/bench_world.py --sizes 64 --only-frames               # one frame size, frames only
+    python benchmarks/bench_world.py --only-frames --ablation               # and each optimisation alone
 
 Prints the machine load at the start, then each figure as the median over repeats with its spread
 (min..max):
+- per frame size (300, 128, 64 px), before and after the render optimisations, in the same run on the
+  same views, interleaved: "before" is a World with `lod_max_size=0, cull=False, structure_last=False`
+  (full-detail visuals, every body drawn, floor and walls painted first, as before them), "after" the
+  default World (the level-of-detail visuals at <= 128 px, frustum culling, structure painted last).
+  Each as steps/s of wall-clock time and of this process's CPU time (the machine is shared: CPU time
+  is what one core does, and moves less with the load);
 - environment vs raw renderer on the SAME views: the World's navigation cycle is run once to record
   the camera pose of every frame it renders; the raw loop renders exactly those views with
-  `getCameraImage` (same size, renderer, flags, light), the environment loop replays the cycle with
-  `World.step` + `World.frame()` (goal >= 0.9x);
+  `getCameraImage` (same size, renderer, flags, light) in the same World, the environment loop replays
+  the cycle with `World.step` + `World.frame()` (goal >= 0.9x);
 - navigation steps/s with rendering off (goal >= 1,000) and interaction actions/s;
 - memory: N Worlds of the same scene built and held at once in a fresh process; RSS per World held
   (goal <= 150 MB per World process);
@@ -72,16 +80,17 @@ def record_views(world, steps: int) -> tuple[list[tuple[list[float], list[float]
     return views, failed
 
 
-def env_steps_per_s(world, steps: int) -> float:
-    """Replay the navigation cycle from the start pose: World.step + World.frame() per step."""
+def env_steps_per_s(world, steps: int) -> tuple[float, float]:
+    """Replay the navigation cycle from the start pose: World.step + World.frame() per step; steps per
+    second of wall-clock time and of CPU time."""
     start = world.agent
-    t0 = time.perf_counter()
+    t0, c0 = time.perf_counter(), time.process_time()
     for i in range(steps):
         world.step(NAV[i % len(NAV)])
         world.frame()
-    dt = time.perf_counter() - t0
+    dt, dc = time.perf_counter() - t0, time.process_time() - c0
     _rewind(world, start)
-    return steps / dt
+    return steps / dt, steps / max(dc, 1e-9)
 
 
 def _raw_matrices(world, views):
@@ -90,31 +99,99 @@ def _raw_matrices(world, views):
     return [(c.computeViewMatrix(eye, target, [0, 0, 1]), proj) for eye, target in views]
 
 
-def raw_seconds(world, matrices) -> float:
-    """Seconds to render every recorded view with getCameraImage as World.frame() asks for it."""
+def raw_seconds(world, matrices) -> tuple[float, float]:
+    """Seconds (wall clock, CPU) to render every recorded view with getCameraImage as World.frame() asks."""
     from luminous_sim.world.client import p
 
     c, cfg = world.client, world.config
     renderer = getattr(c, "luminous_renderer", p.ER_TINY_RENDERER)
-    t0 = time.perf_counter()
+    t0, c0 = time.perf_counter(), time.process_time()
     for view, proj in matrices:
         c.getCameraImage(cfg.width, cfg.height, view, proj, renderer=renderer, shadow=0, lightDirection=LIGHT,
                          flags=p.ER_SEGMENTATION_MASK_OBJECT_AND_LINKINDEX)
-    return time.perf_counter() - t0
+    return time.perf_counter() - t0, time.process_time() - c0
 
 
 def _check_same_view(world, matrices) -> None:
-    """The raw call draws what World.frame() draws (same segmentation for the first recorded view)."""
+    """The raw call draws what World.frame() draws (same picture for the first recorded view)."""
     from luminous_sim.world.client import p
 
     c, cfg = world.client, world.config
+    start = world.agent
     world.step(NAV[0])
-    seg = world.frame().seg
+    frame = world.frame()
     view, proj = matrices[0]
     raw = c.getCameraImage(cfg.width, cfg.height, view, proj, renderer=getattr(c, "luminous_renderer",
                            p.ER_TINY_RENDERER), shadow=0, lightDirection=LIGHT,
-                           flags=p.ER_SEGMENTATION_MASK_OBJECT_AND_LINKINDEX)[4]
-    assert np.array_equal(np.asarray(raw, dtype=np.int32).reshape(seg.shape), seg), "raw and World views differ"
+                           flags=p.ER_SEGMENTATION_MASK_OBJECT_AND_LINKINDEX)
+    rgb = np.asarray(raw[2], dtype=np.uint8).reshape(cfg.height, cfg.width, 4)[:, :, :3]
+    seg = np.asarray(raw[4], dtype=np.int32).reshape(frame.seg.shape)
+    assert np.array_equal(rgb, frame.rgb) and np.array_equal(seg, frame.seg), "raw and World views differ"
+    _rewind(world, start)
+
+
+BEFORE = {"lod_max_size": 0, "cull": False, "structure_last": False}
+"""The World as it rendered before the level of detail, culling and the structure painted last."""
+
+
+def ablation(seed: int, size: int, steps: int, repeats: int) -> None:
+    """CPU-time steps/s with each render optimisation alone, on the same views (which change buys what)."""
+    from luminous_sim.world.config import WorldConfig
+    from luminous_sim.world.world import World
+
+    scene = _scene(seed)
+    variants = {"before": BEFORE, "culling only": {**BEFORE, "cull": True},
+                "structure last only": {**BEFORE, "structure_last": True}}
+    if size <= WorldConfig().lod_max_size:
+        variants["LOD only"] = {**BEFORE, "lod_max_size": WorldConfig().lod_max_size}
+    variants["all (default)"] = {}
+    worlds = {name: World(scene, WorldConfig(width=size, height=size, **cfg)) for name, cfg in variants.items()}
+    try:
+        rates: dict[str, list[float]] = {name: [] for name in worlds}
+        for _ in range(repeats):
+            for name, w in worlds.items():
+                rates[name].append(env_steps_per_s(w, steps)[1])
+        base = statistics.median(rates["before"])
+        print(f"{size}x{size}, CPU-time steps/s with one change at a time:")
+        for name, r in rates.items():
+            print(f"  {name}: {spread(r)} ({statistics.median(r) / base:.2f}x)")
+    finally:
+        for w in worlds.values():
+            w.close()
+
+
+def frame_figures(seed: int, size: int, steps: int, repeats: int) -> None:
+    """Before/after steps/s at one frame size on the same recorded views, and env vs raw (after)."""
+    from luminous_sim.world.config import WorldConfig
+    from luminous_sim.world.world import World
+
+    scene = _scene(seed)
+    with World(scene, WorldConfig(width=size, height=size, **BEFORE)) as before, \
+            World(scene, WorldConfig(width=size, height=size)) as after:
+        views, failed = record_views(after, steps)
+        assert record_views(before, steps)[0] == views, "the two Worlds took different views"
+        matrices = _raw_matrices(after, views)
+        _check_same_view(after, matrices)
+        env_b, env_a, cpu_b, cpu_a, raw, ratio = [], [], [], [], [], []
+        for _ in range(repeats):  # interleaved, so that drifting load hits all alike
+            wall, cpu = env_steps_per_s(before, steps)
+            env_b.append(wall)
+            cpu_b.append(cpu)
+            wall, cpu = env_steps_per_s(after, steps)
+            env_a.append(wall)
+            cpu_a.append(cpu)
+            r_wall, _ = raw_seconds(after, matrices)
+            raw.append(len(views) / r_wall)
+            ratio.append(r_wall / (steps / env_a[-1]))
+        lod = "level-of-detail visuals" if after.config.use_lod else "full detail"
+        print(f"{size}x{size} RGB+depth+segmentation, {steps} navigation steps ({failed} failed, {len(views)} distinct "
+              f"views), after: {lod}, culling, structure last:")
+        print(f"  before: {spread(env_b)} steps/s wall clock, {spread(cpu_b)} steps/s of CPU time")
+        print(f"  after:  {spread(env_a)} steps/s wall clock, {spread(cpu_a)} steps/s of CPU time")
+        gain = [a / b for a, b in zip(cpu_a, cpu_b, strict=True)]
+        print(f"  after / before, CPU time per repeat: {spread(gain, '.2f')}x")
+        print(f"  raw getCameraImage of the same views (after's World, no culling): {spread(raw)} FPS; "
+              f"environment / raw: {spread(ratio, '.2f')}x (goal >= 0.9x)")
 
 
 def nav_unrendered(world, seconds: float) -> float:
@@ -146,14 +223,15 @@ def interactions_per_s(world, seconds: float) -> float:
 
 def _memory(args) -> tuple[float, list[float]]:
     """In a fresh process: RSS before any World, then after each of `count` Worlds built and held."""
-    seed, count = args
+    seed, count, size = args
+    from luminous_sim.world.config import WorldConfig
     from luminous_sim.world.world import World
 
     scene = _scene(seed)
     rss = [_rss_mb()]
     held = []
     for _ in range(count):
-        held.append(World(scene))
+        held.append(World(scene, WorldConfig(width=size, height=size)))
         rss.append(_rss_mb())
     for w in held:
         w.close()
@@ -199,47 +277,43 @@ def main(argv: list[str] | None = None) -> None:
     ap.add_argument("--steps", type=int, default=48, help="navigation steps per environment/raw repeat")
     ap.add_argument("--seconds", type=float, default=3.0, help="seconds per repeat of the timed-loop figures")
     ap.add_argument("--worlds", type=int, default=4, help="Worlds held at once for the memory figure")
+    ap.add_argument("--sizes", default="300,128,64", help="frame sizes for the before/after frame figures")
+    ap.add_argument("--only-frames", action="store_true", help="only the before/after frame figures")
+    ap.add_argument("--ablation", action="store_true", help="also each render optimisation alone, per size")
     args = ap.parse_args(argv)
 
     load = os.getloadavg()
     print(f"machine: {os.cpu_count()} cores; load average at start {load[0]:.2f} {load[1]:.2f} {load[2]:.2f} "
           f"(1/5/15 min)")
+    for size in (int(x) for x in args.sizes.split(",")):
+        frame_figures(args.seed, size, args.steps, args.repeats)
+        if args.ablation:
+            ablation(args.seed, size, args.steps, args.repeats)
+    if args.only_frames:
+        load = os.getloadavg()
+        print(f"load average at the end {load[0]:.2f} {load[1]:.2f} {load[2]:.2f}")
+        return
     from luminous_sim.world.world import World
 
     with World(_scene(args.seed)) as world:
-        c, start = world.config, world.agent
-        views, failed = record_views(world, args.steps)
-        matrices = _raw_matrices(world, views)
-        _check_same_view(world, matrices)
-        _rewind(world, start)
-        env, raw, ratio = [], [], []
-        for _ in range(args.repeats):  # interleaved, so that drifting load hits both alike
-            e = env_steps_per_s(world, args.steps)
-            r_s = raw_seconds(world, matrices)
-            env.append(e)
-            raw.append(len(views) / r_s)
-            ratio.append(r_s / (args.steps / e))
-        print(f"{c.width}x{c.height} RGB+depth+segmentation, {args.steps} navigation steps ({failed} failed, "
-              f"{len(views)} distinct views rendered):")
-        print(f"  environment: {spread(env)} steps/s; raw getCameraImage of the same views: {spread(raw)} FPS")
-        print(f"  environment / raw, same views: {spread(ratio, '.2f')}x (goal >= 0.9x)")
         unr = [nav_unrendered(world, args.seconds / 3) for _ in range(args.repeats)]
         print(f"navigation with rendering off: {spread(unr, ',.0f')} steps/s (goal >= 1,000)")
         act = [interactions_per_s(world, args.seconds / 2) for _ in range(args.repeats)]
         print(f"interaction actions (open/close fridge, visibility checked): {spread(act)} actions/s")
 
-    with mp.get_context("spawn").Pool(1) as pool:
-        base, rss = pool.apply(_memory, ((args.seed, args.worlds),))
-    per_held = (rss[-1] - rss[0]) / (len(rss) - 1) if len(rss) > 1 else float("nan")
-    print(f"memory, {args.worlds} Worlds of one scene held at once in a fresh process: "
-          f"{base:.0f} MB before any World (Python, libraries, scene); 1 World: {rss[0]:.0f} MB "
-          f"(+{rss[0] - base:.0f} MB); {args.worlds} Worlds: {rss[-1]:.0f} MB; each further World held "
-          f"+{per_held:.0f} MB (goal <= 150 MB per World process)")
+    for size in (300, 64):
+        with mp.get_context("spawn").Pool(1) as pool:
+            base, rss = pool.apply(_memory, ((args.seed, args.worlds, size),))
+        per_held = (rss[-1] - rss[0]) / (len(rss) - 1) if len(rss) > 1 else float("nan")
+        print(f"memory, {args.worlds} Worlds ({size} px) of one scene held at once in a fresh process: "
+              f"{base:.0f} MB before any World (Python, libraries, scene); 1 World: {rss[0]:.0f} MB "
+              f"(+{rss[0] - base:.0f} MB); {args.worlds} Worlds: {rss[-1]:.0f} MB; each further World held "
+              f"+{per_held:.0f} MB (goal <= 150 MB per World process)")
 
     one = processes(1, args.seed, args.repeats, args.seconds)
     two = processes(2, args.seed, args.repeats, args.seconds)
     speedup = [t / o for t, o in zip(two, one, strict=True)]
-    print(f"rendered navigation, same scene in every worker: 1 process {spread(one)} steps/s; "
+    print(f"rendered navigation (300 px), same scene in every worker: 1 process {spread(one)} steps/s; "
           f"2 processes {spread(two)} steps/s; speed-up {statistics.median(two) / statistics.median(one):.2f}x "
           f"(per repeat {spread(speedup, '.2f')}; goal >= 1.9x; {os.cpu_count()} cores)")
     load = os.getloadavg()

@@ -43,6 +43,10 @@ class AssetEntry(BaseModel):
     anchors: list[dict[str, Any]] = []
     collision_hulls: int = 0
     visual_vertices: int = 0
+    visual_triangles: int = 0
+    lod_urdf: str = ""
+    """The same asset with decimated visuals (level of detail for small frames); "" where it has none."""
+    lod_visual_triangles: int = 0
     root: str = ""
     """Folder the relative paths are resolved against (filled in when loaded)."""
     scale: float = 1.0
@@ -51,6 +55,10 @@ class AssetEntry(BaseModel):
     @property
     def urdf_path(self) -> Path:
         return Path(self.root) / self.urdf
+
+    def urdf_for(self, lod: bool) -> Path:
+        """The URDF to load: the level-of-detail one if asked for and built, else the full-detail one."""
+        return Path(self.root) / self.lod_urdf if lod and self.lod_urdf else self.urdf_path
 
     def regions_of(self, kind: str) -> list[dict[str, Any]]:
         return [r for r in self.regions if r["kind"] == kind]

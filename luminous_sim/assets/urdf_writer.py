@@ -10,6 +10,7 @@ import numpy as np
 import trimesh
 
 from luminous_sim.assets.decompose import convex_hull, decompose, is_convex
+from luminous_sim.assets.lod import LOD_SUFFIX, decimate
 from luminous_sim.assets.materials import palette
 from luminous_sim.assets.objio import collision_obj, visual_obj, write_atomic
 from luminous_sim.assets.spec import AssetSpec, Link, Part
@@ -78,34 +79,42 @@ def _inertial(hulls: list[trimesh.Trimesh], mass: float) -> tuple[np.ndarray, np
 
 
 def write_asset(spec: AssetSpec, out_dir: Path, cache_dir: Path) -> dict[str, Any]:
-    """Write `spec` under `out_dir/<Type>/<asset id>/` and return its catalog entry."""
+    """Write `spec` under `out_dir/<Type>/<asset id>/` and return its catalog entry.
+
+    Two URDFs share the links, joints, inertia and collision meshes: `<id>.urdf` with the full-detail
+    visuals and `<id>.lod.urdf` with the decimated ones (`lod.decimate`; a visual too simple to decimate
+    is the same file in both), visual for visual in the same order, so that state visuals keep their index.
+    """
     spec.validate()
     aid = spec.asset_id
     rel_dir = Path(spec.type) / aid
     adir = out_dir / rel_dir
     xml = ['<?xml version="1.0"?>', f'<robot name="{aid}">']
+    lod_xml = list(xml)
     visuals: list[dict[str, Any]] = []
     files: list[str] = []
     origins = link_origins(spec)
     bounds: list[np.ndarray] = []
     n_hulls = 0
     n_vertices = 0
+    n_faces = 0
+    n_lod_faces = 0
     slots: set[str] = set()
     for link in spec.links:
         hulls = [h for p in link.parts if p.collide for h in _hulls(p, cache_dir)]
         n_hulls += len(hulls)
         com, inertia = _inertial(hulls, link.mass)
-        xml.append(f'  <link name="{link.name}">')
-        xml.append(
+        head = [
+            f'  <link name="{link.name}">',
             f'    <contact><lateral_friction value="{FRICTION["lateral"]}"/>'
             f'<rolling_friction value="{FRICTION["rolling"]}"/>'
-            f'<spinning_friction value="{FRICTION["spinning"]}"/></contact>'
-        )
-        xml.append(
+            f'<spinning_friction value="{FRICTION["spinning"]}"/></contact>',
             f'    <inertial><origin xyz="{_vec(com)}" rpy="0 0 0"/><mass value="{_sig(link.mass)}"/>'
             f'<inertia ixx="{_sig(inertia[0, 0])}" ixy="0" ixz="0" '
-            f'iyy="{_sig(inertia[1, 1])}" iyz="0" izz="{_sig(inertia[2, 2])}"/></inertial>'
-        )
+            f'iyy="{_sig(inertia[1, 1])}" iyz="0" izz="{_sig(inertia[2, 2])}"/></inertial>',
+        ]
+        xml += head
+        lod_xml += head
         for index, (slot, state, mesh) in enumerate(_visual_groups(link)):
             slots.add(slot)
             name = f"{link.name}__{slot}" + (f"__{state}" if state else "")
@@ -113,36 +122,48 @@ def write_asset(spec: AssetSpec, out_dir: Path, cache_dir: Path) -> dict[str, An
             write_atomic(adir / fname, visual_obj(mesh))
             files.append(str(rel_dir / fname))
             n_vertices += len(mesh.vertices)
+            n_faces += len(mesh.faces)
+            lod_mesh = decimate(mesh)
+            lod_fname = fname
+            if lod_mesh is not None:
+                lod_fname = f"{name}{LOD_SUFFIX}.obj"
+                write_atomic(adir / lod_fname, visual_obj(lod_mesh))
+                files.append(str(rel_dir / lod_fname))
+            n_lod_faces += len(mesh.faces if lod_mesh is None else lod_mesh.faces)
             rgba = list(palette(slot)[spec.variant % len(palette(slot))])
             if state in HIDDEN_BY_DEFAULT:
                 rgba[3] = 0.0
             else:
                 bounds.append(mesh.bounds + origins[link.name])
-            xml.append(
-                f'    <visual name="{name}"><origin xyz="0 0 0" rpy="0 0 0"/>'
-                f'<geometry><mesh filename="{fname}"/></geometry>'
-                f'<material name="{name}"><color rgba="{_vec(rgba)}"/></material></visual>'
-            )
+            for lines, mesh_file in ((xml, fname), (lod_xml, lod_fname)):
+                lines.append(
+                    f'    <visual name="{name}"><origin xyz="0 0 0" rpy="0 0 0"/>'
+                    f'<geometry><mesh filename="{mesh_file}"/></geometry>'
+                    f'<material name="{name}"><color rgba="{_vec(rgba)}"/></material></visual>'
+                )
             visuals.append({"link": link.name, "index": index, "slot": slot, "state": state})
         cname = f"{link.name}__collision.obj"
         write_atomic(adir / cname, collision_obj(hulls))
         files.append(str(rel_dir / cname))
-        xml.append(f'    <collision><origin xyz="0 0 0" rpy="0 0 0"/><geometry><mesh filename="{cname}"/>'
-                   "</geometry></collision>")
-        xml.append("  </link>")
+        tail = [f'    <collision><origin xyz="0 0 0" rpy="0 0 0"/><geometry><mesh filename="{cname}"/>'
+                "</geometry></collision>", "  </link>"]
+        xml += tail
+        lod_xml += tail
+    tail = []
     for j in spec.joints:
-        xml.append(f'  <joint name="{j.name}" type="{j.kind}">')
-        xml.append(f'    <parent link="{j.parent}"/><child link="{j.child}"/>')
-        xml.append(f'    <origin xyz="{_vec(j.origin)}" rpy="0 0 0"/>')
+        tail.append(f'  <joint name="{j.name}" type="{j.kind}">')
+        tail.append(f'    <parent link="{j.parent}"/><child link="{j.child}"/>')
+        tail.append(f'    <origin xyz="{_vec(j.origin)}" rpy="0 0 0"/>')
         if j.kind != "fixed":
-            xml.append(f'    <axis xyz="{_vec(j.axis)}"/>')
-            xml.append(f'    <limit lower="{_r(j.lower)}" upper="{_r(j.upper)}" effort="100" velocity="2"/>')
-            xml.append('    <dynamics damping="2.0" friction="0.5"/>')
-        xml.append("  </joint>")
-    xml.append("</robot>")
-    urdf = f"{aid}.urdf"
-    write_atomic(adir / urdf, "\n".join(xml) + "\n")
-    files.append(str(rel_dir / urdf))
+            tail.append(f'    <axis xyz="{_vec(j.axis)}"/>')
+            tail.append(f'    <limit lower="{_r(j.lower)}" upper="{_r(j.upper)}" effort="100" velocity="2"/>')
+            tail.append('    <dynamics damping="2.0" friction="0.5"/>')
+        tail.append("  </joint>")
+    tail.append("</robot>")
+    urdf, lod_urdf = f"{aid}.urdf", f"{aid}{LOD_SUFFIX}.urdf"
+    write_atomic(adir / urdf, "\n".join(xml + tail) + "\n")
+    write_atomic(adir / lod_urdf, "\n".join(lod_xml + tail) + "\n")
+    files += [str(rel_dir / urdf), str(rel_dir / lod_urdf)]
     lo = np.min([b[0] for b in bounds], axis=0)
     hi = np.max([b[1] for b in bounds], axis=0)
     return {
@@ -153,6 +174,7 @@ def write_asset(spec: AssetSpec, out_dir: Path, cache_dir: Path) -> dict[str, An
         "description": spec.description,
         "tags": sorted(spec.tags),
         "urdf": str(rel_dir / urdf),
+        "lod_urdf": str(rel_dir / lod_urdf),
         "files": sorted(files),
         "bbox_min": [round(float(x), 4) for x in lo],
         "bbox_max": [round(float(x), 4) for x in hi],
@@ -169,6 +191,8 @@ def write_asset(spec: AssetSpec, out_dir: Path, cache_dir: Path) -> dict[str, An
         "anchors": [_rounded(asdict(a)) for a in spec.anchors],
         "collision_hulls": n_hulls,
         "visual_vertices": n_vertices,
+        "visual_triangles": n_faces,
+        "lod_visual_triangles": n_lod_faces,
     }
 
 

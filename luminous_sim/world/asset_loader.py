@@ -21,6 +21,13 @@ class LoadedAsset:
     joint_index: dict[str, int]
     colors: dict[tuple[str, int], list[float]] = field(default_factory=dict)
     """Current colour of each (link, visual index), alpha excluded from state toggling."""
+    alphas: dict[tuple[str, int], float] = field(default_factory=dict)
+    """Current alpha of each (link, visual index): 0 for a hidden state visual."""
+    last_set: dict[str, int] = field(default_factory=dict)
+    """The visual of each link whose colour was set last: `getVisualShapeData` reports that colour for
+    every visual of the link (what is drawn keeps each visual's own)."""
+    lod: bool = False
+    """Whether the level-of-detail visuals were loaded (what replaces this body, its slices, loads the same)."""
 
 
 def main_slot(entry: AssetEntry) -> str:
@@ -31,15 +38,18 @@ def main_slot(entry: AssetEntry) -> str:
 def load_asset(
     client: BulletClient, entry: AssetEntry, position=(0.0, 0.0, 0.0), yaw: float = 0.0,
     fixed: bool = False, rng: np.random.Generator | None = None, color: tuple[float, float, float] | None = None,
+    lod: bool = False,
 ) -> LoadedAsset:
     """Load `entry` (at its `scale`) at `position` turned by `yaw` (radians about z); with `rng`,
-    randomise its colours; `color` overrides its main material slot."""
-    if not entry.urdf_path.is_file():
-        raise AssetError(f"asset {entry.id}: {entry.urdf_path} is missing; rebuild it with "
+    randomise its colours; `color` overrides its main material slot; `lod` loads its level-of-detail
+    visuals (same links, joints, collision and visual order)."""
+    urdf = entry.urdf_for(lod)
+    if not urdf.is_file():
+        raise AssetError(f"asset {entry.id}: {urdf} is missing; rebuild it with "
                          f"`luminous assets build --types {entry.type}`")
     orn = client.getQuaternionFromEuler([0, 0, yaw])
     body = client.loadURDF(
-        str(entry.urdf_path), list(position), orn, useFixedBase=fixed,
+        str(urdf), list(position), orn, useFixedBase=fixed,
         flags=p.URDF_USE_INERTIA_FROM_FILE | p.URDF_MAINTAIN_LINK_ORDER, globalScaling=entry.scale,
     )
     link_index = {"base": -1}
@@ -48,12 +58,15 @@ def load_asset(
         info = client.getJointInfo(body, j)
         link_index[info[12].decode()] = j
         joint_index[info[1].decode()] = j
-    loaded = LoadedAsset(entry, body, link_index, joint_index)
+    loaded = LoadedAsset(entry, body, link_index, joint_index, lod=lod and bool(entry.lod_urdf))
     palettes = entry.palettes
     for vis in entry.visuals:
         choices = palettes[vis["slot"]]
         idx = entry.variant % len(choices) if rng is None else int(rng.integers(len(choices)))
         loaded.colors[(vis["link"], vis["index"])] = list(choices[idx])
+    for vis in entry.visuals:
+        key = (vis["link"], vis["index"])
+        loaded.alphas[key] = 0.0 if vis["state"] in HIDDEN_STATES else loaded.colors[key][3]
     if color is not None:
         slot = main_slot(entry)
         for vis in entry.visuals:
@@ -65,13 +78,19 @@ def load_asset(
     return loaded
 
 
+HIDDEN_STATES = ("on", "dirty", "open")
+"""State visuals hidden when an asset is loaded (the URDF gives them alpha 0)."""
+
+
 def _default_alpha(state: str | None) -> float:
-    return 0.0 if state in ("on", "dirty", "open") else 1.0
+    return 0.0 if state in HIDDEN_STATES else 1.0
 
 
 def set_visual_alpha(client: BulletClient, loaded: LoadedAsset, link: str, index: int, alpha: float) -> None:
     """Show (alpha 1) or hide (alpha 0: gone from RGB and segmentation) one visual of an asset."""
     rgba = list(loaded.colors[(link, index)][:3]) + [alpha]
+    loaded.alphas[(link, index)] = alpha
+    loaded.last_set[link] = index
     client.changeVisualShape(loaded.body, loaded.link_index[link], shapeIndex=index, rgbaColor=rgba)
 
 

@@ -19,3 +19,18 @@ class WorldConfig:
     min_visible_pixels: int = 10
     settle_steps: int = 240
     interaction_steps: int = 60
+    lod_max_size: int = 128
+    """Frames whose larger side is at most this many pixels render the assets' decimated level-of-detail
+    visuals (collision and physics are the same); larger frames, ALFRED's 300x300 included, the full
+    detail. 0 turns the level of detail off."""
+    cull: bool = True
+    """Leave object links wholly outside the camera's view out of each render (the frame is the same pixel
+    for pixel; see `world.culling`)."""
+    structure_last: bool = True
+    """Paint the floor and walls after the objects (the same frame, less shading; see
+    `scene_builder.paint_structure_last`)."""
+
+    @property
+    def use_lod(self) -> bool:
+        """Whether this World loads the level-of-detail visuals."""
+        return max(self.width, self.height) <= self.lod_max_size

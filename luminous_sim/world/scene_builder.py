@@ -29,6 +29,9 @@ class BuiltScene:
     objects: dict[str, LoadedAsset]
     floor: int
     walls: list[int] = field(default_factory=list)
+    painted_structure: list[int] = field(default_factory=list)
+    """Visual-only copies of the floor slabs and walls, made after the objects so that TinyRenderer paints
+    them last (see `paint_structure_last`); the physical slabs and walls keep alpha 0."""
 
     def body_of(self, object_id: str) -> int:
         return self.objects[object_id].body
@@ -48,6 +51,29 @@ def _box(client: BulletClient, center, size, yaw: float, rgba) -> int:
     shape = client.createCollisionShape(p.GEOM_BOX, halfExtents=half)
     visual = client.createVisualShape(p.GEOM_BOX, halfExtents=half, rgbaColor=list(rgba))
     return client.createMultiBody(0, shape, visual, list(center), client.getQuaternionFromEuler([0, 0, yaw]))
+
+
+def paint_structure_last(client: BulletClient, bodies: list[int]) -> list[int]:
+    """Give each visible structure box a visual-only copy (no collision, no mass) made now, after the objects,
+    and hide the original's visual; the copies' ids, in order.
+
+    TinyRenderer draws visuals in the order they were made and shades every pixel that passes the depth
+    test, so the floor and walls, made first, were shaded in full and then painted over by everything in
+    front of them. Drawn last, their hidden pixels fail the depth test and are never shaded: about 8% of a
+    300x300 frame's CPU time, with the same pixels (tests/world/test_culling.py). The physical bodies, their
+    ids and the physics are unchanged; a frame's segmentation shows a copy's id where it showed the original's
+    (neither is an object).
+    """
+    copies = []
+    for body in bodies:
+        shape = client.getVisualShapeData(body)[0]
+        if shape[7][3] == 0:
+            continue
+        pos, orn = client.getBasePositionAndOrientation(body)
+        visual = client.createVisualShape(p.GEOM_BOX, halfExtents=[d / 2 for d in shape[3]], rgbaColor=list(shape[7]))
+        copies.append(client.createMultiBody(0, -1, visual, pos, orn))
+        client.changeVisualShape(body, -1, rgbaColor=[*shape[7][:3], 0.0])
+    return copies
 
 
 def _apply_states(client: BulletClient, obj: SceneObject, loaded: LoadedAsset) -> None:
@@ -94,8 +120,10 @@ def floor_rectangles(poly) -> list[tuple[tuple[float, float], tuple[float, float
 
 
 def build_scene(scene: Scene, catalog: Catalog | None = None, client: BulletClient | None = None,
-                settle_steps: int = 240) -> BuiltScene:
-    """Create the room and objects in `client` (a new DIRECT one by default) and let them settle."""
+                settle_steps: int = 240, lod: bool = False, structure_last: bool = True) -> BuiltScene:
+    """Create the room and objects in `client` (a new DIRECT one by default) and let them settle; `lod`
+    loads the assets' level-of-detail visuals, `structure_last` paints the floor and walls after the objects
+    (`paint_structure_last`); neither changes the physics."""
     catalog = catalog or default_catalog()
     client = client or new_client()
     room = scene.room
@@ -106,19 +134,22 @@ def build_scene(scene: Scene, catalog: Catalog | None = None, client: BulletClie
     t = room.wall_thickness
     floor = _box(client, ((minx + maxx) / 2, (miny + maxy) / 2, -0.15),
                  (maxx - minx + 2 * t, maxy - miny + 2 * t, 0.1), 0.0, (1, 1, 1, 0))
+    slabs = []
     for lo, hi in floor_rectangles(room.polygon().buffer(t / 2, join_style="mitre")):
         slab = _box(client, ((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, -0.05), (hi[0] - lo[0], hi[1] - lo[1], 0.1),
                     0.0, floor_rgba)
         client.changeDynamics(slab, -1, lateralFriction=0.9)
+        slabs.append(slab)
     walls = [_box(client, w.center, w.size, w.yaw, wall_rgba) for w in room.wall_boxes()]
     objects: dict[str, LoadedAsset] = {}
     for obj in scene.objects:
         entry = catalog.for_object(obj)
         loaded = load_asset(client, entry, obj.position, obj.yaw, fixed=obj.fixed,
-                            rng=np.random.default_rng(obj.color_seed), color=obj.color)
+                            rng=np.random.default_rng(obj.color_seed), color=obj.color, lod=lod)
         _apply_states(client, obj, loaded)
         objects[obj.id] = loaded
-    built = BuiltScene(client, scene, objects, floor, walls)
+    painted = paint_structure_last(client, slabs + walls) if structure_last else []
+    built = BuiltScene(client, scene, objects, floor, walls, painted)
     settle(built, settle_steps)
     return built
 

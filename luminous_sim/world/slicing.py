@@ -31,5 +31,5 @@ def slice_body(world: World, oid: str, sliced_type: str | None) -> None:
     for i, (sx, sy, sz, syaw) in enumerate(spec["poses"]):
         wpos, _ = c.multiplyTransforms(pos, orn, [sx, sy, sz + 0.002], [0, 0, 0, 1])
         yaw = c.getEulerFromQuaternion(orn)[2] + syaw
-        new = load_asset(c, slice_entry, wpos, yaw, rng=np.random.default_rng(i))
+        new = load_asset(c, slice_entry, wpos, yaw, rng=np.random.default_rng(i), lod=loaded.lod)
         world.built.objects[f"{oid}|{sliced_type}_{i + 1}"] = new

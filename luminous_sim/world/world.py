@@ -48,11 +48,15 @@ class World:
         from luminous_sim.world.client import new_client, resolve_renderer
 
         client = new_client(renderer=resolve_renderer(self.config.renderer))
-        self.built: BuiltScene = build_scene(scene, self.catalog, client=client, settle_steps=self.config.settle_steps)
+        self.built: BuiltScene = build_scene(scene, self.catalog, client=client, settle_steps=self.config.settle_steps,
+                                             lod=self.config.use_lod, structure_last=self.config.structure_last)
         self.client = self.built.client
         self.nav = NavGrid.from_scene(scene)
         self.agent = agent or self.default_start()
         self._facts: FrameFacts | None = None
+        from luminous_sim.world.culling import FrustumCuller
+
+        self._culler = FrustumCuller(self.client, self.built.objects) if self.config.cull else None
         self.last = StepResult(True, "", {"action": "Initialize"})
         self.interactions = Interactions(self)
         self._view = LiveView(self)
@@ -170,7 +174,7 @@ class World:
             target = eye + np.array(pose.view_direction())
             c = self.config
             self._facts = FrameFacts(render(self.client, eye, target, width=c.width, height=c.height, fov=c.fov,
-                                            near=0.05, far=20.0))
+                                            near=0.05, far=20.0, culler=self._culler))
         return self._facts
 
     def frame(self) -> Frame:
