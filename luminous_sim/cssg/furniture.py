@@ -28,6 +28,9 @@ WINDOW_BEHIND_COST = 2.0
 """Cost of a cell with a window behind, for a piece something is to hang above (the structure weight)."""
 WRONG_HEADING_PENALTY = 0.5
 """metres of cost for standing at a heading other than the preferred one."""
+REACHED_SHARE = 0.95
+"""Share of the free floor (the agent's grid points clear of everything on the floor) that must stay connected
+to the rest: ProcTHOR's "all floor space connected", with a little slack for pockets behind furniture."""
 WORK_ZONE = 0.7
 """metres kept free in front of every fixture (counters, sink, stove, fridge, toilet, bathtub)."""
 
@@ -77,10 +80,15 @@ class FloorContext:
 
     def keeps_everything_reachable(self, fp, reach: float = REACH) -> bool:
         """Whether adding footprint `fp` leaves every floor piece (and itself, within `reach`) within reach of
-        walkable floor."""
+        walkable floor, and no more than 1 - REACHED_SHARE of the free floor cut off from the rest (a bed
+        across an L-shaped room's second wing); a room already below that may lose no more."""
         new = FloorPiece.of("new", self.grid._cells(fp), reach)
-        walk = self.walkable(self.clear & ~self.lattice.near(fp))
-        return bool(walk.any()) and all(p.reachable(walk) for p in self.pieces + [new])
+        clear = self.clear & ~self.lattice.near(fp)
+        walk = self.walkable(clear)
+        if not walk.any() or not all(p.reachable(walk) for p in self.pieces + [new]):
+            return False
+        share = self.lattice.connected_share(clear)
+        return share >= REACHED_SHARE or share >= self.lattice.connected_share(self.clear)
 
     def commit(self, object_id: str, fp, reach: float = REACH) -> None:
         piece = FloorPiece.of(object_id, self.grid._cells(fp), reach)
