@@ -53,6 +53,21 @@ def test_armchairs_face_the_seating_group():
 def test_side_tables_stand_at_the_bed_head():
     met = _checks("Bedroom", "side table at the bed's head")
     assert len(met) >= 6 and all(met)
+    assert ("at_head_of", "Bed") in _implicit("Bedroom", "SideTable")
+
+
+def test_the_tv_stand_stands_across_from_the_sofa():
+    assert ("across_from", "Sofa") in _implicit("LivingRoom", "TVStand")
+
+
+def _implicit(room_type: str, subject: str) -> set[tuple[str, str]]:
+    """(relation, anchor type) of the implicit rules a default `subject` gets in rooms of this type."""
+    out = set()
+    for seed in range(10):
+        reqs = {r.name: r for r in requests_from_cdf(empty_cdf(room_type), room_type, np.random.default_rng(seed))}
+        out |= {(rel.relation, reqs[rel.anchor].type) for r in reqs.values() if r.type == subject
+                for rel in r.rels if not rel.explicit and rel.anchor in reqs}
+    return out
 
 
 def test_no_sofa_against_the_dining_table():
@@ -115,3 +130,47 @@ def test_natural_rules_over_many_seeds(room_type):
         total += len(checks)
         assert floor_reach(scene).share >= 0.9
     assert met >= 0.95 * total
+
+
+def _field(relation: str, subject_type: str, anchor_type: str):
+    """The relation's cost and heading fields in a 6 x 6 m room, the anchor at its centre facing +y."""
+    from shapely.geometry import box
+
+    from luminous_sim.assets.catalog import default_catalog
+    from luminous_sim.cssg.grid import FloorGrid
+    from luminous_sim.cssg.scores import Placed2D, directional_wall_distance, relation_field
+
+    catalog = default_catalog()
+    grid = FloorGrid.from_polygon(box(0, 0, 6, 6))
+    subject, anchor_entry = catalog.of_type(subject_type)[0], catalog.of_type(anchor_type)[0]
+    anchor = Placed2D(anchor_type, 3.0, 3.0, 0.0, anchor_entry)
+    cost, heading = relation_field(relation, grid, subject, anchor, directional_wall_distance(grid), (3.0, 3.0))
+    return grid, anchor, cost, heading
+
+
+def test_at_head_of_is_beside_the_head_end_only():
+    grid, bed, cost, _ = _field("at_head_of", "SideTable", "Bed")
+    hw, hd = bed.half()
+    side = bed.x + hw + 0.35
+    head, foot = grid.cell(side, bed.center()[1] - hd + 0.25), grid.cell(side, bed.center()[1] + hd - 0.25)
+    assert cost[head] < 0.2 < cost[foot]
+
+
+def test_across_from_is_in_front_of_the_anchor_and_faces_it():
+    grid, sofa, cost, heading = _field("across_from", "TVStand", "Sofa")
+    front = grid.cell(sofa.x, sofa.y + sofa.half()[1] + 2.0)
+    beside = grid.cell(sofa.x + sofa.half()[0] + 1.5, sofa.y)
+    behind = grid.cell(sofa.x, sofa.y - sofa.half()[1] - 1.5)
+    assert cost[front] < 0.2 < min(cost[beside], cost[behind])
+    assert heading[front] == 2  # turned towards -y, to the sofa
+
+
+def test_face_turns_square_to_the_side_it_stands_at():
+    grid, table, cost, heading = _field("face", "Chair", "DiningTable")
+    hw, hd = table.half()
+    c = table.center()
+    # at the long side near its end: turned to the long side (-y), not towards the table's centre (-x)
+    at_side = grid.cell(c[0] + hw - 0.3, c[1] + hd + 0.3)
+    assert cost[at_side] < 0.15 and heading[at_side] == 2
+    off_corner = grid.cell(c[0] + hw + 0.3, c[1] + hd + 0.3)
+    assert cost[off_corner] > 0.15
