@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
+from contextlib import contextmanager
 
 import numpy as np
 from PIL import Image, ImageDraw, ImageFont
@@ -33,8 +35,9 @@ def top_down(built: BuiltScene, px_per_m: int = 90, labels: bool = True, grid: n
     fov = math.degrees(2 * math.atan(span_y / 2 / height))
     client = built.client
     eye, target = (cx, cy, height), (cx, cy, 0.0)
-    frame = render(client, eye, target, up=(0, 1, 0), width=w, height=h, fov=fov, near=height - 3.5,
-                   far=height + 1.0)
+    with _overhead_away(built):  # seen from above, through the ceiling, and the room alone
+        frame = render(client, eye, target, up=(0, 1, 0), width=w, height=h, fov=fov, near=height - 3.5,
+                       far=height + 1.0)
     img = Image.fromarray(frame.rgb)
     draw = ImageDraw.Draw(img)
     view = np.array(client.computeViewMatrix(eye, target, [0, 1, 0])).reshape(4, 4)
@@ -51,6 +54,20 @@ def top_down(built: BuiltScene, px_per_m: int = 90, labels: bool = True, grid: n
     if labels:
         _draw_labels(draw, built, view, proj, w, h)
     return img
+
+
+@contextmanager
+def _overhead_away(built: BuiltScene) -> Iterator[None]:
+    """Move the ceiling and the outdoors far below the room for a while, and back."""
+    client = built.client
+    poses = [client.getBasePositionAndOrientation(b) for b in built.overhead]
+    for b, (pos, orn) in zip(built.overhead, poses, strict=True):
+        client.resetBasePositionAndOrientation(b, [pos[0], pos[1], pos[2] - 1000.0], orn)
+    try:
+        yield
+    finally:
+        for b, (pos, orn) in zip(built.overhead, poses, strict=True):
+            client.resetBasePositionAndOrientation(b, pos, orn)
 
 
 LABEL_SHIFTS = ((0, 0), (0, 11), (0, -11), (0, 22), (0, -22))
