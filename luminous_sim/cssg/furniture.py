@@ -232,7 +232,7 @@ def place_piece(ctx: FloorContext, req: Request, tries: int = 6) -> Placed2D | N
     rejected: dict[tuple, np.ndarray] = {}
     redraws = 0
     # a piece the room must have (its bed) may cut floor off where it cannot help it: the least it can
-    essential = req.explicit or room_defaults(draft.shell.room_type)["furniture"].get(req.type, (0, 0))[0] >= 1
+    essential = req.explicit or req.type in room_defaults(draft.shell.room_type).get("essential", ())
     fallback: tuple | None = None
     attempt = -1
     while attempt < tries - 1:

@@ -70,6 +70,18 @@ def _ray(fp: Polygon, yaw: float, length: float) -> LineString:
     return LineString([c, c + length * _front(yaw)])
 
 
+def _front_strip(fp: Polygon, yaw: float, length: float) -> Polygon:
+    """What the middle half of a piece's front looks out on, `length` metres ahead (a sofa's view)."""
+    front = _front(yaw)
+    side = np.array([front[1], -front[0]])
+    c = np.array(fp.centroid.coords[0])
+    rel = [np.array(p) - c for p in fp.exterior.coords]
+    half = max(abs(float(np.dot(r, side))) for r in rel) / 2
+    ahead = max(float(np.dot(r, front)) for r in rel)
+    a, b = c + ahead * front, c + (ahead + length) * front
+    return Polygon([a - half * side, a + half * side, b + half * side, b - half * side])
+
+
 def _back_gap(fp: Polygon, yaw: float, room: Polygon) -> float:
     """Distance (m) from the middle of a footprint's back edge to the room's outline."""
     front = _front(yaw)
@@ -96,8 +108,8 @@ def functional_checks(scene: Scene, catalog: Catalog | None = None) -> list[Chec
     targets = of(SOFA_TARGETS)
     if targets:
         for o, fp in of({"Sofa"}):
-            ray = _ray(fp, o.yaw, VIEW_RAY)
-            out.append(Check("sofa facing the TV or coffee table", o.id, any(ray.intersects(t) for _, t in targets)))
+            view = _front_strip(fp, o.yaw, VIEW_RAY)
+            out.append(Check("sofa facing the TV or coffee table", o.id, any(view.intersects(t) for _, t in targets)))
     group = of(GROUP)
     for o, fp in of({"ArmChair"}):
         if group:
