@@ -12,6 +12,12 @@ interact with that a sight line from where the agent stands meets (world/sightli
 median time of one layout sample, of one valid scene (resamples included), and of a valid scene + PyBullet
 build + settle. With --alfred-rooms the rooms are the shells converted from AI2-THOR's FloorPlans (seed i
 uses room i modulo 30) instead of procedural ones; with --empty-cdf the CDF asks only for the room type.
+
+Then the natural-room measures (cssg/natural.py), each over the objects it applies to: functional groups
+(seats at a table facing it, sofa facing the TV or coffee table, armchairs facing the seating group,
+bedside tables at the bed's head, sofa clear of a dining table, drawer units against a wall), the free
+floor the agent reaches (pooled share, scenes with >= 95%, the largest region cut off), furniture square
+to the room, and small objects on plausible hosts.
 """
 
 from __future__ import annotations
@@ -69,12 +75,14 @@ def run(room_type: str, n: int, physics: bool, grid_dir: Path | None, alfred: bo
     rooms = _alfred_rooms(room_type) if alfred else []
     catalog = default_catalog()
     rows = {}
+    natural: dict[str, dict] = {}
     tops = []
     for method in ("cssg", "baseline"):
         exp = imp = req_ok = req_total = pen_scenes = moved = fell = infeasible = soft = soft_total = 0
         targets = unseen = 0
         exp_total = imp_total = 0
         sample_times, scene_times, full_times = [], [], []
+        nat = natural[method] = {"checks": {}, "free": 0, "reached": 0, "ok": 0, "scenes": 0, "cut": 0.0}
         for seed in range(n):
             t0 = time.perf_counter()
             if method == "cssg":
@@ -91,6 +99,7 @@ def run(room_type: str, n: int, physics: bool, grid_dir: Path | None, alfred: bo
                 draft, report = sample_uniform(doc, shell, rng, catalog)
                 g = Generated(draft.to_scene("uniform", seed), report)
                 sample_times.append(time.perf_counter() - t0)
+            _natural(g.scene, catalog, nat)
             rels = g.report.relations
             exp += sum(r.met for r in rels if r.explicit and r.hard)
             exp_total += sum(1 for r in rels if r.explicit and r.hard)
@@ -130,6 +139,7 @@ def run(room_type: str, n: int, physics: bool, grid_dir: Path | None, alfred: bo
         print(f"{'objects fell while settling':34}{c[8]:>22}{b[8]:>22}")
         print(f"{'objects to interact with, seen':34}{_rate(c[15], c[16]):>22}{_rate(b[15], b[16]):>22}")
     print(f"{'infeasible (no valid layout)':34}{c[9]:>22}{'-':>22}")
+    _print_natural(natural["cssg"], natural["baseline"])
 
     def med(xs: list[float]) -> str:
         return f"{1000 * statistics.median(xs):.0f} ms" if xs else "n/a"
@@ -140,6 +150,33 @@ def run(room_type: str, n: int, physics: bool, grid_dir: Path | None, alfred: bo
         print(f"{'median valid layout+build+settle':34}{med(c[12]):>22}{med(b[12]):>22}")
     if grid_dir is not None and tops:
         _grid(tops, grid_dir / f"cssg_{room_type}.png")
+
+
+def _natural(scene, catalog, acc: dict) -> None:
+    """Add one scene's natural-room measures to `acc`."""
+    from luminous_sim.cssg.natural import alignment_checks, floor_reach, functional_checks, host_checks
+
+    for c in functional_checks(scene, catalog) + alignment_checks(scene) + host_checks(scene):
+        hit = acc["checks"].setdefault(c.rule, [0, 0])
+        hit[0] += c.met
+        hit[1] += 1
+    fr = floor_reach(scene, catalog)
+    acc["free"] += fr.free
+    acc["reached"] += fr.reached
+    acc["scenes"] += 1
+    acc["ok"] += fr.share >= 0.95
+    acc["cut"] = max(acc["cut"], fr.largest_cut_off)
+
+
+def _print_natural(c: dict, b: dict) -> None:
+    print("natural rooms")
+    for rule in sorted(set(c["checks"]) | set(b["checks"])):
+        cc, bb = c["checks"].get(rule, (0, 0)), b["checks"].get(rule, (0, 0))
+        print(f"{'  ' + rule:34}{_rate(*cc):>22}{_rate(*bb):>22}")
+    print(f"{'  free floor reached (pooled)':34}{_rate(c['reached'], c['free']):>22}"
+          f"{_rate(b['reached'], b['free']):>22}")
+    print(f"{'  scenes reaching >= 95% of it':34}{_rate(c['ok'], c['scenes']):>22}{_rate(b['ok'], b['scenes']):>22}")
+    print(f"{'  largest region cut off':34}{c['cut']:>20.2f}m2{b['cut']:>20.2f}m2")
 
 
 def _grid(generated: list, out: Path) -> None:
@@ -168,7 +205,7 @@ def _grid(generated: list, out: Path) -> None:
 
 def main() -> None:
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--n", type=int, default=20, help="scenes per room type and method")
+    ap.add_argument("--n", "--seeds", type=int, default=20, help="scenes (seeds) per room type and method")
     ap.add_argument("--rooms", nargs="*", default=list(EXAMPLES))
     ap.add_argument("--no-physics", action="store_true")
     ap.add_argument("--grid-dir", type=Path, default=Path("out/bench"))

@@ -74,7 +74,7 @@ def sample_uniform(cdf: ChallengeDefinition, shell: RoomShell, rng: np.random.Ge
             if ok:
                 by_name[req.name] = draft.placed[-1].obj.id
         elif req.layer == "object":
-            ok = place_object(draft, free, by_name, occupied)
+            ok = place_object(draft, free, by_name, occupied, natural=False)
         else:
             ok = place_wall_piece(draft, free, by_name, relations=False)
             if ok:

@@ -21,6 +21,7 @@ from luminous_sim.cssg.scores import (
     directional_wall_distance,
     relation_field,
 )
+from luminous_sim.cssg.tables import room_defaults
 from luminous_sim.cssg.walls import ABOVE_JITTER, BEHIND_SLACK, MARGIN, window_strips
 from luminous_sim.scene import REACH, blocks_agent, footprint, front_zone, reach_of
 
@@ -28,6 +29,9 @@ WINDOW_BEHIND_COST = 2.0
 """Cost of a cell with a window behind, for a piece something is to hang above (the structure weight)."""
 WRONG_HEADING_PENALTY = 0.5
 """metres of cost for standing at a heading other than the preferred one."""
+REACHED_SHARE = 0.95
+"""Share of the free floor (the agent's grid points clear of everything on the floor) that must stay connected
+to the rest: ProcTHOR's "all floor space connected", with a little slack for pockets behind furniture."""
 WORK_ZONE = 0.7
 """metres kept free in front of every fixture (counters, sink, stove, fridge, toilet, bathtub)."""
 
@@ -75,12 +79,19 @@ class FloorContext:
         `clear` (an array over `lattice`), where the agent can walk."""
         return self.lattice.walkable(clear)
 
-    def keeps_everything_reachable(self, fp, reach: float = REACH) -> bool:
+    def keeps_everything_reachable(self, fp, reach: float = REACH, cut_off: bool = False) -> bool:
         """Whether adding footprint `fp` leaves every floor piece (and itself, within `reach`) within reach of
-        walkable floor."""
+        walkable floor, and (unless `cut_off` may be) no more than 1 - REACHED_SHARE of the free floor cut off
+        from the rest (a bed across an L-shaped room's second wing); a room already below that may lose no more."""
         new = FloorPiece.of("new", self.grid._cells(fp), reach)
-        walk = self.walkable(self.clear & ~self.lattice.near(fp))
-        return bool(walk.any()) and all(p.reachable(walk) for p in self.pieces + [new])
+        clear = self.clear & ~self.lattice.near(fp)
+        walk = self.walkable(clear)
+        if not walk.any() or not all(p.reachable(walk) for p in self.pieces + [new]):
+            return False
+        if cut_off:
+            return True
+        share = self.lattice.connected_share(clear)
+        return share >= REACHED_SHARE or share >= self.lattice.connected_share(self.clear)
 
     def commit(self, object_id: str, fp, reach: float = REACH) -> None:
         piece = FloorPiece.of(object_id, self.grid._cells(fp), reach)
@@ -193,6 +204,12 @@ def hard_relations_met(ctx: FloorContext, req: Request, entry, x: float, y: floa
     return True
 
 
+REACH_REDRAWS = 12
+"""Draws of one piece that may block the agent's way (or cut floor off) before they use up its tries."""
+REJECT_CELLS = 3
+"""Cells either side of a draw that blocked the way that are not drawn again (at that heading)."""
+
+
 def place_piece(ctx: FloorContext, req: Request, tries: int = 6) -> Placed2D | None:
     """Place one furniture request; None if no variant fits anywhere.
 
@@ -212,12 +229,21 @@ def place_piece(ctx: FloorContext, req: Request, tries: int = 6) -> Placed2D | N
             fields[key] = score(ctx, req, entry), np.stack([ctx.grid.feasible(entry, h) for h in HEADINGS])
         return fields[key]
 
-    for attempt in range(tries):
+    rejected: dict[tuple, np.ndarray] = {}
+    redraws = 0
+    # a piece the room must have (its bed) may cut floor off where it cannot help it: the least it can
+    essential = req.explicit or req.type in room_defaults(draft.shell.room_type).get("essential", ())
+    fallback: tuple | None = None
+    attempt = -1
+    while attempt < tries - 1:
+        attempt += 1
         if attempt == tries - 1 and len(variants) > 1:  # the variant that fits best (a smaller table)
             entry = min(variants, key=lambda e: _cheapest(*field_of(e)))
         else:
             entry = variants[int(rng.integers(len(variants)))]
         (cost, heading), feas = field_of(entry)
+        if _entry_key(entry) in rejected:
+            feas = feas & ~rejected[_entry_key(entry)]
         if not feas.any():
             continue
         pick = _draw(cost, heading, feas, rng, cheapest=attempt == tries - 1)
@@ -226,18 +252,42 @@ def place_piece(ctx: FloorContext, req: Request, tries: int = 6) -> Placed2D | N
         # early draws must also honour the implicit rules; later ones only the CDF's hard relations
         if attempt < tries - 1 and not hard_relations_met(ctx, req, entry, x, y, yaw, implicit=attempt < tries // 2):
             continue
-        if not ctx.keeps_everything_reachable(footprint(entry, x, y, yaw), reach_of(entry, -entry.bbox_min[2])):
+        fp, reach = footprint(entry, x, y, yaw), reach_of(entry, -entry.bbox_min[2])
+        if not ctx.keeps_everything_reachable(fp, reach):
+            # not here, nor right beside here; and a draw that would block the way does not use up a try
+            mask = rejected.setdefault(_entry_key(entry), np.zeros(feas.shape, dtype=bool))
+            mask[k, max(r - REJECT_CELLS, 0):r + REJECT_CELLS + 1, max(c - REJECT_CELLS, 0):c + REJECT_CELLS + 1] = True
+            if redraws < REACH_REDRAWS:
+                redraws += 1
+                attempt -= 1
+            if essential and ctx.keeps_everything_reachable(fp, reach, cut_off=True) and (
+                    req.explicit or hard_relations_met(ctx, req, entry, x, y, yaw, implicit=True)):
+                share = ctx.lattice.connected_share(ctx.clear & ~ctx.lattice.near(fp))
+                if fallback is None or share > fallback[0]:
+                    fallback = (share, entry, x, y, yaw)
             continue
-        if not req.explicit and not hard_relations_met(ctx, req, entry, x, y, yaw, implicit=True):
-            return None  # a default piece that cannot follow its rules here is better left out
-        obj = draft.add(entry, x, y, -entry.bbox_min[2], yaw, "furniture", fixed=True, name=req.name,
-                        states=req.states, color=req.colour())
-        ctx.commit(obj.id, draft.placed[-1].footprint, reach_of(entry, obj.position[2]))
-        placed = Placed2D(req.type, x, y, yaw, entry)
-        ctx.placed[req.name] = placed
-        ctx.placed[obj.id] = placed
-        return placed
+        placed = _put(ctx, req, entry, x, y, yaw)
+        if placed is not None or fallback is None:
+            return placed
+        break
+    if fallback is not None:  # a room too small to keep all its floor connected still gets its bed
+        return _put(ctx, req, *fallback[1:])
     return None
+
+
+def _put(ctx: FloorContext, req: Request, entry, x: float, y: float, yaw: float) -> Placed2D | None:
+    """Add a piece where it was drawn (None: a default piece that breaks one of its implicit rules there, which
+    is better left out)."""
+    if not req.explicit and not hard_relations_met(ctx, req, entry, x, y, yaw, implicit=True):
+        return None
+    draft = ctx.draft
+    obj = draft.add(entry, x, y, -entry.bbox_min[2], yaw, "furniture", fixed=True, name=req.name,
+                    states=req.states, color=req.colour())
+    ctx.commit(obj.id, draft.placed[-1].footprint, reach_of(entry, obj.position[2]))
+    placed = Placed2D(req.type, x, y, yaw, entry)
+    ctx.placed[req.name] = placed
+    ctx.placed[obj.id] = placed
+    return placed
 
 
 def _cheapest(field: tuple[np.ndarray, np.ndarray | None], feas: np.ndarray) -> float:

@@ -60,6 +60,16 @@ class Lattice:
             out &= ~self.near(fp)
         return out
 
+    def connected_share(self, open_: np.ndarray) -> float:
+        """Share of the open points in the largest 4-connected part (1.0 when none is open): the free floor
+        the agent reaches, the rest being dead zones it cannot walk into."""
+        total = int(open_.sum())
+        if total == 0:
+            return 1.0
+        image = np.zeros(self.shape, dtype=bool)
+        image[self.ij[:, 0], self.ij[:, 1]] = open_
+        return int(largest_part(image).sum()) / total
+
     def walkable(self, open_: np.ndarray) -> np.ndarray:
         """Fine-grid mask of the cells under the open points of the largest 4-connected part."""
         image = np.zeros(self.shape, dtype=bool)

@@ -12,7 +12,7 @@ from shapely.geometry import Polygon
 
 from luminous_sim.cssg.draft import Placed, SceneDraft
 from luminous_sim.cssg.requests import Request
-from luminous_sim.cssg.tables import supports_for
+from luminous_sim.cssg.tables import host_weight, supports_for
 from luminous_sim.cssg.walls import clashes
 from luminous_sim.scene import (
     RegionSpot,
@@ -32,13 +32,15 @@ MAX_FILL = 0.85
 """Share of a region that footprints may cover before the region counts as full."""
 
 
-def _hosts(draft: SceneDraft, req: Request, by_name: dict[str, str]) -> tuple[list[Placed], str | None]:
-    """Candidate receptacles and the region kind wanted ("surface" for on, "volume" for in)."""
+def _hosts(draft: SceneDraft, req: Request, by_name: dict[str, str],
+           natural: bool = True) -> tuple[list[Placed], str | None]:
+    """Candidate receptacles and the region kind wanted ("surface" for on, "volume" for in); with `natural`,
+    for a default object, not those the placement table rules out for the type (`tables.host_weight` 0)."""
     support = next((r for r in req.rels if r.relation in ("on", "in")), None)
     if support is not None:
         return draft.referents(by_name.get(support.anchor or "")), (
             "surface" if support.relation == "on" else "volume")
-    allowed = supports_for(req.type)
+    allowed = {t for t in supports_for(req.type) if not natural or req.explicit or host_weight(req.type, t) > 0}
     # default objects never go in wall-mounted cabinets: nobody standing on the floor could see them there
     return [p for p in draft.placed if p.obj.type in allowed and p.obj.layer not in ("object", "decoration")], None
 
@@ -121,10 +123,25 @@ def _eligible(draft: SceneDraft, entry, hosts: list[Placed], kind: str | None) -
     return draft.memo[key]
 
 
+def _draw_spot(spots: list[RegionSpot], object_type: str, by_frequency: bool, rng: np.random.Generator) -> int:
+    """Index of a spot drawn uniformly or (for an object the CDF does not put anywhere) with each host type as
+    likely as ALFRED's scenes put this type there (`tables.host_weight`), shared among that host's spots."""
+    if not by_frequency:
+        return int(rng.integers(len(spots)))
+    per_host: dict[str, int] = {}
+    for s in spots:
+        per_host[s.host.id] = per_host.get(s.host.id, 0) + 1
+    w = np.array([host_weight(object_type, s.host.type) / per_host[s.host.id] for s in spots])
+    if not w.any():  # a CDF object with nowhere better to go (a baseball bat in a room with only a bed)
+        w = np.array([1.0 / per_host[s.host.id] for s in spots])
+    return int(min(np.searchsorted(np.cumsum(w), rng.random() * w.sum(), side="right"), len(spots) - 1))
+
+
 def place_object(draft: SceneDraft, req: Request, by_name: dict[str, str],
-                 occupied: dict[tuple[str, str], list[Polygon]]) -> bool:
-    """Place one object request; False if no compatible region has room for it."""
-    hosts, kind = _hosts(draft, req, by_name)
+                 occupied: dict[tuple[str, str], list[Polygon]], natural: bool = True) -> bool:
+    """Place one object request; False if no compatible region has room for it. Without `natural` (the
+    uniform baseline), every compatible region is as likely as any other."""
+    hosts, kind = _hosts(draft, req, by_name, natural)
     facing = _facing_point(draft, req, by_name)
     variants = req.variants(draft.catalog)
     for _ in range(6):
@@ -134,7 +151,7 @@ def place_object(draft: SceneDraft, req: Request, by_name: dict[str, str],
         spots = _eligible(draft, entry, hosts, kind)
         if not spots:
             continue
-        spot = spots[int(draft.rng.integers(len(spots)))]
+        spot = spots[_draw_spot(spots, req.type, natural and kind is None, draft.rng)]
         key = (spot.host.id, spot.name)
         if key not in occupied:  # whatever already stands there (burners on a counter) takes room
             occupied[key] = [p.footprint for p in draft.placed if p.obj.parent == spot.host.id]

@@ -14,7 +14,7 @@ import numpy as np
 from luminous_sim.cdf.graph import oriented_relations, resolve_order
 from luminous_sim.cdf.relations import STRUCTURE_ELEMENTS
 from luminous_sim.cdf.schema import ChallengeDefinition
-from luminous_sim.cssg.tables import generation_layer, placement, room_defaults, supports_for
+from luminous_sim.cssg.tables import generation_layer, needs, placement, room_defaults, supports_for
 from luminous_sim.vocab import room_objects
 
 
@@ -105,7 +105,7 @@ def requests_from_cdf(cdf: ChallengeDefinition, room_type: str, rng: np.random.G
                 reqs[rel.anchor].clear_above = max(reqs[rel.anchor].clear_above, width / 2)
     if defaults:
         _add_defaults(reqs, room_type, rng, area)
-    _add_implicit(reqs)
+    _add_implicit(reqs, room_type)
     return _ordered(reqs)
 
 
@@ -139,19 +139,28 @@ def _add_defaults(reqs: dict[str, Request], room_type: str, rng: np.random.Gener
             continue
         name = f"{t.lower()}_auto0"
         reqs[name] = Request(name, t, generation_layer(t), False)
+    have = {r.type for r in reqs.values()}
+    for name in [n for n, r in reqs.items() if not r.explicit and needs(r.type)]:
+        if not have & set(needs(reqs[name].type)):
+            del reqs[name]  # a chair with no table to sit at
 
 
-def _add_implicit(reqs: dict[str, Request]) -> None:
+REPEATABLE = frozenset({"away_from", "far"})
+"""Relations that one piece may have to several anchors at once (away from the walls and from the sofa)."""
+
+
+def _add_implicit(reqs: dict[str, Request], room_type: str) -> None:
     by_type: dict[str, list[str]] = {}
     for r in reqs.values():
         by_type.setdefault(r.type, []).append(r.name)
     for rule in implicit_table()["rules"]:
-        if any(t in by_type for t in rule.get("unless", ())):
+        if any(t in by_type for t in rule.get("unless", ())) or room_type not in rule.get("rooms", (room_type,)):
             continue
         for name in by_type.get(rule["subject"], []):
             req = reqs[name]
-            if any(x.relation == rule["relation"] for x in req.rels):
-                continue  # the CDF already says how this one relates
+            same = [x for x in req.rels if x.relation == rule["relation"]]
+            if same and (rule["relation"] not in REPEATABLE or any(x.explicit for x in same)):
+                continue  # the CDF (or an earlier rule) already says how this one relates
             target = rule.get("target")
             if target is None or target in STRUCTURE_ELEMENTS:
                 anchor = target
@@ -159,6 +168,8 @@ def _add_implicit(reqs: dict[str, Request]) -> None:
                 anchor = by_type[target][0]
             else:
                 continue
+            if anchor is not None and any(x.explicit and x.anchor == anchor for x in req.rels):
+                continue  # the CDF already says how these two relate ("coffee table beside the sofa")
             src = f"implicit:{rule['subject']} {rule['relation']} {target or ''}".strip()
             req.rels.append(Rel(rule["relation"], anchor, float(rule["weight"]), False, False, src))
 

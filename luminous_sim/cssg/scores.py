@@ -12,18 +12,22 @@ from scipy import ndimage
 
 from luminous_sim.assets.catalog import AssetEntry
 from luminous_sim.cssg.grid import RES, FloorGrid
+from luminous_sim.cssg.tables import face_distance
 
 TEMPERATURE = 0.05
 """metres of cost per e-fold of probability."""
 NEAR, FAR, AWAY, WALL_CLEAR = 1.2, 2.5, 1.5, 0.6
 GAP = 0.02
-CLOSE_FACERS = frozenset({"Chair", "Footstool", "Ottoman", "Stool"})
-"""Seats that face a table or desk from right beside it; everything else faces from viewing distance."""
-FACE_BANDS = {"close": (-0.15, 0.35), "view": (0.8, 3.0)}
-"""Distance band (m) from the subject's front edge to the anchor's footprint edge."""
+FACE_BANDS = {"close": (-0.15, 0.35), "group": (0.2, 1.2), "view": (0.8, 3.0)}
+"""Distance band (m) from the subject's front edge to the anchor's footprint edge, by the subject's face
+distance (`tables.face_distance`: a seat at a table, an armchair in a seating group, across the room)."""
+FACE_OVERLAP = 0.25
+"""How far (m) within the span of the anchor's side a piece that faces it must stand."""
+ACROSS_BAND = (1.2, 3.5)
+"""Distance (m) between the fronts of a piece `across_from` its anchor and the anchor (a TV and a sofa)."""
 TOLERANCE = {"against_wall": 0.12, "in_corner": 0.3, "in_centre": 0.6, "beside": 0.35, "near": 0.0, "far": 0.0,
              "away_from": 0.15, "face": 0.15, "in_front_of": 0.4, "behind": 0.4, "left_of": 0.4, "right_of": 0.4,
-             "aligned_with": 0.15}
+             "aligned_with": 0.15, "at_head_of": 0.2, "across_from": 0.2}
 """Cost at or below which a relation counts as met (used by the validation report)."""
 
 
@@ -138,7 +142,8 @@ def relation_field(
         if relation == "far":
             return np.maximum(0.0, FAR - dist), None
         return np.maximum(0.0, AWAY + max(ahw, ahd) - dist), None
-    if relation not in ("beside", "left_of", "right_of", "in_front_of", "behind", "face", "aligned_with"):
+    if relation not in ("beside", "left_of", "right_of", "in_front_of", "behind", "face", "aligned_with",
+                        "at_head_of", "across_from"):
         return np.zeros(grid.shape), None  # support and wall-layer relations are not floor fields
     lat, fr = anchor.lateral, anchor.front
     same = np.full(grid.shape, heading_index(np.array(fr[0]), np.array(fr[1])))
@@ -150,6 +155,17 @@ def relation_field(
         along = {"beside": np.abs(u), "left_of": -u, "right_of": u}[relation]
         slack = max(ahd - hd, 0.0) + 0.1
         return np.abs(along - side) + np.maximum(0.0, np.abs(v) - slack), same
+    if relation == "at_head_of":
+        # beside the anchor with the backs flush: a bedside table at the head of a bed
+        side = ahw + hw + 0.05
+        return np.abs(np.abs(u) - side) + np.abs(v + ahd - hd), same
+    if relation == "across_from":
+        # in front of the anchor's front, within its width, facing it from viewing distance
+        out = v - ahd - hd
+        lo, hi = ACROSS_BAND
+        cost = np.maximum(0.0, np.abs(u) - max(ahw - hw / 2, 0.05)) + np.maximum(0.0, lo - out) + \
+            np.maximum(0.0, out - hi)
+        return cost, heading_index(ac[0] - gx, ac[1] - gy)
     if relation in ("in_front_of", "behind"):
         # within the anchor's width, and from touching its front (back) to half a metre away
         out = (v if relation == "in_front_of" else -v) - ahd - hd
@@ -160,8 +176,15 @@ def relation_field(
         return cost, same
     if relation == "face":
         edge = np.hypot(np.maximum(np.abs(u) - ahw, 0.0), np.maximum(np.abs(v) - ahd, 0.0)) - hd
-        lo, hi = FACE_BANDS["close" if subject.type in CLOSE_FACERS else "view"]
-        return np.maximum(0.0, lo - edge) + np.maximum(0.0, edge - hi), heading_index(ac[0] - gx, ac[1] - gy)
+        lo, hi = FACE_BANDS[face_distance(subject.type)]
+        # squarely in front of one of the anchor's sides, not off its corner (facing it, not past it)
+        corner = np.maximum(0.0, np.minimum(np.abs(u) - ahw, np.abs(v) - ahd) + FACE_OVERLAP)
+        # turned square to the side it stands out from (not towards the centre of a long table)
+        off_front = (np.abs(v) - ahd) >= (np.abs(u) - ahw)
+        sv, su = -np.sign(v), -np.sign(u)
+        dx = np.where(off_front, sv * fr[0], su * lat[0])
+        dy = np.where(off_front, sv * fr[1], su * lat[1])
+        return np.maximum(0.0, lo - edge) + np.maximum(0.0, edge - hi) + corner, heading_index(dx, dy)
     # aligned_with: centres on a line (either axis), or backs or fronts flush
     options = [np.abs(u), np.abs(v), np.abs(v - hd + ahd), np.abs(v + hd - ahd)]
     return np.min(options, axis=0), same
@@ -190,7 +213,7 @@ def _corner_distances(grid: FloorGrid, wall_dirs: np.ndarray) -> tuple[np.ndarra
 
 BACK_DIRECTION = np.array([2, 1, 3, 0])
 """For heading k (front +y, -x, -y, +x), the index into directional_wall_distance of the wall behind."""
-HEADING_RELATIONS = frozenset({"face", "in_front_of", "against_wall"})
+HEADING_RELATIONS = frozenset({"face", "in_front_of", "against_wall", "across_from"})
 """Relations that are only met when the subject also has the heading they ask for."""
 WRONG_HEADING_COST = 1.0
 

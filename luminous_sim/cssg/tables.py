@@ -63,3 +63,33 @@ def supports_for(object_type: str) -> frozenset[str]:
 @cache
 def placement_receptacles() -> tuple[str, ...]:
     return tuple(sorted(vocab_data()["receptacle_objects"]))
+
+
+def face_distance(object_type: str) -> str:
+    """How far a piece of this type faces what it faces from: "close" (a seat at a table), "group" (an
+    armchair in a seating group) or "view" (across the room), by the implicit rule table."""
+    return str(_load("implicit_rules.json")["face_distance"].get(object_type, "view"))
+
+
+def needs(object_type: str) -> tuple[str, ...]:
+    """Types one of which a room must have before it gets a default piece of this type (a chair needs a
+    table to sit at); empty when it needs none."""
+    return tuple(_load("implicit_rules.json")["needs"].get(object_type, ()))
+
+
+HOST_PRIOR = 1.0
+"""Pseudo-count of every receptacle type the compatibility table allows (ALFRED's sample is small)."""
+
+
+def host_weight(object_type: str, receptacle_type: str) -> float:
+    """How likely an object of this type with no on/in relation rests on/in a receptacle of that type, relative
+    to the others the compatibility table allows: ALFRED's real counts (data/object_hosts.json) plus HOST_PRIOR,
+    and 0 for a host the placement table rules out ("never_on": no baseball bat on a bed)."""
+    if receptacle_type in placement()["never_on"].get(object_type, ()):
+        return 0.0
+    return HOST_PRIOR + object_hosts().get(object_type, {}).get(receptacle_type, 0)
+
+
+def object_hosts() -> dict[str, dict[str, int]]:
+    """Per object type, how often ALFRED's scenes put it on/in each receptacle type (data/object_hosts.json)."""
+    return _load("object_hosts.json")["hosts"]

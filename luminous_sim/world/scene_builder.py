@@ -1,4 +1,5 @@
-"""Build a Scene into one PyBullet client: floor, walls with openings, and every object; then settle."""
+"""Build a Scene into one PyBullet client: floor, walls with openings, ceiling, the outdoors around the room,
+and every object; then settle."""
 
 from __future__ import annotations
 
@@ -32,6 +33,8 @@ class BuiltScene:
     painted_structure: list[int] = field(default_factory=list)
     """Visual-only copies of the floor slabs and walls, made after the objects so that TinyRenderer paints
     them last (see `paint_structure_last`); the physical slabs and walls keep alpha 0."""
+    overhead: list[int] = field(default_factory=list)
+    """The ceiling, its light and the outdoors beyond windows and doorways (left out of top-down views)."""
 
     def body_of(self, object_id: str) -> int:
         return self.objects[object_id].body
@@ -141,6 +144,7 @@ def build_scene(scene: Scene, catalog: Catalog | None = None, client: BulletClie
         client.changeDynamics(slab, -1, lateralFriction=0.9)
         slabs.append(slab)
     walls = [_box(client, w.center, w.size, w.yaw, wall_rgba) for w in room.wall_boxes()]
+    overhead = _ceiling(client, room) + _outdoors(client, room)
     objects: dict[str, LoadedAsset] = {}
     for obj in scene.objects:
         entry = catalog.for_object(obj)
@@ -149,9 +153,46 @@ def build_scene(scene: Scene, catalog: Catalog | None = None, client: BulletClie
         _apply_states(client, obj, loaded)
         objects[obj.id] = loaded
     painted = paint_structure_last(client, slabs + walls) if structure_last else []
-    built = BuiltScene(client, scene, objects, floor, walls, painted)
+    built = BuiltScene(client, scene, objects, floor, walls, painted, overhead)
     settle(built, settle_steps)
     return built
+
+
+CEILING_RGBA = (0.94, 0.93, 0.9, 1.0)
+LIGHT_RGBA = (1.0, 0.97, 0.86, 1.0)
+LIGHT_SIZE = (0.45, 0.45, 0.04)
+GROUND_RGBA = (0.42, 0.5, 0.36, 1.0)
+SKY_RGBA = (0.62, 0.78, 0.93, 1.0)
+OUTDOORS = 4.0
+"""Metres from the room's outline to the sky around it (within the egocentric camera's 20 m far plane)."""
+SKY_HEIGHT = 8.0
+
+
+def _ceiling(client: BulletClient, room) -> list[int]:
+    """A ceiling slab over the walls' outline at wall height, and a ceiling light in the middle of the room."""
+    t = room.wall_thickness
+    h = room.wall_height
+    out = [_box(client, ((lo[0] + hi[0]) / 2, (lo[1] + hi[1]) / 2, h + 0.05), (hi[0] - lo[0], hi[1] - lo[1], 0.1),
+                0.0, CEILING_RGBA)
+           for lo, hi in floor_rectangles(room.polygon().buffer(t / 2, join_style="mitre"))]
+    c = room.polygon().representative_point() if not room.polygon().contains(room.polygon().centroid) \
+        else room.polygon().centroid
+    out.append(_box(client, (c.x, c.y, h - LIGHT_SIZE[2] / 2), LIGHT_SIZE, 0.0, LIGHT_RGBA))
+    return out
+
+
+def _outdoors(client: BulletClient, room) -> list[int]:
+    """Ground and sky around the room, seen through its windows and doorways instead of the void."""
+    minx, miny, maxx, maxy = room.bounds
+    x0, y0, x1, y1 = minx - OUTDOORS, miny - OUTDOORS, maxx + OUTDOORS, maxy + OUTDOORS
+    cx, cy, w, d = (x0 + x1) / 2, (y0 + y1) / 2, x1 - x0, y1 - y0
+    out = [_box(client, (cx, cy, -0.25), (w, d, 0.1), 0.0, GROUND_RGBA),
+           _box(client, (cx, cy, SKY_HEIGHT), (w, d, 0.1), 0.0, SKY_RGBA)]
+    z, tall = (SKY_HEIGHT - 0.3) / 2, SKY_HEIGHT + 0.3  # from below the ground up: no gap at the horizon
+    for center, size in (((cx, y0, z), (w, 0.1, tall)), ((cx, y1, z), (w, 0.1, tall)),
+                         ((x0, cy, z), (0.1, d, tall)), ((x1, cy, z), (0.1, d, tall))):
+        out.append(_box(client, center, size, 0.0, SKY_RGBA))
+    return out
 
 
 REST_SPEED, REST_SPIN = 0.005, 0.05

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
+from contextlib import contextmanager
 
 import numpy as np
 from PIL import Image, ImageDraw, ImageFont
@@ -33,8 +35,9 @@ def top_down(built: BuiltScene, px_per_m: int = 90, labels: bool = True, grid: n
     fov = math.degrees(2 * math.atan(span_y / 2 / height))
     client = built.client
     eye, target = (cx, cy, height), (cx, cy, 0.0)
-    frame = render(client, eye, target, up=(0, 1, 0), width=w, height=h, fov=fov, near=height - 3.5,
-                   far=height + 1.0)
+    with _overhead_away(built):  # seen from above, through the ceiling, and the room alone
+        frame = render(client, eye, target, up=(0, 1, 0), width=w, height=h, fov=fov, near=height - 3.5,
+                       far=height + 1.0)
     img = Image.fromarray(frame.rgb)
     draw = ImageDraw.Draw(img)
     view = np.array(client.computeViewMatrix(eye, target, [0, 1, 0])).reshape(4, 4)
@@ -49,14 +52,47 @@ def top_down(built: BuiltScene, px_per_m: int = 90, labels: bool = True, grid: n
         for x, y in pts:
             draw.ellipse([x - 2, y - 2, x + 2, y + 2], fill=(40, 160, 255))
     if labels:
-        font = ImageFont.load_default()
-        for obj in built.scene.objects:
-            if obj.layer == "object":
-                continue
-            pos, _ = built.pose_of(obj.id)
-            x, y = _project(view, proj, pos[None], w, h)[0]
-            draw.text((x - 3 * len(obj.type), y - 5), obj.type, fill=(0, 0, 0), font=font)
+        _draw_labels(draw, built, view, proj, w, h)
     return img
+
+
+@contextmanager
+def _overhead_away(built: BuiltScene) -> Iterator[None]:
+    """Move the ceiling and the outdoors far below the room for a while, and back."""
+    client = built.client
+    poses = [client.getBasePositionAndOrientation(b) for b in built.overhead]
+    for b, (pos, orn) in zip(built.overhead, poses, strict=True):
+        client.resetBasePositionAndOrientation(b, [pos[0], pos[1], pos[2] - 1000.0], orn)
+    try:
+        yield
+    finally:
+        for b, (pos, orn) in zip(built.overhead, poses, strict=True):
+            client.resetBasePositionAndOrientation(b, pos, orn)
+
+
+LABEL_SHIFTS = ((0, 0), (0, 11), (0, -11), (0, 22), (0, -22))
+"""Pixel offsets tried, in turn, for a label that would overlap one already written."""
+
+
+def _draw_labels(draw: ImageDraw.ImageDraw, built: BuiltScene, view: np.ndarray, proj: np.ndarray, w: int,
+                 h: int) -> None:
+    """The type of each piece of furniture, fixture and wall piece, written on it: not of the parts of
+    another fixture (a stove's knobs, a sink's basin), and not where it would overlap a label already
+    written (moved up or down a line, else left out), so that labels never pile up."""
+    font = ImageFont.load_default()
+    boxes: list[tuple[float, float, float, float]] = []
+    for obj in built.scene.objects:
+        if obj.layer == "object" or obj.parent is not None:
+            continue
+        pos, _ = built.pose_of(obj.id)
+        x, y = _project(view, proj, pos[None], w, h)[0]
+        _, _, right, bottom = draw.textbbox((0, 0), obj.type, font=font)
+        for dx, dy in LABEL_SHIFTS:
+            box = (x - right / 2 + dx, y - 5 + dy, x + right / 2 + dx, y - 5 + dy + bottom)
+            if not any(box[0] < b[2] and b[0] < box[2] and box[1] < b[3] and b[1] < box[3] for b in boxes):
+                boxes.append(box)
+                draw.text((box[0], box[1]), obj.type, fill=(0, 0, 0), font=font)
+                break
 
 
 def egocentric(built: BuiltScene, x: float, y: float, yaw_deg: float, horizon_deg: float = 30.0,

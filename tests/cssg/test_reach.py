@@ -8,17 +8,19 @@ from pathlib import Path
 import numpy as np
 import pytest
 from scipy import ndimage
+from shapely.geometry import Point
 
 from luminous_sim import cdf
 from luminous_sim.assets.catalog import default_catalog
 from luminous_sim.cssg.draft import Placed, SceneDraft
-from luminous_sim.cssg.furniture import FloorContext
+from luminous_sim.cssg.furniture import REACHED_SHARE, FloorContext
 from luminous_sim.cssg.grid import RES
 from luminous_sim.cssg.pipeline import generate
 from luminous_sim.cssg.reach import FloorPiece
 from luminous_sim.cssg.structure import place_fixtures
 from luminous_sim.rooms.generate import generate_shell
-from luminous_sim.scene import REACH, SceneObject, blocks_agent, footprint, reach_of
+from luminous_sim.scene import REACH, STEP, SceneObject, blocks_agent, footprint, largest_component, reach_of
+from luminous_sim.vocab.agent_body import AGENT_RADIUS
 
 
 def _edt_to(mask: np.ndarray) -> np.ndarray:
@@ -71,7 +73,19 @@ def _reference_reachable(draft: SceneDraft, ctx: FloorContext, extra: list, fp, 
     dist = _edt_to(walk)
     cells = ctx.grid._cells(fp)
     reaches = [p.reach for p in ctx.pieces] + [reach]
-    return all(dist[c].min() <= r for c, r in zip(_masks(ctx) + [cells], reaches, strict=True) if c.any())
+    if not all(dist[c].min() <= r for c, r in zip(_masks(ctx) + [cells], reaches, strict=True) if c.any()):
+        return False
+    # and no more of the free floor cut off than REACHED_SHARE allows (or than was already)
+    share = _connected_share(draft, extra + [fp])
+    return share >= REACHED_SHARE or share >= _connected_share(draft, extra)
+
+
+def _connected_share(draft: SceneDraft, footprints: list) -> float:
+    """Share of the agent's grid points clear of every floor obstacle that lie in the largest connected part."""
+    obstacles = [p.footprint for p in draft.placed if blocks_agent(p.obj, p.entry)] + footprints
+    pts = draft.shell.grid_points(STEP, clearance=AGENT_RADIUS, avoid_fixtures=False).reshape(-1, 2)
+    pts = np.array([q for q in pts if not any(o.distance(Point(q)) <= AGENT_RADIUS for o in obstacles)])
+    return float(largest_component(pts).sum()) / len(pts) if len(pts) else 1.0
 
 
 def _grid_with(draft: SceneDraft, footprints: list) -> np.ndarray:

@@ -120,7 +120,7 @@ def test_doors_the_agent_cannot_open_are_never_counted_open():
     from luminous_sim.world.placement import _host_now
 
     doc = cdf.load(Path(__file__).resolve().parents[2] / "cdf" / "examples" / "bedroom_reading_desk.yaml")
-    scene = generate(doc, seed=0).scene
+    scene = generate(doc, seed=2).scene  # a layout with a drawer side table (seed 0 until the natural-room rules)
     with World(scene) as w:
         view = w.view()
         tables = [o for o in view.state.of_type("SideTable")

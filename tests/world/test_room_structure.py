@@ -131,16 +131,21 @@ def test_rays_outside_the_outline_hit_nothing_everywhere(name):
 
 
 def test_the_reported_ray_misses_in_the_generated_scene():
-    """The issue's own case: `generate --cdf bedroom_reading_desk.yaml --seed 0 --count 3`, scene_00001."""
+    """The issue's own case (`generate --cdf bedroom_reading_desk.yaml`, an L-shaped room): a ray down
+    through the notch of the L, outside the outline, hits nothing (seed 0 since the natural-room rules)."""
+    from shapely.geometry import box
+
     from luminous_sim import cdf
     from luminous_sim.cssg import generate
     from tests.world.conftest import EXAMPLES
 
-    scene = generate(cdf.load(EXAMPLES / "bedroom_reading_desk.yaml"), seed=1).scene
-    assert not scene.room.polygon().contains(Point(4.0, 0.5))
+    scene = generate(cdf.load(EXAMPLES / "bedroom_reading_desk.yaml"), seed=0).scene
+    notch = box(*scene.room.bounds).difference(scene.room.polygon().buffer(0.3)).representative_point()
+    x, y = notch.x, notch.y
+    assert scene.room.shape == "L" and not scene.room.polygon().contains(Point(x, y))
     built = build_scene(scene, settle_steps=0)
     try:
-        hit = built.client.rayTest((4.0, 0.5, 3.0), (4.0, 0.5, -0.09))[0]
-        assert hit[0] == -1, f"the ray at (4.0, 0.5) outside the outline hits body {hit[0]}"
+        hit = built.client.rayTest((x, y, 3.0), (x, y, -0.09))[0]
+        assert hit[0] == -1, f"the ray at ({x:.2f}, {y:.2f}) outside the outline hits body {hit[0]}"
     finally:
         built.close()
