@@ -10,18 +10,40 @@ Typical use::
     trial_dir = export_alfred(out_root, scene, record, seed=0)
 """
 
+from luminous_sim.data.alfred_designs import (
+    AlfredDesign,
+    DesignError,
+    DesignResult,
+    NoDesignScene,
+    design_scene,
+    design_task,
+    read_design,
+    read_designs,
+    scene_misfit,
+    solve_design,
+)
 from luminous_sim.data.alfred_export import ExportError, alfred_traj_data, export_alfred, fold_subgoals
 from luminous_sim.data.alfred_structure import Structure, structure, structure_differences
 from luminous_sim.data.task_scenes import physical_misfit, scene_for_task
 
 __all__ = [
+    "AlfredDesign",
+    "DesignError",
+    "DesignResult",
     "ExportError",
+    "NoDesignScene",
     "Structure",
     "alfred_traj_data",
+    "design_scene",
+    "design_task",
     "export_alfred",
     "fold_subgoals",
     "physical_misfit",
+    "read_design",
+    "read_designs",
     "scene_for_task",
+    "scene_misfit",
+    "solve_design",
     "structure",
     "structure_differences",
 ]
