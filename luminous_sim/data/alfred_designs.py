@@ -148,6 +148,28 @@ def scene_misfit(scene: Scene, design: AlfredDesign, catalog: Catalog | None = N
         world.close()
 
 
+def clear_for_put(scene: Scene, params: PddlParams) -> Scene | None:
+    """The scene without the unnamed small things (the room's defaults, not the CDF's objects) resting in
+    or on the task's receptacles, and what they hold: a scene generated for a task leaves room for its
+    put. None when there is nothing to clear."""
+    from luminous_sim.vocab import abilities
+
+    kinds = {params.parent_target, params.mrecep_target} - {""}
+    hosts = {o.id for o in scene.objects if o.type in kinds}
+    drop = {o.id for o in scene.objects
+            if o.parent in hosts and not o.name and o.layer == "object" and abilities(o.type).pickupable}
+    if not drop:
+        return None
+    grown = True
+    while grown:  # and whatever those hold
+        more = {o.id for o in scene.objects if o.parent in drop and not o.name} - drop
+        grown = bool(more)
+        drop |= more
+    kept = tuple(o for o in scene.objects if o.id not in drop)
+    notes = {**scene.notes, "cleared_for_task": sorted(drop)}
+    return scene.model_copy(update={"objects": kept, "notes": notes})
+
+
 def design_scene(design: AlfredDesign, seed: int, catalog: Catalog | None = None,
                  tries: int = SCENE_TRIES) -> Scene:
     """A scene generated for the design in its own floor plan's room shell, in which its task is feasible
@@ -173,6 +195,10 @@ def design_scene(design: AlfredDesign, seed: int, catalog: Catalog | None = None
             causes.append(("no_layout", str(exc)))
             continue
         why = scene_misfit(scene, design, catalog)
+        if why is not None and why[0] == "no_room":
+            cleared = clear_for_put(scene, design.params)
+            if cleared is not None:
+                scene, why = cleared, scene_misfit(cleared, design, catalog)
         if why is None:
             return scene
         causes.append(why)

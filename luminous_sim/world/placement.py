@@ -17,6 +17,7 @@ from luminous_sim.states.model import WorldState
 from luminous_sim.vocab import PILING_RECEPTACLES, abilities
 from luminous_sim.vocab.agent_body import CAMERA_HEIGHT
 from luminous_sim.world.asset_loader import base_link_pose
+from luminous_sim.world.client import body_aabb
 from luminous_sim.world.hand import release
 from luminous_sim.world.reach import type_of
 
@@ -61,10 +62,15 @@ def find_spot(world: World, state: WorldState, oid: str, receptacle: str, rng: n
     host = _host_now(world, state, receptacle)
     reach = world.config.visibility_distance
     eyes = np.array(eye or world.agent.eye())[None] if real else _standing_eyes(world)
-    top = float(world.client.getAABB(loaded_r.body, -1)[1][2])
-    spots = [s for s in region_spots(host, loaded_r.entry)
-             if not (s.name and _needs_open(loaded_r.entry, s.name) and not joints_open)
-             and _region_distance(s, eyes, top) <= reach]
+    lo_r, hi_r = body_aabb(world.client, loaded_r.body)
+    top = float(hi_r[2])
+    regions = [s for s in region_spots(host, loaded_r.entry)
+               if not (s.name and _needs_open(loaded_r.entry, s.name) and not joints_open)]
+    spots = [s for s in regions if _region_distance(s, eyes, top) <= reach]
+    if not spots and real and np.linalg.norm(np.clip(eyes[0], lo_r, hi_r) - eyes[0]) <= reach:
+        # regions are kept where they are with doors closed; a drawer slid out towards the agent is within
+        # reach when its closed place is not, and the receptacle is what AI2-THOR measures reach to
+        spots = regions
     if not spots:
         return Failure(FailureCode.NO_SPOT_IN_REACH, f"{receptacle} has no place to put things within reach")
     from luminous_sim.scene import footprint
@@ -84,13 +90,14 @@ def find_spot(world: World, state: WorldState, oid: str, receptacle: str, rng: n
         x0, y0, x1, y1 = fp.bounds
         boxes.append(((x0, y0, z + e.bbox_min[2]), (x1, y1, z + e.bbox_max[2])))
         prints.append(fp)
+    open_top = _open_tops(loaded_r.entry)
     order = _spot_order(world, spots, rng)
     # near the agent first (AI2-THOR puts things where the agent looks); then anywhere in a region it reaches:
     # the reach limit is on the receptacle, not on where in it the object lands (the bottom of a garbage can)
     for anywhere in (False, True):
         for i in order:
             spot = spots[i]
-            if entry.dims[2] > spot.clearance + 1e-6:
+            if entry.dims[2] > spot.clearance + 1e-6 and spot.name not in open_top:
                 continue
             ceiling = spot.floor_z + spot.clearance
             occupied = [fp for (lo, hi), fp in zip(boxes, prints)  # only what is on this shelf
@@ -230,6 +237,14 @@ def _box_distances(spot, eyes: np.ndarray, top: float) -> np.ndarray:
 def _region_distance(spot, eyes: np.ndarray, top: float) -> float:
     """Metres from the nearest of `eyes` to the region's volume (`_box_distances`)."""
     return float(np.min(_box_distances(spot, eyes, top))) if len(eyes) else math.inf
+
+
+def _open_tops(entry) -> set[str]:
+    """Names of the vessel regions open at the top (a pan, bowl, pot, basin or garbage can: a volume
+    with no door and nothing over it): what goes in may stand out over the rim, as an apple does from a
+    pan in AI2-THOR, so their height does not limit what they take."""
+    return {r["name"] for r in entry.regions if r["kind"] == "volume" and not r.get("requires_open")
+            and shades(entry)[r["name"]].roof is None}
 
 
 def _needs_open(entry, region_name: str) -> bool:
