@@ -27,6 +27,9 @@ if TYPE_CHECKING:
 Spot = tuple[float, float, float, float]
 """A put pose: x, y, z of the base link and yaw."""
 
+CENTRED_ON = frozenset({"StoveBurner"})
+"""Receptacles that take a vessel larger than their support, centred on it (a pan's handle over the edge
+of its burner, as AI2-THOR sets pans and pots on burners)."""
 VIEW_TRIES = 8
 """Draws of a put pose looking for one in the agent's view."""
 SCAN_VIEW_CHECKS = 12
@@ -107,6 +110,8 @@ def find_spot(world: World, state: WorldState, oid: str, receptacle: str, rng: n
                 got = sample_in_region(entry, dc_replace(spot, gated=False), rng, occupied, tries=60)
             if got is None and type_of(state, receptacle) in PILING_RECEPTACLES and not anywhere:
                 got = _stack_pose(entry, spot, boxes)
+            if got is None and type_of(state, receptacle) in CENTRED_ON and not anywhere and not occupied:
+                got = _centred_pose(entry, spot, spot.floor_z)
             if got is not None:
                 return got[:4]
     return Failure(FailureCode.RECEPTACLE_FULL, f"{receptacle} is full: no free, stable spot for {oid}")
@@ -212,6 +217,12 @@ def _stack_pose(entry, spot, boxes) -> tuple | None:
         z_base = max(z_base, spot.floor_z + min(spot.clearance, 0.12))  # across the opening
     if z_base + entry.dims[2] > spot.floor_z + spot.clearance + 0.25:
         return None
+    return _centred_pose(entry, spot, z_base)
+
+
+def _centred_pose(entry, spot, z_base: float) -> tuple:
+    """The object's box centred over the region, its bottom at `z_base`, turned as the region is."""
+    x, y = spot.center
     lo, hi = np.array(entry.bbox_min[:2]), np.array(entry.bbox_max[:2])
     centre = (lo + hi) / 2
     c, s_ = math.cos(spot.yaw), math.sin(spot.yaw)
