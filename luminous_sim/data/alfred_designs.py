@@ -9,7 +9,7 @@ which the task is feasible, symbolically and physically, and its goal does not a
 from __future__ import annotations
 
 import json
-from collections.abc import Iterator
+from collections.abc import Collection, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -148,21 +148,24 @@ def scene_misfit(scene: Scene, design: AlfredDesign, catalog: Catalog | None = N
         world.close()
 
 
-def clear_for_put(scene: Scene, params: PddlParams) -> Scene | None:
-    """The scene without the unnamed small things (the room's defaults, not the CDF's objects) resting in
-    or on the task's receptacles, and what they hold: a scene generated for a task leaves room for its
-    put. None when there is nothing to clear."""
+def clear_for_put(scene: Scene, params: PddlParams, declared: Collection[str]) -> Scene | None:
+    """The scene without the small things the room added by default (not the CDF's `declared` objects)
+    resting in or on the task's receptacles, and what they hold: a scene generated for a task leaves room
+    for its put. None when there is nothing to clear."""
     from luminous_sim.vocab import abilities
+
+    def default(o) -> bool:  # a counted object is named name#2, name#3 ...
+        return not o.name or o.name.split("#")[0] not in declared
 
     kinds = {params.parent_target, params.mrecep_target} - {""}
     hosts = {o.id for o in scene.objects if o.type in kinds}
     drop = {o.id for o in scene.objects
-            if o.parent in hosts and not o.name and o.layer == "object" and abilities(o.type).pickupable}
+            if o.parent in hosts and default(o) and o.layer == "object" and abilities(o.type).pickupable}
     if not drop:
         return None
     grown = True
     while grown:  # and whatever those hold
-        more = {o.id for o in scene.objects if o.parent in drop and not o.name} - drop
+        more = {o.id for o in scene.objects if o.parent in drop and default(o)} - drop
         grown = bool(more)
         drop |= more
     kept = tuple(o for o in scene.objects if o.id not in drop)
@@ -196,7 +199,7 @@ def design_scene(design: AlfredDesign, seed: int, catalog: Catalog | None = None
             continue
         why = scene_misfit(scene, design, catalog)
         if why is not None and why[0] == "no_room":
-            cleared = clear_for_put(scene, design.params)
+            cleared = clear_for_put(scene, design.params, {o.name for o in cdf.scene.objects})
             if cleared is not None:
                 scene, why = cleared, scene_misfit(cleared, design, catalog)
         if why is None:

@@ -9,6 +9,7 @@ import pytest
 
 from luminous_sim.data import (
     DesignError,
+    clear_for_put,
     design_scene,
     read_design,
     read_designs,
@@ -82,6 +83,26 @@ def test_an_apple_slice_goes_in_a_pan_though_it_stands_over_the_rim(shared_alfre
         assert has_room(world.view(), "AppleSliced", "Pan")
     finally:
         world.close()
+
+
+def test_clearing_for_a_put_drops_the_rooms_defaults_from_the_target_not_the_cdfs_objects(shared_alfred):
+    from luminous_sim.cssg import generate
+    from luminous_sim.rooms import load_room
+    from luminous_sim.tasks import cdf_for_task
+
+    design = _design(shared_alfred, "pick_two_obj_and_place-SoapBar-None-GarbageCan-418")
+    doc = cdf_for_task(design.task_type, design.params, design.room_type)
+    scene = generate(doc, seed=3, room=load_room(design.floor_plan)).scene
+    declared = {o.name for o in doc.scene.objects}
+    cans = {o.id for o in scene.objects if o.type == "GarbageCan"}
+    scene = scene.model_copy(update={"objects": (*scene.objects, scene.objects[-1].model_copy(update={
+        "id": "Cloth|extra", "type": "Cloth", "name": "cloth_auto9", "parent": next(iter(cans)),
+        "layer": "object"}))})
+    cleared = clear_for_put(scene, design.params, declared)
+    assert cleared is not None and "Cloth|extra" in cleared.notes["cleared_for_task"]
+    assert not [o for o in cleared.objects if o.parent in cans]
+    assert {o.name for o in cleared.objects if o.name and o.name.split("#")[0] in declared} == {
+        o.name for o in scene.objects if o.name and o.name.split("#")[0] in declared}
 
 
 @pytest.mark.slow
