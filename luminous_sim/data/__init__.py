@@ -20,6 +20,19 @@ Typical use::
     print(report.summary())
 """
 
+from luminous_sim.data.alfred_designs import (
+    AlfredDesign,
+    DesignError,
+    DesignResult,
+    NoDesignScene,
+    clear_for_put,
+    design_scene,
+    design_task,
+    read_design,
+    read_designs,
+    scene_misfit,
+    solve_design,
+)
 from luminous_sim.data.alfred_export import ExportError, alfred_traj_data, export_alfred, fold_subgoals
 from luminous_sim.data.alfred_merge import MergeConflict, MergedCDF, merge_by_floor_plan, merge_parses
 from luminous_sim.data.alfred_parser import AlfredParse, AlfredParseError, ParseNote, parse_alfred
@@ -43,6 +56,7 @@ from luminous_sim.data.manifest import Manifest, ManifestError
 from luminous_sim.data.task_scenes import physical_misfit, scene_for_task, task_misfit
 
 __all__ = [
+    "AlfredDesign",
     "AlfredParse",
     "AlfredParseError",
     "Backend",
@@ -51,6 +65,8 @@ __all__ = [
     "BuildOptions",
     "BuildReport",
     "CoverageReport",
+    "DesignError",
+    "DesignResult",
     "ExportError",
     "Job",
     "JobOutcome",
@@ -59,6 +75,7 @@ __all__ = [
     "ManifestError",
     "MergeConflict",
     "MergedCDF",
+    "NoDesignScene",
     "ParseNote",
     "RayBackend",
     "Realisation",
@@ -67,6 +84,9 @@ __all__ = [
     "alfred_traj_data",
     "build",
     "build_split",
+    "clear_for_put",
+    "design_scene",
+    "design_task",
     "export_alfred",
     "fold_subgoals",
     "layout_scene",
@@ -77,8 +97,12 @@ __all__ = [
     "parse_alfred",
     "parse_directory",
     "physical_misfit",
+    "read_design",
+    "read_designs",
     "realise",
     "scene_for_task",
+    "scene_misfit",
+    "solve_design",
     "split_jobs",
     "structure",
     "structure_differences",

@@ -100,9 +100,11 @@ class View:
     spots in that region."""
 
     def __init__(self, shade: Shade, host_xy: tuple[float, float], host_yaw: float, eyes: np.ndarray,
-                 around: tuple[tuple[float, float], float] | None = None):
+                 around: tuple[tuple[float, float], float] | None = None, reach: float | None = None):
         """`around` (a world centre and a radius) bounds the spots to be tested: eyes out of reach of every
-        point within it are dropped."""
+        point within it are dropped. `reach` bounds the sight lines (default: the visibility distance less
+        `REACH_MARGIN`; `math.inf` for sight alone, where the eyes were chosen for reach already)."""
+        self.reach = VISIBILITY_DISTANCE - REACH_MARGIN if reach is None else reach
         self.shade, self.origin, self.yaw = shade, np.asarray(host_xy, dtype=float), host_yaw
         eyes = np.asarray(eyes, dtype=float).reshape(-1, 2)
         if around is not None and len(eyes):
@@ -120,7 +122,7 @@ class View:
         delta = self.eyes[None] - t[:, None]  # (K, E, 2)
         d = np.maximum(np.hypot(delta[..., 0], delta[..., 1]), 1e-9)  # (K, E)
         z = np.asarray(heights, dtype=float)[:, None, None]  # (H, 1, 1)
-        ok = np.hypot(d[None], CAMERA_HEIGHT - z) <= VISIBILITY_DISTANCE - REACH_MARGIN  # (H, K, E)
+        ok = np.hypot(d[None], CAMERA_HEIGHT - z) <= self.reach  # (H, K, E)
         if not ok.any():
             return np.zeros(len(spots), dtype=bool)
         ux, uy = delta[..., 0] / d, delta[..., 1] / d

@@ -36,11 +36,12 @@ from luminous_sim.vocab import LAMPS, SLICED_TYPES, SLICING_TOOLS, abilities, pa
 
 SURFACES: dict[str, tuple[str, ...]] = {
     "Kitchen": ("CounterTop", "DiningTable", "SideTable", "Shelf"),
-    "LivingRoom": ("CoffeeTable", "SideTable", "DiningTable", "Dresser", "Shelf"),
-    "Bedroom": ("Dresser", "Desk", "SideTable", "Shelf"),
-    "Bathroom": ("CounterTop", "Shelf", "SideTable", "Dresser"),
+    "LivingRoom": ("CoffeeTable", "SideTable", "DiningTable", "Dresser", "Shelf", "Sofa", "ArmChair"),
+    "Bedroom": ("Dresser", "Desk", "SideTable", "Shelf", "Bed"),
+    "Bathroom": ("CounterTop", "Shelf", "SideTable", "Dresser", "Cart"),
 }
-"""Per room type, the surfaces a task's small objects are put on, in order of preference."""
+"""Per room type, the surfaces a task's small objects are put on, in order of preference; the first that
+takes the object and is big enough for it (a baseball bat is longer than a side table is wide)."""
 LAMP_TABLES: tuple[str, ...] = ("SideTable", "Desk", "Dresser")
 
 
@@ -192,14 +193,33 @@ class _Doc:
         return name
 
     def put_on(
-        self, name: str, object_type: str, surfaces: tuple[str, ...], avoid: str = ""
+        self, name: str, object_type: str, surfaces: tuple[str, ...], avoid: str = "", count: int = 1
     ) -> None:
-        """Rest the object on the first surface that takes it (declared once, reused after)."""
+        """Rest the object on the first surface that takes it and `count` of it fit on (declared once,
+        reused after)."""
         for s in surfaces:
-            if s != avoid and can_support(s, object_type):
+            if s != avoid and can_support(s, object_type) and fits_on(s, object_type, count):
                 target = self.by_type.get(s) or self.add(_snake(s), s)
                 self.relations.append({"subject": name, "relation": "on", "target": target})
                 return
+
+
+def fits_on(surface: str, object_type: str, count: int = 1) -> bool:
+    """Whether `count` of the smallest asset of `object_type` fit side by side on one region of the
+    largest asset of `surface` (True where the catalog has neither: generation will say)."""
+    from luminous_sim.assets.catalog import default_catalog
+
+    catalog = default_catalog()
+    things, hosts = catalog.of_type(object_type), catalog.of_type(surface)
+    if not things or not hosts:
+        return True
+    short, long = min((sorted(e.dims[:2]) for e in things), key=lambda d: (d[1], d[0]))
+    for host in hosts:
+        for r in host.regions:
+            w, d = sorted(r["size"][:2])
+            if short <= w and long <= d and count * short * long <= w * d:
+                return True
+    return False
 
 
 def _cdf_goal(goal: Expr) -> Expr:
@@ -273,7 +293,7 @@ def cdf_for_task(task_type: str, params: PddlParams, room_type: str) -> Challeng
         elif abilities(t).pickupable or t in STANDS_ON:
             # the object and its movable receptacle must not start in the final receptacle
             avoid = p.parent_target if t in (p.object_target, p.mrecep_target) else ""
-            doc.put_on(name, t, SURFACES[room_type], avoid)
+            doc.put_on(name, t, SURFACES[room_type], avoid, required[t])
     goal = _cdf_goal(goal_for(params, task_type))
     obj_type = params.object_type
     data = {

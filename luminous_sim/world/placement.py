@@ -17,6 +17,7 @@ from luminous_sim.states.model import WorldState
 from luminous_sim.vocab import PILING_RECEPTACLES, abilities
 from luminous_sim.vocab.agent_body import CAMERA_HEIGHT
 from luminous_sim.world.asset_loader import base_link_pose
+from luminous_sim.world.client import body_aabb
 from luminous_sim.world.hand import release
 from luminous_sim.world.reach import type_of
 
@@ -26,6 +27,9 @@ if TYPE_CHECKING:
 Spot = tuple[float, float, float, float]
 """A put pose: x, y, z of the base link and yaw."""
 
+CENTRED_ON = frozenset({"StoveBurner"})
+"""Receptacles that take a vessel larger than their support, centred on it (a pan's handle over the edge
+of its burner, as AI2-THOR sets pans and pots on burners)."""
 VIEW_TRIES = 8
 """Draws of a put pose looking for one in the agent's view."""
 SCAN_VIEW_CHECKS = 12
@@ -61,9 +65,15 @@ def find_spot(world: World, state: WorldState, oid: str, receptacle: str, rng: n
     host = _host_now(world, state, receptacle)
     reach = world.config.visibility_distance
     eyes = np.array(eye or world.agent.eye())[None] if real else _standing_eyes(world)
-    spots = [s for s in region_spots(host, loaded_r.entry)
-             if not (s.name and _needs_open(loaded_r.entry, s.name) and not joints_open)
-             and _region_distance(s, eyes) <= reach]
+    lo_r, hi_r = body_aabb(world.client, loaded_r.body)
+    top = float(hi_r[2])
+    regions = [s for s in region_spots(host, loaded_r.entry)
+               if not (s.name and _needs_open(loaded_r.entry, s.name) and not joints_open)]
+    spots = [s for s in regions if _region_distance(s, eyes, top) <= reach]
+    if not spots and real and np.linalg.norm(np.clip(eyes[0], lo_r, hi_r) - eyes[0]) <= reach:
+        # regions are kept where they are with doors closed; a drawer slid out towards the agent is within
+        # reach when its closed place is not, and the receptacle is what AI2-THOR measures reach to
+        spots = regions
     if not spots:
         return Failure(FailureCode.NO_SPOT_IN_REACH, f"{receptacle} has no place to put things within reach")
     from luminous_sim.scene import footprint
@@ -83,20 +93,27 @@ def find_spot(world: World, state: WorldState, oid: str, receptacle: str, rng: n
         x0, y0, x1, y1 = fp.bounds
         boxes.append(((x0, y0, z + e.bbox_min[2]), (x1, y1, z + e.bbox_max[2])))
         prints.append(fp)
-    for i in _spot_order(world, spots, rng):
-        spot = spots[i]
-        if entry.dims[2] > spot.clearance + 1e-6:
-            continue
-        top = spot.floor_z + spot.clearance
-        occupied = [fp for (lo, hi), fp in zip(boxes, prints)  # only what is on this shelf
-                    if lo[2] < top and hi[2] > spot.floor_z - 0.01]
-        got = _sample_in_view(world, entry, spot, rng, occupied, eyes, real, host)
-        if got is None and spot.gated:  # the back half too, rather than refusing
-            got = sample_in_region(entry, dc_replace(spot, gated=False), rng, occupied, tries=60)
-        if got is None and type_of(state, receptacle) in PILING_RECEPTACLES:
-            got = _stack_pose(entry, spot, boxes)
-        if got is not None:
-            return got[:4]
+    open_top = _open_tops(loaded_r.entry)
+    order = _spot_order(world, spots, rng)
+    # near the agent first (AI2-THOR puts things where the agent looks); then anywhere in a region it reaches:
+    # the reach limit is on the receptacle, not on where in it the object lands (the bottom of a garbage can)
+    for anywhere in (False, True):
+        for i in order:
+            spot = spots[i]
+            if entry.dims[2] > spot.clearance + 1e-6 and spot.name not in open_top:
+                continue
+            ceiling = spot.floor_z + spot.clearance
+            occupied = [fp for (lo, hi), fp in zip(boxes, prints)  # only what is on this shelf
+                        if lo[2] < ceiling and hi[2] > spot.floor_z - 0.01]
+            got = _sample_in_view(world, entry, spot, rng, occupied, eyes, real, host, top, anywhere)
+            if got is None and spot.gated and not anywhere:  # the back half too, rather than refusing
+                got = sample_in_region(entry, dc_replace(spot, gated=False), rng, occupied, tries=60)
+            if got is None and type_of(state, receptacle) in PILING_RECEPTACLES and not anywhere:
+                got = _stack_pose(entry, spot, boxes)
+            if got is None and type_of(state, receptacle) in CENTRED_ON and not anywhere and not occupied:
+                got = _centred_pose(entry, spot, spot.floor_z)
+            if got is not None:
+                return got[:4]
     return Failure(FailureCode.RECEPTACLE_FULL, f"{receptacle} is full: no free, stable spot for {oid}")
 
 
@@ -112,28 +129,39 @@ def _host_now(world: World, state: WorldState, receptacle: str) -> SceneObject:
 
 
 def _sample_in_view(world: World, entry, spot, rng: np.random.Generator, occupied: list, eyes: np.ndarray,
-                    real: bool, host: SceneObject):
+                    real: bool, host: SceneObject, top: float, anywhere: bool = False):
     """A free pose in the region within reach of one of `eyes` ((N, 3)) and, among a few draws, one
     such an eye has a clear line to: AI2-THOR puts things where the agent can see them, not behind a
     basin's near rim where they could not be picked up again. A real put (one eye, the agent's) falls
     back on a pose out of clear view; a dry run does not. Under a shelf or table top, only where
-    scene generation's sight model sees it (its front), since the top hides the rest."""
+    scene generation's sight model sees it (its front), since the top hides the rest.
+
+    `anywhere`: the pose need not be within reach of an eye, only the region (as AI2-THOR limits the
+    distance to the receptacle, not to where the object lands in it); it must still be in sight of an
+    eye that reaches the region (`top` is the receptacle's top)."""
     first = None
     reach = world.config.visibility_distance
     height = entry.bbox_max[2] - entry.bbox_min[2]
     mid = spot.floor_z + 0.002 + height / 2
+    if anywhere:
+        eyes = eyes[_box_distances(spot, eyes, top) <= reach]
+        if not len(eyes):
+            return None
     shade = shades(world.built.objects[spot.host.id].entry).get(spot.name)
-    view = View(shade, host.position[:2], host.yaw, eyes[:, :2]) if shade and shade.roof else None
+    view = (View(shade, host.position[:2], host.yaw, eyes[:, :2], reach=math.inf if anywhere else None)
+            if shade and shade.roof else None)
 
     def in_reach(xy: np.ndarray) -> bool:
         if view is not None:
             return view.sees((float(xy[0]), float(xy[1])), (mid, spot.floor_z + 0.8 * height))
+        if anywhere:
+            return True
         return bool(np.any(np.linalg.norm(eyes - np.array([xy[0], xy[1], mid]), axis=1) <= reach))
 
     def clear_view(got) -> bool:
         x, y, z = got[:3]
         centre = np.array([x, y, z + (entry.bbox_min[2] + entry.bbox_max[2]) / 2])
-        near = eyes[np.linalg.norm(eyes - centre, axis=1) <= reach + 0.01]
+        near = eyes if anywhere else eyes[np.linalg.norm(eyes - centre, axis=1) <= reach + 0.01]
         hits = world.client.rayTestBatch(near.tolist(), [centre.tolist()] * len(near))
         return any(h[0] == -1 for h in hits)
 
@@ -189,6 +217,12 @@ def _stack_pose(entry, spot, boxes) -> tuple | None:
         z_base = max(z_base, spot.floor_z + min(spot.clearance, 0.12))  # across the opening
     if z_base + entry.dims[2] > spot.floor_z + spot.clearance + 0.25:
         return None
+    return _centred_pose(entry, spot, z_base)
+
+
+def _centred_pose(entry, spot, z_base: float) -> tuple:
+    """The object's box centred over the region, its bottom at `z_base`, turned as the region is."""
+    x, y = spot.center
     lo, hi = np.array(entry.bbox_min[:2]), np.array(entry.bbox_max[:2])
     centre = (lo + hi) / 2
     c, s_ = math.cos(spot.yaw), math.sin(spot.yaw)
@@ -197,16 +231,31 @@ def _stack_pose(entry, spot, boxes) -> tuple | None:
     return ox, oy, z_base - entry.bbox_min[2] + 0.003, spot.yaw, None
 
 
-def _region_distance(spot, eyes: np.ndarray) -> float:
-    """Metres from the nearest of `eyes` ((N, 3)) to the nearest point of a region's floor."""
-    if len(eyes) == 0:
-        return math.inf
+def _box_distances(spot, eyes: np.ndarray, top: float) -> np.ndarray:
+    """Metres from each of `eyes` ((N, 3)) to the nearest point of a region's volume: its footprint from
+    its floor up to its ceiling or the receptacle's `top`, whichever is lower. This is the part of the
+    receptacle that holds the region (AI2-THOR's Drawer, Cabinet or GarbageCan), whose nearest point
+    AI2-THOR measures reach to."""
     c, s = math.cos(spot.yaw), math.sin(spot.yaw)
     rel = eyes[:, :2] - np.array(spot.center)
     local = np.column_stack([rel[:, 0] * c + rel[:, 1] * s, -rel[:, 0] * s + rel[:, 1] * c])  # into the region frame
     half = np.array(spot.size) / 2
     flat = np.linalg.norm(local - np.clip(local, -half, half), axis=1)
-    return float(np.min(np.hypot(flat, eyes[:, 2] - spot.floor_z)))
+    ceiling = max(spot.floor_z, min(spot.floor_z + spot.clearance, top))
+    return np.hypot(flat, eyes[:, 2] - np.clip(eyes[:, 2], spot.floor_z, ceiling))
+
+
+def _region_distance(spot, eyes: np.ndarray, top: float) -> float:
+    """Metres from the nearest of `eyes` to the region's volume (`_box_distances`)."""
+    return float(np.min(_box_distances(spot, eyes, top))) if len(eyes) else math.inf
+
+
+def _open_tops(entry) -> set[str]:
+    """Names of the vessel regions open at the top (a pan, bowl, pot, basin or garbage can: a volume
+    with no door and nothing over it): what goes in may stand out over the rim, as an apple does from a
+    pan in AI2-THOR, so their height does not limit what they take."""
+    return {r["name"] for r in entry.regions if r["kind"] == "volume" and not r.get("requires_open")
+            and shades(entry)[r["name"]].roof is None}
 
 
 def _needs_open(entry, region_name: str) -> bool:

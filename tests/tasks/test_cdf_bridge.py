@@ -19,6 +19,7 @@ from luminous_sim.tasks import (
     required_objects,
     task_from_cdf,
 )
+from luminous_sim.tasks.cdf_bridge import fits_on
 from tests.tasks.helpers import state_of
 
 EXAMPLES = Path(__file__).resolve().parents[2] / "cdf" / "examples"
@@ -114,6 +115,19 @@ def test_cdf_for_task_puts_the_desk_lamp_on_a_side_table():
     )
     (rel,) = [r for r in doc.scene.relations if r.subject == "lamp"]
     assert rel.relation == "on" and doc.object_named(rel.target).type == "SideTable"
+
+
+def test_cdf_for_task_puts_an_object_where_it_fits_and_not_in_its_target():
+    """A baseball bat is longer than any side table is wide: it goes on the bed (a side table made every
+    layout fail); a plunger, which only a cabinet or a cart holds, goes on a cart (in a cabinet, the goal
+    "plunger in a cabinet" held from the start)."""
+    assert not fits_on("SideTable", "BaseballBat") and fits_on("Bed", "BaseballBat")
+    bat = cdf_for_task("look_at_obj_in_light", PddlParams("BaseballBat", toggle_target="DeskLamp"), "Bedroom")
+    (rel,) = [r for r in bat.scene.relations if r.subject == "target"]
+    assert bat.object_named(rel.target).type == "Bed"
+    plunger = cdf_for_task("pick_and_place_simple", PddlParams("Plunger", "Cabinet"), "Bathroom")
+    (rel,) = [r for r in plunger.scene.relations if r.subject == "target"]
+    assert plunger.object_named(rel.target).type == "Cart"
 
 
 def test_cdf_for_task_errors():
