@@ -51,8 +51,9 @@ def int_range(lo: int, hi: int | None = None) -> Callable[[str], int]:
 
 seed = int_range(0, MAX_SEED)
 """A random seed: a non-negative integer."""
-positive_int = int_range(1)
-non_negative_int = int_range(0)
+positive_int = int_range(1, MAX_SEED)
+"""A count or size: 1 .. 2**63-1 (beyond that, range() and progress bars overflow a C long)."""
+non_negative_int = int_range(0, MAX_SEED)
 
 
 def positive_float(text: str) -> float:
