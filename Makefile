@@ -12,6 +12,8 @@ $(BIN)/luminous: pyproject.toml
 	$(BIN)/pip install --quiet -e '.[test]'
 	# the learned speaker's tests need torch; the CPU build is installed by exact version (never a CUDA one)
 	$(BIN)/pip install --quiet torch==2.13.0 || echo "torch==2.13.0 unavailable: the speaker tests will skip"
+	# RL and offline RL (the `learn` and `minari` extras), after torch so that pip keeps that torch
+	$(BIN)/pip install --quiet -e '.[learn,minari]' || echo "stable-baselines3/minari unavailable: their tests will skip"
 	touch $(BIN)/luminous
 
 install: $(BIN)/luminous
@@ -20,12 +22,12 @@ demo: install
 	$(BIN)/luminous demo --out $(OUT) --seed 0
 
 test: install
-	$(BIN)/ruff check luminous_sim tests benchmarks scripts
+	$(BIN)/ruff check luminous_sim tests benchmarks scripts examples
 	$(BIN)/mypy
 	$(BIN)/python -m pytest -q -m "not slow" tests
 
 lint: install
-	$(BIN)/ruff check luminous_sim tests benchmarks scripts
+	$(BIN)/ruff check luminous_sim tests benchmarks scripts examples
 	$(BIN)/mypy
 
 bench: install

@@ -2,7 +2,9 @@
 generated so that a task of a given type is feasible in it and fits physically), export of a solved episode
 in ALFRED's json_2.1.0 layout, the ALFRED task parser (traj_data.json -> CDF) with the per-floor-plan
 merge and its coverage report, and dataset builds (S+/U+ splits, method (a)) that resume after a kill and
-run on local worker processes or a Ray cluster through a small reusable backend interface.
+run on local worker processes or a Ray cluster through a small reusable backend interface,
+and oracle demonstrations of a registered env as a Minari dataset (offline RL; needs the `minari` extra,
+imported only when `export_minari` runs).
 
 Typical use::
 
@@ -53,6 +55,13 @@ from luminous_sim.data.build import (
     task_fallback_scene,
 )
 from luminous_sim.data.manifest import Manifest, ManifestError
+from luminous_sim.data.minari_export import (
+    MinariExport,
+    MinariExportError,
+    default_minari_id,
+    export_minari,
+    minari_dataset_path,
+)
 from luminous_sim.data.task_scenes import physical_misfit, scene_for_task, task_misfit
 
 __all__ = [
@@ -75,6 +84,8 @@ __all__ = [
     "ManifestError",
     "MergeConflict",
     "MergedCDF",
+    "MinariExport",
+    "MinariExportError",
     "NoDesignScene",
     "ParseNote",
     "RayBackend",
@@ -85,15 +96,18 @@ __all__ = [
     "build",
     "build_split",
     "clear_for_put",
+    "default_minari_id",
     "design_scene",
     "design_task",
     "export_alfred",
+    "export_minari",
     "fold_subgoals",
     "layout_scene",
     "make_backend",
     "map_jobs",
     "merge_by_floor_plan",
     "merge_parses",
+    "minari_dataset_path",
     "parse_alfred",
     "parse_directory",
     "physical_misfit",

@@ -11,9 +11,12 @@ from gymnasium import spaces
 from luminous_sim.env.vocabulary import encode, vocabulary
 
 
-class InstructionTokens(gymnasium.ObservationWrapper):
+class InstructionTokens(gymnasium.ObservationWrapper, gymnasium.utils.RecordConstructorArgs):
     """The `instruction` observation as a fixed-length vector of token ids over a fixed vocabulary
     (`luminous_sim.env.vocabulary`), so that stable-baselines3's `MultiInputPolicy` takes it unchanged.
+
+    The wrapper is recorded in the wrapped env's `spec` (`additional_wrappers`), so `gymnasium.make(env.spec)`
+    rebuilds it (as Minari's `recover_environment` does).
 
     Args:
         env: an env whose observation is a Dict with a `Text` `instruction`.
@@ -22,7 +25,8 @@ class InstructionTokens(gymnasium.ObservationWrapper):
     """
 
     def __init__(self, env: gymnasium.Env, length: int = 32, space: Literal["multidiscrete", "box"] = "multidiscrete"):
-        super().__init__(env)
+        gymnasium.utils.RecordConstructorArgs.__init__(self, length=length, space=space)
+        gymnasium.ObservationWrapper.__init__(self, env)
         if space not in ("multidiscrete", "box"):
             raise ValueError(f"space {space!r}: expected 'multidiscrete' or 'box'")
         self.length = length

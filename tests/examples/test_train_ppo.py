@@ -1,0 +1,74 @@
+"""examples/train_ppo.py end to end on a tiny budget: a few hundred PPO steps, the files it promises, a saved
+model that loads and acts, and a resumed run that goes on from the save."""
+
+from __future__ import annotations
+
+import csv
+import importlib.util
+import json
+import sys
+
+import pytest
+
+from tests.conftest import REPO
+
+pytest.importorskip("stable_baselines3")
+
+ENV = "Luminous-NavToObject-64-v0"
+TINY = ["--env", ENV, "--ppo", "n_steps=64", "--ppo", "batch_size=32", "--ppo", "n_epochs=1",
+        "--env-kwarg", "max_steps=40"]
+
+
+@pytest.fixture(scope="module")
+def train_ppo():
+    spec = importlib.util.spec_from_file_location("train_ppo", REPO / "examples" / "train_ppo.py")
+    module = importlib.util.module_from_spec(spec)
+    sys.modules["train_ppo"] = module
+    spec.loader.exec_module(module)
+    yield module
+    del sys.modules["train_ppo"]
+
+
+def _curve(path):
+    with path.open() as fh:
+        return list(csv.DictReader(fh))
+
+
+def test_train_save_evaluate_and_resume(tmp_path, train_ppo, capsys):
+    from stable_baselines3 import PPO
+
+    out = tmp_path / "ppo"
+    assert train_ppo.main([*TINY, "--steps", "128", "--eval-episodes", "2", "--out", str(out)]) == 0
+    for name in ("model.zip", "curve.csv", "curve.png", "config.json", "eval.json"):
+        assert (out / name).is_file() and (out / name).stat().st_size > 0, name
+    assert (out / "curve.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+    rows = _curve(out / "curve.csv")
+    assert rows and list(rows[0]) == list(train_ppo.CURVE_FIELDS)
+    assert all(0 < int(r["timesteps"]) <= 128 and int(r["success"]) in (0, 1) for r in rows)
+    report = json.loads((out / "eval.json").read_text())
+    assert report["timesteps"] == 128 and set(report) >= {"random", "ppo", "seeds"}
+    assert report["random"]["episodes"] == report["ppo"]["episodes"] == 2
+    lo, hi = report["ppo"]["ci95"]
+    assert 0 <= lo <= report["ppo"]["success_rate"] <= hi <= 1
+    config = json.loads((out / "config.json").read_text())
+    assert config["env_kwargs"] == {**train_ppo.TRAIN_KWARGS, "max_steps": 40} and config["ppo"]["n_steps"] == 64
+
+    env = train_ppo.make_env(ENV)
+    model = PPO.load(out / "model.zip", device="cpu")
+    assert model.action_space == env.action_space  # (SB3 keeps the image channels first in its own space)
+    obs, _ = env.reset(seed=7)
+    action, _ = model.predict(obs)
+    assert env.action_space.contains(int(action))
+    env.step(int(action))
+    env.close()
+
+    assert train_ppo.main([*TINY, "--steps", "192", "--eval-episodes", "0", "--out", str(out), "--resume"]) == 0
+    resumed = _curve(out / "curve.csv")
+    assert resumed[: len(rows)] == rows and len(resumed) > len(rows)
+    assert PPO.load(out / "model.zip", device="cpu").num_timesteps == 192
+    assert json.loads((out / "eval.json").read_text())["timesteps"] == 192
+
+
+def test_bad_env_options_are_refused(train_ppo):
+    with pytest.raises(SystemExit, match="name=value"):
+        train_ppo.main(["--out", "x", "--env-kwarg", "max_steps"])
