@@ -18,6 +18,7 @@ import numpy as np
 
 from luminous_sim.assets.catalog import Catalog, default_catalog
 from luminous_sim.errors import LuminousError
+from luminous_sim.layouts import trainset
 from luminous_sim.layouts.convert import layout_of_scene, room_of_shell
 from luminous_sim.layouts.model import Layout, LayoutError, LayoutObject, Provenance
 from luminous_sim.rooms.shell import RoomShell
@@ -76,7 +77,6 @@ class LearnedLayouts:
 
     def layout(self, shell: RoomShell, seed: int) -> Layout:
         from luminous_sim.cssg import structure_scene
-        from luminous_sim.layouts import trainset
         from luminous_sim.layouts.atiss_net import sample
 
         data = self._data or load_model(self.model)
@@ -105,9 +105,7 @@ def _inside(shell: RoomShell, frame) -> np.ndarray:
     """[y, x] over the centre bins: whether the bin's centre lies on the floor."""
     import shapely
 
-    from luminous_sim.layouts.trainset import POS_BINS, pos_value
-
-    c = np.array([pos_value(k) for k in range(POS_BINS)])
+    c = np.array([trainset.pos_value(k) for k in range(trainset.POS_BINS)])
     u, v = np.meshgrid(c, c)
     return np.asarray(shapely.contains_xy(shell.polygon(), frame.cx + u * frame.half, frame.cy + v * frame.half))
 
@@ -127,7 +125,6 @@ def train_layouts(out: Path, per_type: int = 80, epochs: int = 16, seed: int = 0
     checkpoint to `out` atomically. The same arguments give the same model."""
     torch = _torch()
     from luminous_sim.assets.objio import write_atomic
-    from luminous_sim.layouts import trainset
     from luminous_sim.layouts.atiss_net import NetConfig, TrainConfig, checkpoint, train
 
     t0 = time.perf_counter()
