@@ -4,6 +4,8 @@
     python benchmarks/bench_cssg.py --n 10 --no-physics
     python benchmarks/bench_cssg.py --n 60 --alfred-rooms        # in the 30 AI2-THOR rooms of each type
     python benchmarks/bench_cssg.py --n 60 --alfred-rooms --empty-cdf   # defaults and implicit rules only
+    python benchmarks/bench_cssg.py --methods cssg uniform learned front atiss --n 10 --episodes 4
+                                   # methods compared on the same rooms and tasks (layout_methods.py)
 
 Per room type it uses the example CDF of that room type (explicit relations) and reports, for CSSG
 and the baseline: explicit relations met, implicit rules met, scenes with interpenetrations > 1 cm,
@@ -211,7 +213,15 @@ def main() -> None:
     ap.add_argument("--grid-dir", type=Path, default=Path("out/bench"))
     ap.add_argument("--alfred-rooms", action="store_true", help="rooms converted from AI2-THOR's FloorPlans")
     ap.add_argument("--empty-cdf", action="store_true", help="a CDF that asks only for the room type")
+    ap.add_argument("--methods", nargs="+", help="compare these methods instead (layout_methods.METHODS): "
+                    "cssg uniform learned front atiss")
+    ap.add_argument("--episodes", type=int, default=0, help="with --methods: oracle episodes per task type")
     args = ap.parse_args()
+    if args.methods:
+        from layout_methods import compare
+
+        compare(args.methods, args.rooms, args.n, args.episodes, not args.no_physics)
+        return
     for room in args.rooms:
         run(room, args.n, not args.no_physics, None if args.alfred_rooms or args.empty_cdf else args.grid_dir,
             args.alfred_rooms, args.empty_cdf)

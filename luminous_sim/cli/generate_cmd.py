@@ -26,7 +26,13 @@ def register(sub: argparse._SubParsersAction) -> None:
                         help="output folder (with --count > 1: one scene_NNNNN/ folder per scene in it)")
     parser.add_argument("--room", help="a room-library name (e.g. FloorPlan1, kitchen_L; see `luminous rooms list`); "
                         "overrides the CDF's room")
-    parser.add_argument("--baseline", action="store_true", help="uniform-random placement instead of CSSG")
+    parser.add_argument("--method", choices=("cssg", "uniform", "learned"), default="cssg",
+                        help="cssg (default); uniform: the uniform-random baseline; learned: furniture by the "
+                        "learned layout model (needs torch), repaired and furnished by CSSG, the CDF giving only "
+                        "the room and the small objects it names (not its relations)")
+    parser.add_argument("--baseline", action="store_true", help="the same as --method uniform")
+    parser.add_argument("--model", type=Path, help="with --method learned: a checkpoint of `luminous train-layouts` "
+                        "(default: the shipped model)")
     parser.add_argument("--no-physics", action="store_true", help="skip the PyBullet settling check")
     parser.set_defaults(func=_run)
 
@@ -74,7 +80,9 @@ def _run(args: argparse.Namespace) -> int:
     failures = 0
     for k in tqdm(range(args.count), desc="scenes", unit="scene", disable=args.count == 1):
         seed = args.seed + k
-        if args.baseline:
+        if args.method == "learned":
+            generated = _learned(doc, shell, seed, args.model)
+        elif args.baseline or args.method == "uniform":
             from luminous_sim.assets.catalog import default_catalog
             from luminous_sim.cssg import choose_room
 
@@ -103,3 +111,20 @@ def _run(args: argparse.Namespace) -> int:
     if args.count > 1:
         print(f"wrote {args.count} scenes under {args.out} ({args.count - failures} fully valid)")
     return 0
+
+
+def _learned(doc, shell, seed: int, model: Path | None):
+    """The learned generator's scene for `seed` in `shell` (else a room the CDF allows), with the CDF's
+    small objects required."""
+    import numpy as np
+
+    from luminous_sim.cssg import choose_room
+    from luminous_sim.layouts import LearnedLayouts, realize
+    from luminous_sim.vocab import abilities
+
+    room = shell or choose_room(doc, np.random.default_rng(np.random.SeedSequence([seed, 0])))
+    required = tuple(sorted({o.type for o in doc.scene.objects if abilities(o.type).pickupable}))
+    realized = realize(LearnedLayouts(model).layout(room, seed), seed, required=required)
+    for problem in realized.problems():
+        print(f"note: seed {seed}: learned layout: {problem}")
+    return realized.given.generated

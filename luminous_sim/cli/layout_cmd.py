@@ -1,5 +1,6 @@
-"""`luminous import-layout` and `luminous export-layout`: layouts from other methods (3D-FRONT, ATISS) or
-our own format into scenes, and scenes into the layout format (docs/layouts.md)."""
+"""`luminous import-layout`, `export-layout` and `train-layouts`: layouts from other methods (3D-FRONT, ATISS)
+or our own format into scenes, scenes into the layout format, and the learned generator's training
+(docs/layouts.md)."""
 
 from __future__ import annotations
 
@@ -7,10 +8,12 @@ import argparse
 import json
 from pathlib import Path
 
-from luminous_sim.cli.args import output_dir, output_file, seed
+from luminous_sim.cli.args import int_range, output_dir, output_file, seed
 from luminous_sim.errors import InfeasibleSceneError
 from luminous_sim.vocab import ROOM_TYPES
 
+DEFAULT_EPOCHS = 16
+DEFAULT_ROOMS = 80
 EPILOG = ("example: luminous import-layout tests/layouts/fixtures/front_kitchen.json --format front "
           "--model-info tests/layouts/fixtures/front_model_info.json --out out/imported")
 
@@ -42,6 +45,21 @@ def register(sub: argparse._SubParsersAction) -> None:
     export.add_argument("scene", type=Path, help="a scene.json written by `luminous generate`")
     export.add_argument("--out", type=output_file([".json"], "a JSON"), required=True, help="layout file to write")
     export.set_defaults(func=_run_export)
+    train = sub.add_parser("train-layouts", help="train the learned layout generator (needs torch)",
+                           description="Train the ATISS-like layout model on CSSG's layouts in procedural rooms and "
+                           "in the rooms converted from AI2-THOR, on the CPU, and write its checkpoint. The same "
+                           "arguments give the same model; the defaults remake the shipped one (a few minutes).",
+                           epilog="example: luminous train-layouts --out model.pt; then "
+                           "luminous generate --method learned --model model.pt --out out/l")
+    train.add_argument("--out", type=output_file([".pt"], "a .pt"), required=True, help="checkpoint to write")
+    train.add_argument("--epochs", type=int_range(1, 10_000), default=DEFAULT_EPOCHS,
+                       help=f"passes over the training views (default {DEFAULT_EPOCHS})")
+    train.add_argument("--rooms", type=int_range(1, 10_000), default=DEFAULT_ROOMS,
+                       help=f"training rooms per room type (default {DEFAULT_ROOMS})")
+    train.add_argument("--seed", type=seed, default=0, help="seed of the training draws (default 0)")
+    train.add_argument("--no-augment", action="store_true", help="no quarter-turned and mirrored views")
+    train.add_argument("--quiet", action="store_true", help="no loss per epoch")
+    train.set_defaults(func=_run_train)
 
 
 def _require(types: list[str]) -> tuple[str, ...]:
@@ -94,4 +112,18 @@ def _run_export(args: argparse.Namespace) -> int:
     layout = layout_of_scene(Scene.load(args.scene), default_catalog())
     layout.save(args.out)
     print(f"wrote {args.out} ({len(layout.objects)} objects, room {layout.room.name})")
+    return 0
+
+
+def _run_train(args: argparse.Namespace) -> int:
+    from luminous_sim.layouts import train_layouts
+
+    def progress(epoch: int, loss: float) -> None:
+        if not args.quiet:
+            print(f"epoch {epoch}/{args.epochs}: loss {loss:.3f}", flush=True)
+
+    result = train_layouts(args.out, per_type=args.rooms, epochs=args.epochs, seed=args.seed,
+                           augment=not args.no_augment, progress=progress)
+    print(f"wrote {result.path} (trained on {result.layouts} CSSG layouts, {result.examples} views, final loss "
+          f"{result.losses[-1]:.3f}, {result.seconds:.0f} s)")
     return 0

@@ -13,6 +13,7 @@ Typical use::
 from luminous_sim.cssg.baseline import empty_cdf, generate_uniform, sample_uniform
 from luminous_sim.cssg.given import GivenScene, Placement, Repair, place_given
 from luminous_sim.cssg.pipeline import ATTEMPTS, Generated, choose_room, generate, sample_layout, start_outside
+from luminous_sim.cssg.structure import structure_scene
 from luminous_sim.cssg.validate import LayoutReport, RelationCheck, check_layout
 
 __all__ = [
@@ -32,4 +33,5 @@ __all__ = [
     "sample_layout",
     "sample_uniform",
     "start_outside",
+    "structure_scene",
 ]

@@ -17,7 +17,7 @@ import numpy as np
 from luminous_sim.assets.catalog import AssetEntry, Catalog
 from luminous_sim.cssg.draft import SceneDraft
 from luminous_sim.rooms.shell import CounterRun, FixtureSlot, RoomShell, Wall
-from luminous_sim.scene import SceneObject, against_wall, footprint, local_to_world
+from luminous_sim.scene import Scene, SceneObject, against_wall, footprint, local_to_world
 
 GAP = 0.01
 CLEAR_STEP = 0.05
@@ -293,3 +293,11 @@ def fixture_types(shell: RoomShell, catalog: Catalog) -> set[str]:
     draft = SceneDraft(shell, catalog, np.random.default_rng(0))
     place_fixtures(draft)
     return {p.obj.type for p in draft.placed}
+
+
+def structure_scene(shell: RoomShell, seed: int, catalog: Catalog) -> Scene:
+    """The room's fixtures alone, as `generate`'s first attempt lays them (its structure layer, same draws):
+    what a generator that furnishes only the rest of the room (a learned one) is given with the room."""
+    draft = SceneDraft(shell, catalog, np.random.default_rng(np.random.SeedSequence([seed, 0])))
+    place_fixtures(draft)
+    return draft.to_scene("structure", seed)

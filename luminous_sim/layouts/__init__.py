@@ -6,12 +6,14 @@ Typical use::
     from luminous_sim import layouts
     layout = layouts.import_front(path)            # or layouts.load(path), layouts.import_atiss(path)
     realized = layouts.realize(layout, seed=0)     # realized.given.generated: scene and report
+    layout = layouts.LearnedLayouts().layout(shell, seed=0)   # the learned generator (torch, lazily)
 """
 
 from luminous_sim.layouts.atiss import import_atiss
 from luminous_sim.layouts.convert import layout_of_scene, room_of_shell, shell_of_room
 from luminous_sim.layouts.front import import_front
 from luminous_sim.layouts.generators import CSSGLayouts, LayoutGenerator, UniformLayouts
+from luminous_sim.layouts.learned import LearnedLayouts, train_layouts
 from luminous_sim.layouts.matching import MAX_SCALE, MIN_SCALE, CategoryMatch, SizeMatch, match_category, match_size
 from luminous_sim.layouts.model import (
     LAYOUT_FORMAT,
@@ -41,6 +43,7 @@ __all__ = [
     "LayoutObject",
     "LayoutRoom",
     "LayoutWindow",
+    "LearnedLayouts",
     "Provenance",
     "Realized",
     "SizeMatch",
@@ -57,4 +60,5 @@ __all__ = [
     "room_of_shell",
     "schema_dict",
     "shell_of_room",
+    "train_layouts",
 ]

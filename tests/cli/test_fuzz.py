@@ -44,12 +44,14 @@ COMMANDS: dict[tuple[str, ...], dict[str, list[str] | None]] = {
     ("demo",): {"--out": PATHS, "--seed": NUMBERS, "--room-types": ROOM_TYPES, "--no-episode": None},
     ("generate",): {"--cdf": EXAMPLES + ["@bigsize", "@badyaml", *PATHS], "--room-type": ROOM_TYPES,
                     "--seed": NUMBERS, "--count": NUMBERS, "--out": PATHS, "--room": ROOMS, "--baseline": None,
-                    "--no-physics": None},
+                    "--no-physics": None, "--method": ["cssg", "uniform", "learned", "x"], "--model": PATHS},
     ("import-layout",): {"": LAYOUTS + PATHS, "--format": ["front", "atiss", "luminous", "x"], "--out": PATHS,
                          "--seed": NUMBERS, "--room": ["Kitchen-2306", "Balcony-1720", *ROOMS],
                          "--model-info": [MODEL_INFO, *PATHS], "--room-type": ROOM_TYPES, "--require": TYPES,
                          "--no-repair": None, "--no-physics": None},
     ("export-layout",): {"": PATHS, "--out": PATHS},
+    ("train-layouts",): {"--out": PATHS + ["m.pt", "@dir/m.pt"], "--epochs": NUMBERS, "--rooms": NUMBERS,
+                         "--seed": NUMBERS, "--no-augment": None, "--quiet": None},
     ("rooms", "list"): {"--json": None},
     ("rooms", "convert"): {"--layouts": PATHS, "--out": PATHS, "--scene": NUMBERS},
     ("rooms", "show"): {"": ROOMS, "--out": PATHS, "--seed": NUMBERS},
@@ -104,8 +106,10 @@ def _sandbox(root: Path) -> dict[str, str]:
 def _stub_heavy_work(monkeypatch) -> None:
     import luminous_sim.assets.build as build
     import luminous_sim.assets.importer as importer
+    import luminous_sim.cli.generate_cmd as generate_cmd
     import luminous_sim.cssg as cssg
     import luminous_sim.demo as demo
+    import luminous_sim.layouts as layouts
     import luminous_sim.scene_outputs as scene_outputs
     import luminous_sim.world.asset_sheet as asset_sheet
 
@@ -120,6 +124,9 @@ def _stub_heavy_work(monkeypatch) -> None:
     monkeypatch.setattr(cssg, "sample_uniform", lambda doc, room, rng, cat: (
         SimpleNamespace(to_scene=lambda *a, **k: scene), None))
     monkeypatch.setattr(cssg, "choose_room", lambda doc, rng, catalog=None: None)
+    monkeypatch.setattr(generate_cmd, "_learned", lambda doc, shell, seed, model: SimpleNamespace(scene=scene))
+    monkeypatch.setattr(layouts, "train_layouts", lambda out, **kw: SimpleNamespace(
+        path=out, layouts=0, examples=0, losses=[0.0], seconds=0.0))
     monkeypatch.setattr(scene_outputs, "write_scene_outputs", lambda g, out, physics=True: {"layout": {"ok": True}})
     monkeypatch.setattr(importer, "write_asset", lambda spec, out, cache: {"dims": [0.1, 0.1, 0.1],
                                                                           "collision_hulls": 1, "id": spec.asset_id,
