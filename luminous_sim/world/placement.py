@@ -105,7 +105,8 @@ def find_spot(world: World, state: WorldState, oid: str, receptacle: str, rng: n
             ceiling = spot.floor_z + spot.clearance
             occupied = [fp for (lo, hi), fp in zip(boxes, prints)  # only what is on this shelf
                         if lo[2] < ceiling and hi[2] > spot.floor_z - 0.01]
-            got = _sample_in_view(world, entry, spot, rng, occupied, eyes, real, host, top, anywhere)
+            got = _sample_in_view(world, entry, spot, rng, occupied, eyes, real, host, top, anywhere,
+                                  framed=_in_frame(world) if not dry_run else None)
             if got is None and spot.gated and not anywhere:  # the back half too, rather than refusing
                 got = sample_in_region(entry, dc_replace(spot, gated=False), rng, occupied, tries=60)
             if got is None and type_of(state, receptacle) in PILING_RECEPTACLES and not anywhere:
@@ -128,8 +129,29 @@ def _host_now(world: World, state: WorldState, receptacle: str) -> SceneObject:
     return base.model_copy(update={"position": tuple(round(v, 4) for v in pos), "yaw": round(yaw, 5)})
 
 
+def _in_frame(world: World, margin: float = 0.9):
+    """Whether a point lies inside the agent's current picture (within `margin` of its half-angles): a ray
+    from the eye is clear of a basin's rim at 45 degrees to the side too, where the camera does not look."""
+    pose, fov = world.agent, math.radians(world.config.fov)
+    forward = np.array(pose.view_direction())
+    right = np.cross(forward, (0.0, 0.0, 1.0))
+    right /= np.linalg.norm(right)
+    up = np.cross(right, forward)
+    aspect = world.config.width / world.config.height
+    tan_v = math.tan(fov / 2) * margin
+    tan_h = math.tan(fov / 2) * aspect * margin
+    eye = np.array(pose.eye())
+
+    def inside(point: np.ndarray) -> bool:
+        d = point - eye
+        depth = float(d @ forward)
+        return depth > 0 and abs(float(d @ right)) <= tan_h * depth and abs(float(d @ up)) <= tan_v * depth
+
+    return inside
+
+
 def _sample_in_view(world: World, entry, spot, rng: np.random.Generator, occupied: list, eyes: np.ndarray,
-                    real: bool, host: SceneObject, top: float, anywhere: bool = False):
+                    real: bool, host: SceneObject, top: float, anywhere: bool = False, framed=None):
     """A free pose in the region within reach of one of `eyes` ((N, 3)) and, among a few draws, one
     such an eye has a clear line to: AI2-THOR puts things where the agent can see them, not behind a
     basin's near rim where they could not be picked up again. A real put (one eye, the agent's) falls
@@ -138,7 +160,8 @@ def _sample_in_view(world: World, entry, spot, rng: np.random.Generator, occupie
 
     `anywhere`: the pose need not be within reach of an eye, only the region (as AI2-THOR limits the
     distance to the receptacle, not to where the object lands in it); it must still be in sight of an
-    eye that reaches the region (`top` is the receptacle's top)."""
+    eye that reaches the region (`top` is the receptacle's top). `framed`: for a put from where the agent
+    stands, whether a point is in its picture (a pose in clear view must also be in frame)."""
     first = None
     reach = world.config.visibility_distance
     height = entry.bbox_max[2] - entry.bbox_min[2]
@@ -161,22 +184,21 @@ def _sample_in_view(world: World, entry, spot, rng: np.random.Generator, occupie
     def clear_view(got) -> bool:
         x, y, z = got[:3]
         centre = np.array([x, y, z + (entry.bbox_min[2] + entry.bbox_max[2]) / 2])
+        if framed is not None and not framed(centre):
+            return False
         near = eyes if anywhere else eyes[np.linalg.norm(eyes - centre, axis=1) <= reach + 0.01]
         hits = world.client.rayTestBatch(near.tolist(), [centre.tolist()] * len(near))
         return any(h[0] == -1 for h in hits)
 
-    drawn = False
     for _ in range(VIEW_TRIES):
         got = sample_in_region(entry, spot, rng, occupied, tries=60, accept=in_reach)
         if got is None:  # a tight fit (a box beside a remote) may take more draws
             continue
-        drawn = True
         first = first or (got if real else None)
         if clear_view(got):
             return got
-    if drawn:
-        return first
-    # no draw found room: scan for the gap left on a crowded table (the first few in clear view)
+    # no random draw was in clear view (a basin's near rim hides most of it), or none found room (the gap left
+    # on a crowded table): scan the region for the first few poses in clear view before settling for one that is not
     for i, got in enumerate(scan_region(entry, spot, occupied, accept=in_reach)):
         if clear_view(got):
             return got
