@@ -26,9 +26,14 @@ expert's next action (`expert_action`, in this env's action form).
 `reset(seed=s)` is deterministic: the same seed gives the same scene, task and first observation;
 `options={"scene": scene}` plays in a given `Scene`; `options={"split": "U+", "index": 3}` plays episode 3
 of an evaluation split (or `split=` at construction and `options={"index": 3}`; see `EnvConfig.split`), and
-raises `EpisodeUnavailable` (with its cause) for an entry whose layout or task cannot be drawn. Each reset
-builds its world afresh (a fraction of a second): `World` has no save/restore yet, and slicing replaces
-bodies, which PyBullet's restoreState does not undo.
+raises `EpisodeUnavailable` (with its cause) for an entry whose layout or task cannot be drawn.
+
+A world is built once per scene and reused while episodes stay in that scene (a repeated `options["scene"]`,
+split entries sharing a layout): `World.reset_to_start` puts it back as built in about a millisecond instead
+of a build's fraction of a second, with the same observations, rewards and infos to follow (see
+`luminous_sim.env.worlds`). The reset's `info["redraws"]` counts the draws rejected before the episode: the
+env keeps only episodes its expert solves (`verify_expert`, as ALFRED's generator keeps only tasks its
+planner solves), so the population is "solvable by the expert", and redraws say how much was filtered.
 """
 
 from __future__ import annotations
@@ -43,10 +48,11 @@ from gymnasium import spaces
 
 from luminous_sim.env.actions import ALFRED_ACTIONS, INTERACTIONS, NAVIGATION, STOP_NAMES, ActionTable, EmptySlot
 from luminous_sim.env.config import EnvConfig
-from luminous_sim.env.episodes import Episode, build_world, draw_episode, requested_entry, split_episode
+from luminous_sim.env.episodes import Episode, draw_episode, requested_entry, split_episode
 from luminous_sim.env.expert import Expert
 from luminous_sim.env.goals import goal_from_dict
 from luminous_sim.env.rewards import RewardConfig, step_reward
+from luminous_sim.env.worlds import WorldPool
 from luminous_sim.errors import FailureCode
 from luminous_sim.vocab import ALL_TYPES, abilities
 
@@ -113,6 +119,8 @@ class LuminousEnv(gymnasium.Env):
             obs["objects"] = spaces.MultiDiscrete(np.full(self.actions.slots, len(ALL_TYPES) + 1, np.int64))
         self.observation_space = spaces.Dict(obs)
         self.world: Any = None
+        self.worlds = WorldPool(self.config)
+        """Worlds kept for reuse while episodes stay in one scene (`builds` and `reuses` count them)."""
         self.episode: Episode | None = None
         self.history: list[Sent] = []
         self._slots: list[str] = []
@@ -135,11 +143,11 @@ class LuminousEnv(gymnasium.Env):
         self.episode = None
         entry = requested_entry(self.config, options, rng)
         if entry is not None:
-            self.episode, self.world = split_episode(self.config, entry)
+            self.episode, self.world = split_episode(self.config, entry, self.worlds)
         else:
-            self.episode, self.world = draw_episode(self.config, rng, scene=options.get("scene"))
+            self.episode, self.world = draw_episode(self.config, rng, self.worlds, scene=options.get("scene"))
         self._start()
-        return self._observation(), self._info(None, "")
+        return self._observation(), {**self._info(None, ""), "redraws": self.episode.redraws}
 
     def _start(self) -> None:
         assert self.episode is not None
@@ -187,6 +195,7 @@ class LuminousEnv(gymnasium.Env):
 
     def close(self) -> None:
         self._close_world()
+        self.worlds.clear()
         super().close()
 
     # ------------------------------------------------------------------ the expert
@@ -300,8 +309,9 @@ class LuminousEnv(gymnasium.Env):
         return info
 
     def _close_world(self) -> None:
+        """Give the world back to the pool (kept, restored, for another episode in its scene)."""
         if self.world is not None:
-            self.world.close()
+            self.worlds.put(self.world)
             self.world = None
 
     # ------------------------------------------------------------------ pickling
@@ -314,7 +324,8 @@ class LuminousEnv(gymnasium.Env):
             "np_random": self._np_random,
             "episode": None if ep is None else {
                 "scene": ep.scene.to_json(), "goal": ep.goal.to_dict(), "dirty": list(ep.dirty),
-                "expert": None if ep.expert is None else [list(ep.expert.actions), list(ep.expert.steps)]},
+                "expert": None if ep.expert is None else [list(ep.expert.actions), list(ep.expert.steps)],
+                "redraws": ep.redraws},
             "history": [(s.given, s.api, s.ok) for s in self.history],
             "counters": (self._steps, self._failures, self._reached),
         }
@@ -331,8 +342,8 @@ class LuminousEnv(gymnasium.Env):
         plan = data["expert"]
         expert = None if plan is None else ExpertPlan(tuple(plan[0]), steps=tuple(plan[1]))
         self.episode = Episode(Scene.from_json(data["scene"]), goal_from_dict(data["goal"]),
-                               tuple(data["dirty"]), expert)
-        self.world = build_world(self.episode.scene, self.config, self.episode.dirty)
+                               tuple(data["dirty"]), expert, data["redraws"])
+        self.world = self.worlds.get(self.episode.scene, self.episode.dirty)
         self._start()
         for given, api, ok in state["history"]:
             self.world.step(api)
