@@ -4,7 +4,7 @@
     python benchmarks/bench_env.py --repeats 5 --seconds 5   # longer, tighter figures
 
 Prints the machine load (`os.getloadavg()`) at the start and the end, then for ALFRED's camera (300x300,
-`Luminous-ALFRED-PickPlace-v0` by default) and the small ids' size (64 px, `Luminous-NavToObject-64-v0`),
+`Luminous-ALFRED-PickPlace-v1` by default) and the small ids' size (64 px, `Luminous-NavToObject-64-v1`),
 each figure as the median over repeats with its spread (min..max):
 
 - env steps/s, single process, for two action mixes from a seeded generator: `random`, a random policy
@@ -148,7 +148,7 @@ def bench(env_id: str, args: argparse.Namespace) -> None:
 
 def main(argv: list[str] | None = None) -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--ids", nargs="+", default=["Luminous-ALFRED-PickPlace-v0", "Luminous-NavToObject-64-v0"],
+    ap.add_argument("--ids", nargs="+", default=["Luminous-ALFRED-PickPlace-v1", "Luminous-NavToObject-64-v1"],
                     help="environment ids to measure")
     ap.add_argument("--mixes", nargs="+", choices=MIXES, default=list(MIXES), help="action mixes to time")
     ap.add_argument("--seed", type=int, default=0, help="episode seed (and action-generator seed)")

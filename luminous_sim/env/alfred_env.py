@@ -51,6 +51,7 @@ from luminous_sim.env.config import EnvConfig
 from luminous_sim.env.episodes import Episode, draw_episode, requested_entry, split_episode
 from luminous_sim.env.expert import Expert
 from luminous_sim.env.goals import goal_from_dict
+from luminous_sim.env.goto_reward import GotoReward, goto_targets
 from luminous_sim.env.rewards import RewardConfig, step_reward
 from luminous_sim.env.worlds import WorldPool
 from luminous_sim.errors import FailureCode
@@ -126,6 +127,8 @@ class LuminousEnv(gymnasium.Env):
         self._slots: list[str] = []
         """The object ids in the slots of the last observation (`objects` targets)."""
         self._expert = Expert()
+        self._goto: GotoReward | None = None
+        """ALFRED's navigation reward of the episode (dense rewards with the expert's plan known)."""
         self._scores: dict[str, int] = {}
         self._steps = 0
         self._failures = 0
@@ -154,6 +157,14 @@ class LuminousEnv(gymnasium.Env):
         self.history, self._steps, self._failures, self._reached = [], 0, 0, False
         self._expert.start(self.episode.expert.actions if self.episode.expert is not None else None)
         self._scores = self._goal_scores()
+        self._goto = None
+        r = self.rewards
+        if not r.sparse and self.config.navigation_reward and self.episode.expert is not None:
+            from luminous_sim.planning import NavGraph
+
+            agent = self.world.agent
+            self._goto = GotoReward(NavGraph(self.world.nav), goto_targets(agent, self.episode.expert.actions), agent,
+                                    shaping=r.goto_shaping, reach=r.goto_reach, bonus=r.section("GotoLocation"))
 
     def step(self, action: Any):
         """One action (a discrete index or an ALFRED dict); see the module docstring."""
@@ -176,6 +187,8 @@ class LuminousEnv(gymnasium.Env):
         expert_length = len(self.episode.expert.actions) if self.episode.expert is not None else 0
         reward = step_reward(self.rewards, before, self._scores, self.episode.goal.stages(), reached=reached,
                              action_ok=ok, step=self._steps, expert_length=expert_length)
+        if self._goto is not None:
+            reward += self._goto.step(self.world.agent, api["action"] if api else None, ok)
         terminated = success or stopped
         truncated = not terminated and (self._steps >= self.config.max_steps
                                         or self._failures >= self.config.max_failures)
@@ -348,6 +361,8 @@ class LuminousEnv(gymnasium.Env):
         for given, api, ok in state["history"]:
             self.world.step(api)
             self.history.append(Sent(given, api, ok))
+            if self._goto is not None:
+                self._goto.step(self.world.agent, api["action"], ok)
         self._steps, self._failures, self._reached = state["counters"]
         self._scores = self._goal_scores()
         self._observation()  # the object slots the agent saw last

@@ -45,6 +45,9 @@ class EnvConfig:
         max_failures: episode truncated after this many failed actions (ALFRED: 10).
         reward_mode: `dense` (ALFRED's configuration driven by the goal conditions) or `sparse`.
         reward: overrides of `RewardConfig` fields, by name.
+        navigation_reward: add ALFRED's navigation reward (the expert's go-to subgoals, spec section 5.2) to
+            the dense reward (needs `verify_expert`: the go-to locations are the expert's); the `-v0` ids
+            were registered without it.
         expert_in_info: put the expert's next action in `info` (it costs a plan when the agent deviates).
         verify_expert: keep only episodes the oracle solves (as ALFRED's generator does); it also gives
             the expert length that ALFRED's step penalty starts after.
@@ -73,6 +76,7 @@ class EnvConfig:
     max_failures: int = 10
     reward_mode: str = "dense"
     reward: dict[str, float] = field(default_factory=dict)
+    navigation_reward: bool = True
     expert_in_info: bool = False
     verify_expert: bool = True
     scene_attempts: int = 8
