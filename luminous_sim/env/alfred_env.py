@@ -39,7 +39,7 @@ planner solves), so the population is "solvable by the expert", and redraws say 
 from __future__ import annotations
 
 import string
-from dataclasses import dataclass
+from dataclasses import astuple, dataclass
 from typing import Any
 
 import gymnasium
@@ -47,6 +47,7 @@ import numpy as np
 from gymnasium import spaces
 
 from luminous_sim.env.actions import ALFRED_ACTIONS, INTERACTIONS, NAVIGATION, STOP_NAMES, ActionTable, EmptySlot
+from luminous_sim.env.cdf_scenes import cdf_episode, cdf_paths
 from luminous_sim.env.config import EnvConfig
 from luminous_sim.env.episodes import Episode, draw_episode, requested_entry, split_episode
 from luminous_sim.env.expert import Expert
@@ -54,7 +55,7 @@ from luminous_sim.env.goals import goal_from_dict
 from luminous_sim.env.goto_reward import GotoReward, goto_targets
 from luminous_sim.env.rewards import RewardConfig, step_reward
 from luminous_sim.env.worlds import WorldPool
-from luminous_sim.errors import FailureCode
+from luminous_sim.errors import FailureCode, LuminousError
 from luminous_sim.vocab import ALL_TYPES, abilities
 
 INSTRUCTION_CHARSET = string.ascii_letters + string.digits + " .,;:'!?-()\n"
@@ -145,8 +146,13 @@ class LuminousEnv(gymnasium.Env):
         self._close_world()
         self.episode = None
         entry = requested_entry(self.config, options, rng)
+        paths = cdf_paths(self.config, options)
+        if options.get("scene") is not None and (entry is not None or options.get("cdf")):
+            raise LuminousError("reset options: give one of 'scene', 'split'/'index' or 'cdf'")
         if entry is not None:
             self.episode, self.world = split_episode(self.config, entry, self.worlds)
+        elif paths and options.get("scene") is None:
+            self.episode, self.world = cdf_episode(self.config, paths, rng, self.worlds, options.get("scene_seed"))
         else:
             self.episode, self.world = draw_episode(self.config, rng, self.worlds, scene=options.get("scene"))
         self._start()
@@ -338,7 +344,7 @@ class LuminousEnv(gymnasium.Env):
             "episode": None if ep is None else {
                 "scene": ep.scene.to_json(), "goal": ep.goal.to_dict(), "dirty": list(ep.dirty),
                 "expert": None if ep.expert is None else [list(ep.expert.actions), list(ep.expert.steps)],
-                "redraws": ep.redraws},
+                "redraws": ep.redraws, "start": None if ep.start is None else list(astuple(ep.start))},
             "history": [(s.given, s.api, s.ok) for s in self.history],
             "counters": (self._steps, self._failures, self._reached),
         }
@@ -346,6 +352,7 @@ class LuminousEnv(gymnasium.Env):
     def __setstate__(self, state: dict[str, Any]) -> None:
         from luminous_sim.env.goals import ExpertPlan
         from luminous_sim.scene import Scene
+        from luminous_sim.world import AgentPose
 
         self.__init__(state["render_mode"], **state["kwargs"])  # type: ignore[misc]
         self._np_random = state["np_random"]
@@ -354,9 +361,10 @@ class LuminousEnv(gymnasium.Env):
             return
         plan = data["expert"]
         expert = None if plan is None else ExpertPlan(tuple(plan[0]), steps=tuple(plan[1]))
+        start = None if data["start"] is None else AgentPose(*data["start"])
         self.episode = Episode(Scene.from_json(data["scene"]), goal_from_dict(data["goal"]),
-                               tuple(data["dirty"]), expert, data["redraws"])
-        self.world = self.worlds.get(self.episode.scene, self.episode.dirty)
+                               tuple(data["dirty"]), expert, data["redraws"], start)
+        self.world = self.worlds.get(self.episode.scene, self.episode.dirty, start)
         self._start()
         for given, api, ok in state["history"]:
             self.world.step(api)

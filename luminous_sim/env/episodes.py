@@ -30,7 +30,7 @@ from luminous_sim.scene import Scene
 from luminous_sim.splits import SplitEntry, plus_split, split_entry
 from luminous_sim.tasks import TASK_TYPES, TaskSamplingError, task_info
 from luminous_sim.vocab import ROOM_TYPES, abilities
-from luminous_sim.world import World
+from luminous_sim.world import AgentPose, World
 
 CLEANING = "pick_clean_then_place_in_recep"
 UNAVAILABLE_CAUSES: tuple[str, ...] = ("layout", "no_task", "expert")
@@ -62,6 +62,8 @@ class Episode:
     redraws: int = 0
     """Draws rejected before this one: a scene CSSG could not lay out, no task of the type fitted, or (with
     `verify_expert`) the expert did not solve the task drawn."""
+    start: AgentPose | None = None
+    """Where the agent starts (a CDF's `task.agent`); None for the world's default start."""
 
 
 def dirty_for(world: World, task_type: str) -> tuple[str, ...]:
@@ -109,16 +111,16 @@ def _goal_worthy(object_type: str, task_type: str) -> bool:
     return ab.pickupable or ab.receptacle or ab.openable or ab.toggleable
 
 
-def _prove(episode: Episode, worlds: WorldPool) -> ExpertPlan | None:
+def prove(episode: Episode, worlds: WorldPool) -> ExpertPlan | None:
     """The expert's plan if it solves the episode in a world of its own, and its replay does too."""
-    shadow = worlds.get(episode.scene, episode.dirty)
+    shadow = worlds.get(episode.scene, episode.dirty, episode.start)
     try:
         plan = episode.goal.expert_plan(shadow)
     finally:
         worlds.put(shadow)
     if plan is None or plan.exact:
         return plan
-    replay = worlds.get(episode.scene, episode.dirty)
+    replay = worlds.get(episode.scene, episode.dirty, episode.start)
     try:
         ok = all(replay.step(a).success for a in plan.actions)
         view = replay.view()
@@ -170,13 +172,13 @@ def draw_episode(config: EnvConfig, rng: np.random.Generator, worlds: WorldPool,
             continue
         episode = Episode(candidate, goal, dirty, redraws=len(why))
         if config.verify_expert:
-            plan = _prove(episode, worlds)
+            plan = prove(episode, worlds)
             if plan is None:
                 worlds.put(world)
                 why.append(f"the expert does not solve {goal.instruction!r} in {candidate.room.name} "
                            f"(seed {candidate.seed})")
                 continue
-            episode = Episode(candidate, goal, dirty, plan, redraws=len(why))
+            episode = Episode(candidate, goal, dirty, plan, len(why))
         return episode, world
     raise LuminousError(f"no episode of {', '.join(config.task_types)} after {config.scene_attempts} attempts: "
                         + "; ".join(why[-3:]))
@@ -254,7 +256,7 @@ def split_episode(config: EnvConfig, entry: SplitEntry, worlds: WorldPool) -> tu
         episode = Episode(scene, goal, dirty, redraws=len(unsolved))
         if not config.verify_expert:
             return episode, world
-        plan = _prove(episode, worlds)
+        plan = prove(episode, worlds)
         if plan is not None:
             return Episode(scene, goal, dirty, plan, redraws=len(unsolved)), world
         worlds.put(world)

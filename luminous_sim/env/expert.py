@@ -64,7 +64,7 @@ class Expert:
     def _replan(self, env: LuminousEnv) -> None:
         episode = env.episode
         assert episode is not None, "reset the env first"
-        shadow = env.worlds.get(episode.scene, episode.dirty)
+        shadow = env.worlds.get(episode.scene, episode.dirty, episode.start)
         try:
             for step in env.history:
                 shadow.step(step.api)

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from luminous_sim.env.config import EnvConfig
 from luminous_sim.scene import Scene
-from luminous_sim.world import World, WorldConfig
+from luminous_sim.world import AgentPose, World, WorldConfig
 
 MAX_IDLE = 2
 """Restored worlds kept for the current scene (the agent's and the expert's; each is a PyBullet client)."""
@@ -31,8 +31,9 @@ class WorldPool:
         self.builds = 0
         self.reuses = 0
 
-    def get(self, scene: Scene, dirty: tuple[str, ...] = ()) -> World:
-        """A world of the scene at its start (a kept one, else a new one), set up (dirty objects)."""
+    def get(self, scene: Scene, dirty: tuple[str, ...] = (), start: AgentPose | None = None) -> World:
+        """A world of the scene at its start (a kept one, else a new one), set up: dirty objects, and the
+        agent at `start` (else the world's default start)."""
         if not self._same(scene):
             self.clear()
             self._scene = scene
@@ -44,6 +45,8 @@ class WorldPool:
             self.builds += 1
         if dirty:
             world.set_up_dirty(dirty)
+        if start is not None:
+            world.agent = start
         return world
 
     def put(self, world: World) -> None:
