@@ -26,7 +26,9 @@ expert's next action (`expert_action`, in this env's action form).
 `reset(seed=s)` is deterministic: the same seed gives the same scene, task and first observation;
 `options={"scene": scene}` plays in a given `Scene`; `options={"split": "U+", "index": 3}` plays episode 3
 of an evaluation split (or `split=` at construction and `options={"index": 3}`; see `EnvConfig.split`), and
-raises `EpisodeUnavailable` (with its cause) for an entry whose layout or task cannot be drawn.
+raises `EpisodeUnavailable` (with its cause) for an entry whose layout or task cannot be drawn;
+`options={"cdf": path, "scene_seed": s}` (or `cdf=` at construction) generates the scene from a CDF file,
+whose task section, if any, is the goal (see `luminous_sim.env.cdf_scenes`).
 
 A world is built once per scene and reused while episodes stay in that scene (a repeated `options["scene"]`,
 split entries sharing a layout): `World.reset_to_start` puts it back as built in about a millisecond instead
