@@ -23,7 +23,7 @@ import numpy as np
 
 from luminous_sim.cdf import AgentPoseSpec, ChallengeDefinition, Expr
 from luminous_sim.env.config import EnvConfig
-from luminous_sim.env.episodes import Episode, dirty_for, draw_goal, prove
+from luminous_sim.env.episodes import Episode, _prove, dirty_for, draw_goal
 from luminous_sim.env.goals import TaskGoal
 from luminous_sim.env.worlds import WorldPool
 from luminous_sim.errors import CDFError, InfeasibleSceneError, LuminousError
@@ -207,7 +207,7 @@ def cdf_episode(config: EnvConfig, paths: Sequence[str], rng: np.random.Generato
             world.agent = start
         episode = Episode(scene, goal, dirty, start=start, redraws=len(why))
         if config.verify_expert:
-            plan = prove(episode, worlds)
+            plan = _prove(episode, worlds)
             if plan is None:
                 worlds.put(world)
                 why.append(f"the expert does not solve {goal.instruction!r} in {path} (seed {seed})")

@@ -111,7 +111,7 @@ def _goal_worthy(object_type: str, task_type: str) -> bool:
     return ab.pickupable or ab.receptacle or ab.openable or ab.toggleable
 
 
-def prove(episode: Episode, worlds: WorldPool) -> ExpertPlan | None:
+def _prove(episode: Episode, worlds: WorldPool) -> ExpertPlan | None:
     """The expert's plan if it solves the episode in a world of its own, and its replay does too."""
     shadow = worlds.get(episode.scene, episode.dirty, episode.start)
     try:
@@ -172,7 +172,7 @@ def draw_episode(config: EnvConfig, rng: np.random.Generator, worlds: WorldPool,
             continue
         episode = Episode(candidate, goal, dirty, redraws=len(why))
         if config.verify_expert:
-            plan = prove(episode, worlds)
+            plan = _prove(episode, worlds)
             if plan is None:
                 worlds.put(world)
                 why.append(f"the expert does not solve {goal.instruction!r} in {candidate.room.name} "
@@ -256,7 +256,7 @@ def split_episode(config: EnvConfig, entry: SplitEntry, worlds: WorldPool) -> tu
         episode = Episode(scene, goal, dirty, redraws=len(unsolved))
         if not config.verify_expert:
             return episode, world
-        plan = prove(episode, worlds)
+        plan = _prove(episode, worlds)
         if plan is not None:
             return Episode(scene, goal, dirty, plan, redraws=len(unsolved)), world
         worlds.put(world)
