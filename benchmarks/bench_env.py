@@ -4,7 +4,7 @@
     python benchmarks/bench_env.py --repeats 5 --seconds 5   # longer, tighter figures
 
 Prints the machine load (`os.getloadavg()`) at the start and the end, then for ALFRED's camera (300x300,
-`Luminous-ALFRED-PickPlace-v0` by default) and the small ids' size (64 px, `Luminous-NavToObject-64-v0`),
+`Luminous-ALFRED-PickPlace-v1` by default) and the small ids' size (64 px, `Luminous-NavToObject-64-v1`),
 each figure as the median over repeats with its spread (min..max):
 
 - env steps/s, single process, for two action mixes from a seeded generator: `random`, a random policy
@@ -17,7 +17,10 @@ each figure as the median over repeats with its spread (min..max):
   autoreset inside the timed span (the count of such resets is printed);
 - reset time for a new scene (`reset(seed=s)`, a fresh seed each repeat: CSSG generates a room, a goal is
   drawn and the expert's plan proved) and for a reused one (`reset(seed=s, options={"scene": scene})`
-  with the scene of the previous episode: no generation, the rest as before).
+  with the scene of the previous episode: no generation, and the env's kept worlds of that scene are put
+  back (`World.reset_to_start`) instead of built, where their physics was not touched: the agent's world
+  is (no action was taken in it), the expert's proof world is only if the expert just walked). The worlds
+  built and reused during the reused-scene resets are printed beside the figure.
 """
 
 from __future__ import annotations
@@ -106,21 +109,25 @@ def vector_steps_per_s(env_id: str, mix: str, seed: int, repeats: int, seconds: 
     return rates, ended
 
 
-def reset_seconds(env_id: str, seed: int, repeats: int) -> tuple[list[float], list[float]]:
-    """Seconds per reset: a new scene each repeat, and the previous episode's scene passed again."""
+def reset_seconds(env_id: str, seed: int, repeats: int) -> tuple[list[float], list[float], tuple[int, int]]:
+    """Seconds per reset: a new scene each repeat, and the previous episode's scene passed again; the worlds
+    built and reused by the reused-scene resets."""
     env = gymnasium.make(env_id)
     env.reset(seed=seed)  # imports and first-use costs stay out of the figures
-    new, reused = [], []
+    pool = env.unwrapped.worlds  # type: ignore[attr-defined]
+    new, reused, builds, reuses = [], [], 0, 0
     for i in range(repeats):
         t0 = time.perf_counter()
         env.reset(seed=seed + 1 + i)
         new.append(time.perf_counter() - t0)
         scene = env.unwrapped.episode.scene  # type: ignore[attr-defined]
+        counts = pool.builds, pool.reuses
         t0 = time.perf_counter()
         env.reset(seed=seed + 1000 + i, options={"scene": scene})
         reused.append(time.perf_counter() - t0)
+        builds, reuses = builds + pool.builds - counts[0], reuses + pool.reuses - counts[1]
     env.close()
-    return new, reused
+    return new, reused, (builds, reuses)
 
 
 def bench(env_id: str, args: argparse.Namespace) -> None:
@@ -133,14 +140,15 @@ def bench(env_id: str, args: argparse.Namespace) -> None:
         vrates, vended = vector_steps_per_s(env_id, mix, args.seed, args.repeats, args.seconds)
         print(f"  steps/s, {mix:6} AsyncVectorEnv x2: {spread(vrates)}   autoresets: {vended}"
               f"   ({statistics.median(vrates) / statistics.median(rates):.2f}x single)")
-    new, reused = reset_seconds(env_id, args.seed, args.repeats)
+    new, reused, (builds, reuses) = reset_seconds(env_id, args.seed, args.repeats)
     print(f"  reset s, new scene:                 {spread(new, '.2f')}")
-    print(f"  reset s, reused scene:              {spread(reused, '.2f')}")
+    print(f"  reset s, reused scene:              {spread(reused, '.2f')}   worlds built: {builds}, "
+          f"reused: {reuses}")
 
 
 def main(argv: list[str] | None = None) -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--ids", nargs="+", default=["Luminous-ALFRED-PickPlace-v0", "Luminous-NavToObject-64-v0"],
+    ap.add_argument("--ids", nargs="+", default=["Luminous-ALFRED-PickPlace-v1", "Luminous-NavToObject-64-v1"],
                     help="environment ids to measure")
     ap.add_argument("--mixes", nargs="+", choices=MIXES, default=list(MIXES), help="action mixes to time")
     ap.add_argument("--seed", type=int, default=0, help="episode seed (and action-generator seed)")

@@ -1,4 +1,4 @@
-"""Layer L4: the Gymnasium environments (`gymnasium.make("Luminous-ALFRED-v0")` and friends).
+"""Layer L4: the Gymnasium environments (`gymnasium.make("Luminous-ALFRED-v1")` and friends).
 
 Ids are declared as data in the repository's `envs/*.toml` and registered when `luminous_sim` is imported,
 by string entry point, so that importing the package loads neither the simulator nor pybullet. Public
@@ -7,7 +7,7 @@ names below are loaded on first use for the same reason.
 Typical use::
 
     import gymnasium, luminous_sim
-    env = gymnasium.make("Luminous-PickUp-64-v0")
+    env = gymnasium.make("Luminous-PickUp-64-v1")
     obs, info = env.reset(seed=0)
     obs, reward, terminated, truncated, info = env.step(env.action_space.sample())
 """

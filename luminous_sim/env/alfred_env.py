@@ -26,15 +26,22 @@ expert's next action (`expert_action`, in this env's action form).
 `reset(seed=s)` is deterministic: the same seed gives the same scene, task and first observation;
 `options={"scene": scene}` plays in a given `Scene`; `options={"split": "U+", "index": 3}` plays episode 3
 of an evaluation split (or `split=` at construction and `options={"index": 3}`; see `EnvConfig.split`), and
-raises `EpisodeUnavailable` (with its cause) for an entry whose layout or task cannot be drawn. Each reset
-builds its world afresh (a fraction of a second): `World` has no save/restore yet, and slicing replaces
-bodies, which PyBullet's restoreState does not undo.
+raises `EpisodeUnavailable` (with its cause) for an entry whose layout or task cannot be drawn;
+`options={"cdf": path, "scene_seed": s}` (or `cdf=` at construction) generates the scene from a CDF file,
+whose task section, if any, is the goal (see `luminous_sim.env.cdf_scenes`).
+
+A world is built once per scene and reused while episodes stay in that scene (a repeated `options["scene"]`,
+split entries sharing a layout): `World.reset_to_start` puts it back as built in about a millisecond instead
+of a build's fraction of a second, with the same observations, rewards and infos to follow (see
+`luminous_sim.env.worlds`). The reset's `info["redraws"]` counts the draws rejected before the episode: the
+env keeps only episodes its expert solves (`verify_expert`, as ALFRED's generator keeps only tasks its
+planner solves), so the population is "solvable by the expert", and redraws say how much was filtered.
 """
 
 from __future__ import annotations
 
 import string
-from dataclasses import dataclass
+from dataclasses import astuple, dataclass
 from typing import Any
 
 import gymnasium
@@ -42,12 +49,15 @@ import numpy as np
 from gymnasium import spaces
 
 from luminous_sim.env.actions import ALFRED_ACTIONS, INTERACTIONS, NAVIGATION, STOP_NAMES, ActionTable, EmptySlot
+from luminous_sim.env.cdf_scenes import cdf_episode, cdf_paths
 from luminous_sim.env.config import EnvConfig
-from luminous_sim.env.episodes import Episode, build_world, draw_episode, requested_entry, split_episode
+from luminous_sim.env.episodes import Episode, draw_episode, requested_entry, split_episode
 from luminous_sim.env.expert import Expert
 from luminous_sim.env.goals import goal_from_dict
+from luminous_sim.env.goto_reward import GotoReward, goto_targets
 from luminous_sim.env.rewards import RewardConfig, step_reward
-from luminous_sim.errors import FailureCode
+from luminous_sim.env.worlds import WorldPool
+from luminous_sim.errors import FailureCode, LuminousError
 from luminous_sim.vocab import ALL_TYPES, abilities
 
 INSTRUCTION_CHARSET = string.ascii_letters + string.digits + " .,;:'!?-()\n"
@@ -113,11 +123,15 @@ class LuminousEnv(gymnasium.Env):
             obs["objects"] = spaces.MultiDiscrete(np.full(self.actions.slots, len(ALL_TYPES) + 1, np.int64))
         self.observation_space = spaces.Dict(obs)
         self.world: Any = None
+        self.worlds = WorldPool(self.config)
+        """Worlds kept for reuse while episodes stay in one scene (`builds` and `reuses` count them)."""
         self.episode: Episode | None = None
         self.history: list[Sent] = []
         self._slots: list[str] = []
         """The object ids in the slots of the last observation (`objects` targets)."""
         self._expert = Expert()
+        self._goto: GotoReward | None = None
+        """ALFRED's navigation reward of the episode (dense rewards with the expert's plan known)."""
         self._scores: dict[str, int] = {}
         self._steps = 0
         self._failures = 0
@@ -134,18 +148,31 @@ class LuminousEnv(gymnasium.Env):
         self._close_world()
         self.episode = None
         entry = requested_entry(self.config, options, rng)
+        paths = cdf_paths(self.config, options)
+        if options.get("scene") is not None and (entry is not None or options.get("cdf")):
+            raise LuminousError("reset options: give one of 'scene', 'split'/'index' or 'cdf'")
         if entry is not None:
-            self.episode, self.world = split_episode(self.config, entry)
+            self.episode, self.world = split_episode(self.config, entry, self.worlds)
+        elif paths and options.get("scene") is None:
+            self.episode, self.world = cdf_episode(self.config, paths, rng, self.worlds, options.get("scene_seed"))
         else:
-            self.episode, self.world = draw_episode(self.config, rng, scene=options.get("scene"))
+            self.episode, self.world = draw_episode(self.config, rng, self.worlds, scene=options.get("scene"))
         self._start()
-        return self._observation(), self._info(None, "")
+        return self._observation(), {**self._info(None, ""), "redraws": self.episode.redraws}
 
     def _start(self) -> None:
         assert self.episode is not None
         self.history, self._steps, self._failures, self._reached = [], 0, 0, False
         self._expert.start(self.episode.expert.actions if self.episode.expert is not None else None)
         self._scores = self._goal_scores()
+        self._goto = None
+        r = self.rewards
+        if not r.sparse and self.config.navigation_reward and self.episode.expert is not None:
+            from luminous_sim.planning import NavGraph
+
+            agent = self.world.agent
+            self._goto = GotoReward(NavGraph(self.world.nav), goto_targets(agent, self.episode.expert.actions), agent,
+                                    shaping=r.goto_shaping, reach=r.goto_reach, bonus=r.section("GotoLocation"))
 
     def step(self, action: Any):
         """One action (a discrete index or an ALFRED dict); see the module docstring."""
@@ -168,6 +195,8 @@ class LuminousEnv(gymnasium.Env):
         expert_length = len(self.episode.expert.actions) if self.episode.expert is not None else 0
         reward = step_reward(self.rewards, before, self._scores, self.episode.goal.stages(), reached=reached,
                              action_ok=ok, step=self._steps, expert_length=expert_length)
+        if self._goto is not None:
+            reward += self._goto.step(self.world.agent, api["action"] if api else None, ok)
         terminated = success or stopped
         truncated = not terminated and (self._steps >= self.config.max_steps
                                         or self._failures >= self.config.max_failures)
@@ -187,6 +216,7 @@ class LuminousEnv(gymnasium.Env):
 
     def close(self) -> None:
         self._close_world()
+        self.worlds.clear()
         super().close()
 
     # ------------------------------------------------------------------ the expert
@@ -300,8 +330,9 @@ class LuminousEnv(gymnasium.Env):
         return info
 
     def _close_world(self) -> None:
+        """Give the world back to the pool (kept, restored, for another episode in its scene)."""
         if self.world is not None:
-            self.world.close()
+            self.worlds.put(self.world)
             self.world = None
 
     # ------------------------------------------------------------------ pickling
@@ -314,7 +345,8 @@ class LuminousEnv(gymnasium.Env):
             "np_random": self._np_random,
             "episode": None if ep is None else {
                 "scene": ep.scene.to_json(), "goal": ep.goal.to_dict(), "dirty": list(ep.dirty),
-                "expert": None if ep.expert is None else [list(ep.expert.actions), list(ep.expert.steps)]},
+                "expert": None if ep.expert is None else [list(ep.expert.actions), list(ep.expert.steps)],
+                "redraws": ep.redraws, "start": None if ep.start is None else list(astuple(ep.start))},
             "history": [(s.given, s.api, s.ok) for s in self.history],
             "counters": (self._steps, self._failures, self._reached),
         }
@@ -322,6 +354,7 @@ class LuminousEnv(gymnasium.Env):
     def __setstate__(self, state: dict[str, Any]) -> None:
         from luminous_sim.env.goals import ExpertPlan
         from luminous_sim.scene import Scene
+        from luminous_sim.world import AgentPose
 
         self.__init__(state["render_mode"], **state["kwargs"])  # type: ignore[misc]
         self._np_random = state["np_random"]
@@ -330,13 +363,16 @@ class LuminousEnv(gymnasium.Env):
             return
         plan = data["expert"]
         expert = None if plan is None else ExpertPlan(tuple(plan[0]), steps=tuple(plan[1]))
+        start = None if data["start"] is None else AgentPose(*data["start"])
         self.episode = Episode(Scene.from_json(data["scene"]), goal_from_dict(data["goal"]),
-                               tuple(data["dirty"]), expert)
-        self.world = build_world(self.episode.scene, self.config, self.episode.dirty)
+                               tuple(data["dirty"]), expert, data["redraws"], start)
+        self.world = self.worlds.get(self.episode.scene, self.episode.dirty, start)
         self._start()
         for given, api, ok in state["history"]:
             self.world.step(api)
             self.history.append(Sent(given, api, ok))
+            if self._goto is not None:
+                self._goto.step(self.world.agent, api["action"], ok)
         self._steps, self._failures, self._reached = state["counters"]
         self._scores = self._goal_scores()
         self._observation()  # the object slots the agent saw last

@@ -7,6 +7,7 @@ fields; a wrong name or type is a `LuminousError` that names the field and what 
 from __future__ import annotations
 
 from dataclasses import asdict, dataclass, field, fields
+from pathlib import Path
 from typing import Any
 
 from luminous_sim.errors import LuminousError
@@ -45,6 +46,9 @@ class EnvConfig:
         max_failures: episode truncated after this many failed actions (ALFRED: 10).
         reward_mode: `dense` (ALFRED's configuration driven by the goal conditions) or `sparse`.
         reward: overrides of `RewardConfig` fields, by name.
+        navigation_reward: add ALFRED's navigation reward (the expert's go-to subgoals, spec section 5.2) to
+            the dense reward (needs `verify_expert`: the go-to locations are the expert's); the `-v0` ids
+            were registered without it.
         expert_in_info: put the expert's next action in `info` (it costs a plan when the agent deviates).
         verify_expert: keep only episodes the oracle solves (as ALFRED's generator does); it also gives
             the expert length that ALFRED's step penalty starts after.
@@ -55,6 +59,10 @@ class EnvConfig:
             instead of generating scenes on the fly: `reset(options={"index": i})` plays entry i, a plain
             `reset` an entry drawn over one round of the split; "" (the default) generates on the fly.
             `reset(options={"split": name, "index": i})` does the same for one episode of any env.
+        cdf: CDF files (a path or a list) to generate each episode's scene from (one drawn uniformly per
+            reset; see `luminous_sim.env.cdf_scenes`): a CDF's own task is the goal, else a task of
+            `task_types` is drawn. `reset(options={"cdf": path, "scene_seed": s})` does the same for one
+            episode of any env; () (the default) generates scenes on the fly.
     """
 
     task_types: tuple[str, ...] = ALFRED_TASK_TYPES
@@ -73,16 +81,20 @@ class EnvConfig:
     max_failures: int = 10
     reward_mode: str = "dense"
     reward: dict[str, float] = field(default_factory=dict)
+    navigation_reward: bool = True
     expert_in_info: bool = False
     verify_expert: bool = True
     scene_attempts: int = 8
     min_visible_pixels: int = 0
     split: str = ""
+    cdf: tuple[str, ...] = ()
 
     def __post_init__(self) -> None:
         for f in fields(self):
             value = getattr(self, f.name)
-            if f.name in ("task_types", "room_types"):
+            if f.name == "cdf" and isinstance(value, str):
+                object.__setattr__(self, "cdf", (value,))
+            elif f.name in ("task_types", "room_types", "cdf"):
                 if isinstance(value, str) or not all(isinstance(v, str) for v in value):
                     raise LuminousError(f"env config {f.name}: expected a list of names, got {value!r}")
                 object.__setattr__(self, f.name, tuple(value))
@@ -118,6 +130,11 @@ class EnvConfig:
 
             if self.split not in PLUS_SPLITS:
                 raise LuminousError(f"env config split: {self.split!r}; expected one of {', '.join(PLUS_SPLITS)}")
+        if self.cdf and self.split:
+            raise LuminousError("env config: give split or cdf, not both (where would the scenes come from?)")
+        missing = [p for p in self.cdf if not Path(p).is_file()]
+        if missing:
+            raise LuminousError(f"env config cdf: {', '.join(missing)}: no such CDF file")
         if self.grid > min(self.width, self.height):
             raise LuminousError(f"env config grid: {self.grid} points a side do not fit a {self.width}x{self.height}"
                                 " image")
@@ -135,7 +152,7 @@ class EnvConfig:
     def to_kwargs(self) -> dict[str, Any]:
         """Plain JSON data that `from_kwargs` reads back."""
         out = asdict(self)
-        out["task_types"], out["room_types"] = list(self.task_types), list(self.room_types)
+        out["task_types"], out["room_types"], out["cdf"] = list(self.task_types), list(self.room_types), list(self.cdf)
         return out
 
     @property

@@ -24,12 +24,13 @@ import numpy as np
 
 from luminous_sim.env.config import EnvConfig
 from luminous_sim.env.goals import ExpertPlan, Goal, GotoGoal, TaskGoal, pickup_task
+from luminous_sim.env.worlds import WorldPool
 from luminous_sim.errors import InfeasibleSceneError, LuminousError
 from luminous_sim.scene import Scene
 from luminous_sim.splits import SplitEntry, plus_split, split_entry
 from luminous_sim.tasks import TASK_TYPES, TaskSamplingError, task_info
 from luminous_sim.vocab import ROOM_TYPES, abilities
-from luminous_sim.world import World, WorldConfig
+from luminous_sim.world import AgentPose, World
 
 CLEANING = "pick_clean_then_place_in_recep"
 UNAVAILABLE_CAUSES: tuple[str, ...] = ("layout", "no_task", "expert")
@@ -51,26 +52,18 @@ class EpisodeUnavailable(LuminousError):
 
 @dataclass(frozen=True)
 class Episode:
-    """One episode's set-up: replaying it (`build_world`) gives the same world, bit for bit."""
+    """One episode's set-up: a world of its scene at its start, set up with `dirty`, is the episode's world."""
 
     scene: Scene
     goal: Goal
     dirty: tuple[str, ...] = ()
     """Objects made dirty before the first step (ALFRED's set-up for a cleaning task)."""
     expert: ExpertPlan | None = None
-
-
-def world_config(config: EnvConfig) -> WorldConfig:
-    """The simulator settings of an environment."""
-    return WorldConfig(width=config.width, height=config.height, min_visible_pixels=config.visible_pixels)
-
-
-def build_world(scene: Scene, config: EnvConfig, dirty: tuple[str, ...] = ()) -> World:
-    """A fresh world of the scene, set up (dirty objects) and not yet stepped."""
-    world = World(scene, world_config(config))
-    if dirty:
-        world.set_up_dirty(dirty)
-    return world
+    redraws: int = 0
+    """Draws rejected before this one: a scene CSSG could not lay out, no task of the type fitted, or (with
+    `verify_expert`) the expert did not solve the task drawn."""
+    start: AgentPose | None = None
+    """Where the agent starts (a CDF's `task.agent`); None for the world's default start."""
 
 
 def dirty_for(world: World, task_type: str) -> tuple[str, ...]:
@@ -118,32 +111,34 @@ def _goal_worthy(object_type: str, task_type: str) -> bool:
     return ab.pickupable or ab.receptacle or ab.openable or ab.toggleable
 
 
-def _prove(episode: Episode, config: EnvConfig) -> ExpertPlan | None:
+def _prove(episode: Episode, worlds: WorldPool) -> ExpertPlan | None:
     """The expert's plan if it solves the episode in a world of its own, and its replay does too."""
-    shadow = build_world(episode.scene, config, episode.dirty)
+    shadow = worlds.get(episode.scene, episode.dirty, episode.start)
     try:
         plan = episode.goal.expert_plan(shadow)
     finally:
-        shadow.close()
+        worlds.put(shadow)
     if plan is None or plan.exact:
         return plan
-    replay = build_world(episode.scene, config, episode.dirty)
+    replay = worlds.get(episode.scene, episode.dirty, episode.start)
     try:
         ok = all(replay.step(a).success for a in plan.actions)
         view = replay.view()
         scores = episode.goal.scores(view, set(view.visible_objects()))
         ok = ok and scores == episode.goal.weights()
     finally:
-        replay.close()
+        worlds.put(replay)
     return ExpertPlan(plan.actions, exact=True, steps=plan.steps) if ok else None
 
 
-def draw_episode(config: EnvConfig, rng: np.random.Generator, scene: Scene | None = None) -> tuple[Episode, World]:
+def draw_episode(config: EnvConfig, rng: np.random.Generator, worlds: WorldPool,
+                 scene: Scene | None = None) -> tuple[Episode, World]:
     """An episode and its world, ready for the first step (same rng state, same episode).
 
     Args:
         config: the environment.
         rng: every draw comes from it.
+        worlds: where worlds come from (and go back to).
         scene: use this scene (only the goal is drawn) instead of generating one.
 
     Raises:
@@ -165,25 +160,25 @@ def draw_episode(config: EnvConfig, rng: np.random.Generator, scene: Scene | Non
                 continue
         else:
             candidate = scene
-        world = World(candidate, world_config(config))
+        world = worlds.get(candidate)
         dirty = dirty_for(world, task_type)
         if dirty:
             world.set_up_dirty(dirty)
         try:
             goal = draw_goal(world, candidate, task_type, rng)
         except TaskSamplingError as exc:
-            world.close()
+            worlds.put(world)
             why.append(str(exc))
             continue
-        episode = Episode(candidate, goal, dirty)
+        episode = Episode(candidate, goal, dirty, redraws=len(why))
         if config.verify_expert:
-            plan = _prove(episode, config)
+            plan = _prove(episode, worlds)
             if plan is None:
-                world.close()
+                worlds.put(world)
                 why.append(f"the expert does not solve {goal.instruction!r} in {candidate.room.name} "
                            f"(seed {candidate.seed})")
                 continue
-            episode = Episode(candidate, goal, dirty, plan)
+            episode = Episode(candidate, goal, dirty, plan, len(why))
         return episode, world
     raise LuminousError(f"no episode of {', '.join(config.task_types)} after {config.scene_attempts} attempts: "
                         + "; ".join(why[-3:]))
@@ -233,7 +228,7 @@ def split_scene(floor_plan: str, room_type: str, layout_seed: int) -> Scene:
     return generate(empty_cdf(room_type), seed=layout_seed, room=load_room(floor_plan)).scene
 
 
-def split_episode(config: EnvConfig, entry: SplitEntry) -> tuple[Episode, World]:
+def split_episode(config: EnvConfig, entry: SplitEntry, worlds: WorldPool) -> tuple[Episode, World]:
     """The episode of a split entry and its world, ready for the first step (the same every time).
 
     The task is drawn from an rng seeded with `entry.task_seed`; with `verify_expert`, a task the expert
@@ -249,22 +244,22 @@ def split_episode(config: EnvConfig, entry: SplitEntry) -> tuple[Episode, World]
     rng = np.random.default_rng(entry.task_seed)
     unsolved: list[str] = []
     for _ in range(config.scene_attempts):
-        world = World(scene, world_config(config))
+        world = worlds.get(scene)
         dirty = dirty_for(world, entry.task_type)
         if dirty:
             world.set_up_dirty(dirty)
         try:
             goal = draw_goal(world, scene, entry.task_type, rng)
         except TaskSamplingError as exc:
-            world.close()
+            worlds.put(world)
             raise EpisodeUnavailable(entry, "no_task", str(exc)) from None
-        episode = Episode(scene, goal, dirty)
+        episode = Episode(scene, goal, dirty, redraws=len(unsolved))
         if not config.verify_expert:
             return episode, world
-        plan = _prove(episode, config)
+        plan = _prove(episode, worlds)
         if plan is not None:
-            return Episode(scene, goal, dirty, plan), world
-        world.close()
+            return Episode(scene, goal, dirty, plan, redraws=len(unsolved)), world
+        worlds.put(world)
         unsolved.append(goal.instruction)
     raise EpisodeUnavailable(entry, "expert", f"the expert solves none of the {len(unsolved)} tasks drawn: "
                              + "; ".join(repr(u) for u in unsolved[:3]))

@@ -11,6 +11,11 @@ Dense (the default), per step:
 * a failed action costs `failure` (-0.05, ALFRED's `failure` term);
 * every step after the expert's length (0 when no expert plan is known) costs `step_penalty` (-0.01).
 
+* while one of the expert's go-to subgoals is current, `goto_shaping` (0.2) x the path steps gained toward
+  its location, and GotoLocationAction's +4 on coming within `goto_reach` (3) steps of it (ALFRED's
+  navigation reward, `luminous_sim.env.goto_reward`; on with `EnvConfig.navigation_reward`, off in the
+  `-v0` ids; it needs the expert's plan, so `verify_expert`).
+
 ALFRED's per-step `success` bonus (+2 for any action that succeeds) is kept in the table but off
 (`success_bonus` 0): spinning in place would farm it. Sparse: `goal_reward` on reaching the goal, else 0.
 """
@@ -48,6 +53,10 @@ class RewardConfig:
     step_penalty: float = -0.01
     success_bonus: float = 0.0
     """ALFRED's `success` (+2 for every action that succeeds); off by default, see the module docstring."""
+    goto_shaping: float = 0.2
+    """ALFRED's reward per path step gained toward the current go-to location."""
+    goto_reach: float = 3.0
+    """ALFRED's `min_reach_distance`: a go-to is done within fewer path steps than this."""
     positive: Mapping[str, float] = field(default_factory=lambda: POSITIVE)
     sparse: bool = False
 

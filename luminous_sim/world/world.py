@@ -61,6 +61,10 @@ class World:
         self.interactions = Interactions(self)
         self._view = LiveView(self)
         self._started = False
+        from luminous_sim.world.restore import WatchedClient, take_snapshot
+
+        self._start = take_snapshot(self)
+        self.client = WatchedClient(self.built.client)  # notes a touch of the physics (see `reset_to_start`)
 
     def view(self) -> WorldView:
         """The world's read-only face: states, poses, visibility, reachable poses, dry-run puts."""
@@ -78,6 +82,23 @@ class World:
 
     def __exit__(self, *exc: object) -> None:
         self.close()
+
+    def reset_to_start(self) -> bool:
+        """Put the world back exactly as it was built (agent pose, object states and their visuals, what
+        `set_up_dirty` did, the put stream, the last action), ready for set-up and a new episode, without
+        building it again; True when done. Only a world whose physics was never touched can be: no body
+        or link moved (a pick-up, an opening, a put, or a planner trying a door's swing), since PyBullet's
+        restoreState would leave hidden state behind that steers later physics (see `world.restore`).
+        Otherwise False, and nothing changes: build a new World."""
+        from luminous_sim.world.restore import restore
+
+        if self.client is None or self.client.touched:
+            return False
+        restore(self, self._start)
+        self.invalidate_frame()
+        self.last = StepResult(True, "", {"action": "Initialize"})
+        self._started = False
+        return True
 
     def set_up_dirty(self, object_ids: Iterable[str]) -> None:
         """Scene set-up before the first action: make these objects dirty (pure state and visuals), as

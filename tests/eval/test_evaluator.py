@@ -66,7 +66,7 @@ def _eval_kwargs():
 def test_an_entry_with_no_episode_is_a_reported_failure(monkeypatch):
     import luminous_sim.env.alfred_env as alfred_env
 
-    def refuse(config, entry):
+    def refuse(config, entry, worlds):
         raise EpisodeUnavailable(entry, "no_task", "no Spatula anywhere")
 
     monkeypatch.setattr(alfred_env, "split_episode", refuse)

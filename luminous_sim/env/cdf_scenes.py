@@ -1,0 +1,219 @@
+"""Episodes from CDF files (`EnvConfig.cdf`, or `reset(options={"cdf": path})`): the scene is generated
+from the CDF (`cssg.generate(doc, seed)`); if the CDF has a task section, that is the episode's goal
+(`tasks.task_from_cdf`), with its initial object states set in the scene and its agent start; otherwise a
+task of the env's types is drawn in the scene, as for a scene generated on the fly.
+
+The scene's seed is drawn from the reset's rng, or fixed by `reset(options={"scene_seed": s})`, in which
+case the same CDF gives the same scene (generated once, kept) and the env reuses its worlds. As everywhere
+in the env, an episode the expert does not solve is replaced (`verify_expert`): another scene seed, or
+another task; the count is the reset's `info["redraws"]`.
+
+What `luminous run` does with a CDF (`cdf_episode.run_cdf`, layer L5) is followed here for the parts an
+environment needs: the initial states (`episode._with_initial`), their check and the agent start.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from functools import lru_cache
+from pathlib import Path
+from typing import Any
+
+import numpy as np
+
+from luminous_sim.cdf import AgentPoseSpec, ChallengeDefinition, Expr
+from luminous_sim.env.config import EnvConfig
+from luminous_sim.env.episodes import Episode, _prove, dirty_for, draw_goal
+from luminous_sim.env.goals import TaskGoal
+from luminous_sim.env.worlds import WorldPool
+from luminous_sim.errors import CDFError, InfeasibleSceneError, LuminousError
+from luminous_sim.scene import Scene
+from luminous_sim.tasks import TaskError, TaskSamplingError
+from luminous_sim.world import AgentPose, World, WorldView
+
+STATE_LITERALS: dict[str, str] = {"isOpen": "isOpen", "isToggled": "isToggled", "isOn": "isToggled",
+                                  "isDirty": "isDirty", "isFilled": "isFilled", "isHot": "isHot", "isCool": "isCold"}
+"""Initial-state predicates a scene object's `states` can be set by (as `luminous run` reads them)."""
+
+
+def cdf_paths(config: EnvConfig, options: dict[str, Any]) -> tuple[str, ...]:
+    """The CDF files a reset draws from: `options["cdf"]` (a path or a list), else `config.cdf`."""
+    asked = options.get("cdf")
+    if asked is None:
+        return config.cdf
+    paths = (asked,) if isinstance(asked, (str, Path)) else tuple(asked)
+    if not paths or not all(isinstance(p, (str, Path)) for p in paths):
+        raise LuminousError(f"reset options: 'cdf' must be a CDF file path or a list of them, got {asked!r}")
+    for p in paths:
+        check_cdf_path(str(p), "reset options: cdf")
+    return tuple(str(p) for p in paths)
+
+
+def check_cdf_path(path: str, where: str) -> None:
+    """A clear error for a CDF path that names no file."""
+    if not Path(path).is_file():
+        raise LuminousError(f"{where}: {path}: no such CDF file")
+
+
+@lru_cache(maxsize=32)
+def _load(path: str, mtime_ns: int) -> ChallengeDefinition:
+    from luminous_sim import cdf
+
+    return cdf.load(path)
+
+
+def load_cdf(path: str) -> ChallengeDefinition:
+    """The validated CDF (read again when the file changes).
+
+    Raises:
+        CDFValidationError: anything wrong, the message naming the file and the key.
+    """
+    p = Path(path).resolve()
+    return _load(str(p), p.stat().st_mtime_ns)
+
+
+@lru_cache(maxsize=8)
+def _generated(path: str, mtime_ns: int, seed: int) -> Scene:
+    from luminous_sim.cssg import generate
+
+    try:
+        return generate(_load(path, mtime_ns), seed=seed).scene
+    except InfeasibleSceneError as exc:
+        raise InfeasibleSceneError(f"{path}: {exc}") from None
+    except CDFError as exc:  # sizes no asset meets
+        raise CDFError(f"{path}: {exc}") from None
+
+
+def cdf_scene(path: str, seed: int) -> Scene:
+    """The scene CSSG generates from the CDF with this seed (kept: the same file and seed, the same object)."""
+    p = Path(path).resolve()
+    return _generated(str(p), p.stat().st_mtime_ns, seed)
+
+
+def _literals(initial: Expr | None, source: str) -> list[tuple[Any, bool]]:
+    """(atom, positive) for each literal of a ground conjunction."""
+    from luminous_sim.cdf.predicates import And, Atom, Not
+
+    if initial is None:
+        return []
+    if isinstance(initial, And):
+        return [lit for arg in initial.args for lit in _literals(arg, source)]
+    if isinstance(initial, Not) and isinstance(initial.arg, Atom):
+        return [(initial.arg, False)]
+    if isinstance(initial, Atom):
+        return [(initial, True)]
+    raise LuminousError(f"{source}: task.initial: expected ground literals joined by `and`, got {initial}")
+
+
+def with_initial(scene: Scene, initial: Expr | None, names: dict[str, str], source: str) -> Scene:
+    """The scene with the object states the CDF's `task.initial` asks for."""
+    wanted: dict[str, dict[str, bool]] = {}
+    ids = {o.id for o in scene.objects}
+    for atom, positive in _literals(initial, source):
+        key = STATE_LITERALS.get(atom.pred)
+        if key is None or len(atom.args) != 1:
+            continue  # where things are is the layout's business: checked once built
+        oid = names.get(atom.args[0], atom.args[0])
+        if oid not in ids:
+            raise LuminousError(f"{source}: task.initial: ({atom.pred} {atom.args[0]}) names no object of the scene")
+        wanted.setdefault(oid, {})[key] = positive
+    if not wanted:
+        return scene
+    objects = [o.model_copy(update={"states": {**o.states, **wanted[o.id]}}) if o.id in wanted else o
+               for o in scene.objects]
+    return scene.model_copy(update={"objects": objects})
+
+
+def check_initial(view: WorldView, initial: Expr | None, names: dict[str, str], source: str) -> None:
+    """Raise when a literal of `task.initial` does not hold in the built scene."""
+    from luminous_sim.cdf.predicates import Not, to_sexpr
+    from luminous_sim.tasks import goal_satisfied
+
+    for atom, positive in _literals(initial, source):
+        literal = atom if positive else Not(atom)
+        if not goal_satisfied(literal, view.state, names):
+            raise LuminousError(f"{source}: task.initial: {to_sexpr(literal)} does not hold in the generated scene "
+                                "(object states are set; where objects stand comes from scene.relations)")
+
+
+def start_pose(world: World, spec: AgentPoseSpec | None) -> AgentPose | None:
+    """The CDF's agent start (`task.agent`): the reachable point nearest its position, its rotation and
+    horizon (unset parts from the default start); None when the CDF gives none."""
+    if spec is None:
+        return None
+    pose = world.agent
+    x, y = pose.x, pose.y
+    if spec.position is not None:
+        pts = world.nav.points()
+        x, y = (float(v) for v in pts[int(np.argmin(np.linalg.norm(pts - np.array(spec.position), axis=1)))])
+    return AgentPose(x, y, pose.rotation if spec.rotation is None else spec.rotation,
+                     pose.horizon if spec.horizon is None else spec.horizon)
+
+
+def cdf_episode(config: EnvConfig, paths: Sequence[str], rng: np.random.Generator, worlds: WorldPool,
+                scene_seed: int | None = None) -> tuple[Episode, World]:
+    """An episode in a scene generated from one of the CDF files (drawn uniformly), and its world.
+
+    Raises:
+        CDFValidationError: a CDF that is malformed, or whose task names objects the scene lacks.
+        LuminousError: a task.initial that does not hold, an agent start off the floor, or no attempt gave
+            an episode (the message lists why).
+    """
+    from luminous_sim.cssg import start_outside
+    from luminous_sim.tasks import names_from_scene, task_from_cdf
+
+    why: list[str] = []
+    for _ in range(config.scene_attempts):
+        path = paths[int(rng.integers(len(paths)))]
+        doc = load_cdf(path)
+        seed = scene_seed if scene_seed is not None else int(rng.integers(2**31))
+        try:
+            scene = cdf_scene(path, seed)
+        except InfeasibleSceneError as exc:
+            why.append(str(exc))
+            if scene_seed is not None:
+                break
+            continue
+        start = None
+        if doc.task is not None:
+            outside = start_outside(doc, scene.room)
+            if outside:
+                raise LuminousError(f"{path}: task.agent.position: {outside}")
+            names = names_from_scene(scene)
+            try:
+                goal: Any = TaskGoal(task_from_cdf(doc, names, scene_seed=seed))
+            except TaskError as exc:
+                raise LuminousError(f"{path}: task.goal: {exc}") from None
+            scene = with_initial(scene, doc.task.initial, names, path)
+            world = worlds.get(scene)
+            try:
+                check_initial(world.view(), doc.task.initial, names, path)
+            except LuminousError:
+                worlds.put(world)
+                raise
+            start = start_pose(world, doc.task.agent)
+        else:
+            world = worlds.get(scene)
+            try:
+                goal = draw_goal(world, scene, config.task_types[int(rng.integers(len(config.task_types)))], rng)
+            except TaskSamplingError as exc:
+                worlds.put(world)
+                why.append(f"{path} seed {seed}: {exc}")
+                continue
+        dirty = dirty_for(world, goal.task_type)
+        if dirty:
+            world.set_up_dirty(dirty)
+        if start is not None:
+            world.agent = start
+        episode = Episode(scene, goal, dirty, start=start, redraws=len(why))
+        if config.verify_expert:
+            plan = _prove(episode, worlds)
+            if plan is None:
+                worlds.put(world)
+                why.append(f"the expert does not solve {goal.instruction!r} in {path} (seed {seed})")
+                if scene_seed is not None and doc.task is not None:
+                    break
+                continue
+            episode = Episode(scene, goal, dirty, plan, start=start, redraws=len(why))
+        return episode, world
+    raise LuminousError(f"no episode from {', '.join(paths)}: " + "; ".join(why[-3:]))
