@@ -22,14 +22,14 @@ from typing import TYPE_CHECKING
 from luminous_sim.lazy import lazy_getattr
 
 if TYPE_CHECKING:
-    from luminous_sim.bc.agent import CHECKPOINT_VAR, BCAgent, bc_agent, bc_agent_greedy
+    from luminous_sim.bc.agent import CHECKPOINT_VAR, BCAgent, bc_agent, bc_agent_sampling
     from luminous_sim.bc.demos import TOKENS, Demo, collect_demos, load_demos
     from luminous_sim.bc.family import PICKUP_ENV, evaluate_pickup, pickup_env, play_pickup
     from luminous_sim.bc.model import BCPolicy
     from luminous_sim.bc.train import TrainResult, load_checkpoint, train_bc
 
 _WHERE = {
-    "CHECKPOINT_VAR": "agent", "BCAgent": "agent", "bc_agent": "agent", "bc_agent_greedy": "agent",
+    "CHECKPOINT_VAR": "agent", "BCAgent": "agent", "bc_agent": "agent", "bc_agent_sampling": "agent",
     "TOKENS": "demos", "Demo": "demos", "collect_demos": "demos", "load_demos": "demos",
     "PICKUP_ENV": "family", "evaluate_pickup": "family", "pickup_env": "family", "play_pickup": "family",
     "BCPolicy": "model",
@@ -45,7 +45,7 @@ __all__ = [
     "Demo",
     "TrainResult",
     "bc_agent",
-    "bc_agent_greedy",
+    "bc_agent_sampling",
     "collect_demos",
     "evaluate_pickup",
     "load_checkpoint",

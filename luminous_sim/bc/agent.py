@@ -2,10 +2,10 @@
 
 `luminous eval --policy luminous_sim.bc:bc_agent` with the checkpoint named by the `LUMINOUS_BC_CHECKPOINT`
 environment variable. The env must be the one the policy was trained in (image size, object-slot targets,
-number of slots); the factory says which env options to pass when it is not. Each step the agent samples
-its action from the policy's distribution with a generator seeded by the episode's seed (so a run is
-repeatable, and a clone that hesitates between turning left and right does not loop forever as its argmax
-would); `greedy=True` takes the argmax.
+number of slots); the factory says which env options to pass when it is not. Each step `bc_agent` takes the
+policy's most probable action; `bc_agent_sampling` samples from its distribution with a generator seeded
+by the episode's seed (repeatable too). Greedy did better in a first check (5 of 10 held-out S+ episodes
+against 3 of 10): a sampled step is more often a failed one, and ten failures end an episode.
 """
 
 from __future__ import annotations
@@ -30,7 +30,7 @@ CHECKPOINT_VAR = "LUMINOUS_BC_CHECKPOINT"
 class BCAgent:
     """Plays a `BCPolicy`; see the module docstring."""
 
-    def __init__(self, model: BCPolicy, meta: dict[str, Any], context: AgentContext, greedy: bool = False):
+    def __init__(self, model: BCPolicy, meta: dict[str, Any], context: AgentContext, greedy: bool = True):
         config, trained = context.config, meta["env"]
         wanted = {k: trained[k] for k in ("width", "height", "targets", "object_slots")}
         have = {k: getattr(config, k) for k in wanted}
@@ -70,12 +70,12 @@ def _checkpoint() -> Path:
 
 
 def bc_agent(context: AgentContext) -> BCAgent:
-    """The factory of `--policy luminous_sim.bc:bc_agent` (checkpoint from `LUMINOUS_BC_CHECKPOINT`, sampling)."""
+    """The factory of `--policy luminous_sim.bc:bc_agent` (checkpoint from `LUMINOUS_BC_CHECKPOINT`, greedy)."""
     model, meta = load_checkpoint(_checkpoint())
     return BCAgent(model, meta, context)
 
 
-def bc_agent_greedy(context: AgentContext) -> BCAgent:
-    """As `bc_agent`, taking the most probable action each step."""
+def bc_agent_sampling(context: AgentContext) -> BCAgent:
+    """As `bc_agent`, sampling each action from the policy's distribution (seeded per episode)."""
     model, meta = load_checkpoint(_checkpoint())
-    return BCAgent(model, meta, context, greedy=True)
+    return BCAgent(model, meta, context, greedy=False)

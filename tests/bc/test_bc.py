@@ -117,7 +117,7 @@ def test_the_clone_acts_through_luminous_eval(checkpoint, tmp_path, capsys, monk
 def test_the_clone_plays_pickup_episodes_repeatably(checkpoint, tmp_path, capsys):
     runs = []
     for name in ("a.json", "b.json"):
-        code = main(["bc", "eval", "--policy", "luminous_sim.bc:bc_agent", "--checkpoint", str(checkpoint),
+        code = main(["bc", "eval", "--policy", "luminous_sim.bc:bc_agent_sampling", "--checkpoint", str(checkpoint),
                      "--split", "U+", "--episodes", "1", "--out", str(tmp_path / name)])
         assert code == 0, capsys.readouterr().err
         runs.append(json.loads((tmp_path / name).read_text()))
