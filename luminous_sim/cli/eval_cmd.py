@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import json
 import os
 import sys
 from pathlib import Path
@@ -27,7 +28,21 @@ def register(sub: argparse._SubParsersAction) -> None:
     parser.add_argument("--out", type=output_dir, required=True, help="output folder")
     parser.add_argument("--workers", type=positive_int, default=1, help="local worker processes (default 1)")
     parser.add_argument("--seed", type=seed, default=0, help="seed of the agents' randomness (default 0)")
+    parser.add_argument("--env", type=env_option, action="append", default=[], metavar="KEY=VALUE",
+                        help="an env option over ALFRED's (EnvConfig's fields; VALUE as JSON, else a string), "
+                             "e.g. --env width=64 --env targets=objects; repeatable")
     parser.set_defaults(func=_run)
+
+
+def env_option(text: str) -> tuple[str, object]:
+    """KEY=VALUE with VALUE read as JSON (a number, true, a list) or else kept as a string."""
+    key, sep, value = text.partition("=")
+    if not sep or not key:
+        raise argparse.ArgumentTypeError(f"expected KEY=VALUE, got {text!r}")
+    try:
+        return key, json.loads(value)
+    except json.JSONDecodeError:
+        return key, value
 
 
 def _run(args: argparse.Namespace) -> int:
@@ -44,7 +59,7 @@ def _run(args: argparse.Namespace) -> int:
               f"expert {o.expert_length:4d}", file=sys.stderr)
 
     report = evaluate(args.policy, args.split, args.episodes, seed=args.seed, workers=args.workers,
-                      out_dir=Path(args.out), progress=show)
+                      out_dir=Path(args.out), progress=show, env_kwargs=dict(args.env))
     paths = write_reports(report, Path(args.out))
     print(markdown_table([report]), end="")
     print(f"wrote {paths['json']}, {paths['table']}, {paths['plot']}")

@@ -26,6 +26,7 @@ EPILOG = "Run `luminous COMMAND --help` for a command's options; `make demo` sho
 SUBCOMMAND_MODULES: tuple[str, ...] = (
     "luminous_sim.cli.alfred_cmd",
     "luminous_sim.cli.assets_cmd",
+    "luminous_sim.cli.bc_cmd",
     "luminous_sim.cli.cdf_cmd",
     "luminous_sim.cli.dataset_cmd",
     "luminous_sim.cli.demo_cmd",

@@ -1,0 +1,235 @@
+"""Behaviour cloning on S+ and U+ (the issue's figure "BC success on S+ and U+"), beside random and the oracle.
+
+    python benchmarks/bench_bc.py                       # 400 demos, 3 training seeds, 28 episodes a split
+    python benchmarks/bench_bc.py --demos 400 --eval-episodes 56 --workers 4
+
+1. Oracle demonstrations of the pickup family (`luminous_sim.bc`: pick up a named object in the layouts of
+   a split's entries, 64 px, object-slot targets) on S+ entries 28 .. 28+D-1 (the training entries).
+2. A `BCPolicy` trained on them per seed (`--seeds`), with the wall time of each training.
+3. Each policy on the held-out S+ entries 0 .. N-1 (same room structures and layouts as training, other
+   tasks) and on U+ entries 0 .. N-1 (ALFRED's valid_unseen structures, never seen in training): SR, GC,
+   PLW-SR, PLW-GC and SR over all entries (`luminous_sim.eval.metrics`), for random, the clone of each
+   seed, greedy (and the median and range over seeds), seed 0's clone sampling its actions, and the oracle.
+   S+ is also split into the held-out episodes whose task (layout and instruction) no training demo has and
+   those whose task a training demo has (another entry drew the same object type in the same layout).
+
+Everything is kept under --out (default out/bench_bc): demonstrations, checkpoints and one file per played
+episode, so a second run reprints the figures without redoing the work (`--fresh` starts over). It writes
+results.json and bc_success.png (SR and GC per policy and split; the clone's bar is the median over seeds,
+its whisker the range).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import shutil
+import statistics
+import sys
+import time
+from pathlib import Path
+from typing import Any
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
+
+from luminous_sim.assets.objio import write_atomic
+from luminous_sim.bc import CHECKPOINT_VAR, collect_demos, load_demos, pickup_env, play_pickup, train_bc
+from luminous_sim.eval import EpisodeOutcome, Metrics, make_agent, map_local, metrics
+from luminous_sim.splits import split_entry
+
+SPLITS = ("S+", "U+")
+FIRST_TRAINING = 28
+CLONE = "luminous_sim.bc:bc_agent"
+SAMPLING = "luminous_sim.bc:bc_agent_sampling"
+_RUNNERS: dict[tuple[str, str], Any] = {}
+
+
+def _collect(job: tuple[str, list[int]]) -> dict[str, Any]:
+    folder, indices = job
+    return collect_demos(Path(folder), "S+", indices)
+
+
+def _train(job: tuple[str, str, int, int]) -> dict[str, Any]:
+    demo_dir, path, seed, epochs = job
+    start = time.perf_counter()
+    result = train_bc(Path(demo_dir), Path(path), epochs=epochs, seed=seed)
+    info = {"seconds": time.perf_counter() - start, "losses": list(result.losses), "accuracy": result.accuracy,
+            "samples": result.samples}
+    write_atomic(Path(path).with_suffix(".json"), json.dumps(info, indent=1) + "\n")
+    return info
+
+
+def _play(job: tuple[str, str, str, str, int, int, str]) -> dict[str, Any]:
+    """One episode (label, policy spec, checkpoint, split, index, seed, outcome file), read back when kept."""
+    _label, policy, checkpoint, split, index, seed, path = job
+    if Path(path).is_file():
+        return json.loads(Path(path).read_text())
+    key = (policy, checkpoint)
+    if key not in _RUNNERS:
+        os.environ[CHECKPOINT_VAR] = checkpoint
+        env = pickup_env()
+        _RUNNERS[key] = (env, make_agent(policy, env))
+    env, agent = _RUNNERS[key]
+    start = time.perf_counter()
+    outcome = play_pickup(env, agent, split, index, seed).to_dict()
+    outcome["seconds"] = time.perf_counter() - start
+    write_atomic(Path(path), json.dumps(outcome, indent=1) + "\n")
+    return outcome
+
+
+def _row(name: str, m: Metrics) -> str:
+    cells = [f"{m.successes}/{m.episodes}"] + [_num(v) for v in (m.sr, m.gc, m.plw_sr, m.plw_gc, m.sr_all)]
+    return f"| {name} | " + " | ".join(cells) + " |"
+
+
+def _num(value: float | None) -> str:
+    return "-" if value is None else f"{value:.3f}"
+
+
+def _spread(values: list[float]) -> str:
+    return f"{statistics.median(values):.3f} [{min(values):.3f}, {max(values):.3f}]"
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("--demos", type=int, default=400, help="training demonstrations (S+ entries from 28)")
+    parser.add_argument("--eval-episodes", type=int, default=28, help="held-out episodes per split (default 28)")
+    parser.add_argument("--seeds", default="0,1,2", help="training seeds (default 0,1,2)")
+    parser.add_argument("--epochs", type=int, default=20)
+    parser.add_argument("--workers", type=int, default=2, help="local worker processes (default 2)")
+    parser.add_argument("--out", type=Path, default=Path("out/bench_bc"))
+    parser.add_argument("--fresh", action="store_true", help="discard everything kept and start over")
+    args = parser.parse_args()
+    if args.fresh and args.out.exists():
+        shutil.rmtree(args.out)
+    seeds = [int(s) for s in args.seeds.split(",")]
+    print(f"load average at start: {os.getloadavg()}; {args.workers} workers")
+
+    demo_dir = args.out / "demos"
+    training = list(range(FIRST_TRAINING, FIRST_TRAINING + args.demos))
+    start = time.perf_counter()
+    chunks = [(str(demo_dir), training[k::args.workers]) for k in range(args.workers)]
+    summaries = list(map_local(_collect, chunks, args.workers))
+    unavailable = sum(len(s["unavailable"]) for s in summaries)
+    demos = load_demos(demo_dir)
+    demos = [d for d in demos if d.split == "S+" and d.index in set(training)]
+    steps, labelled = sum(len(d.actions) for d in demos), sum(d.labelled for d in demos)
+    print(f"demos: S+ entries {training[0]}..{training[-1]}: {len(demos)} recorded, {unavailable} unavailable; "
+          f"{steps} steps, {labelled} labelled (the rest acted on an object in no slot); "
+          f"{time.perf_counter() - start:.0f} s (with those kept from an earlier run)")
+    seen_layouts = {(split_entry("S+", i).floor_plan, split_entry("S+", i).layout) for i in training}
+    held_out = {(split_entry("S+", i).floor_plan, split_entry("S+", i).layout) for i in range(args.eval_episodes)}
+    print(f"held-out S+ entries 0..{args.eval_episodes - 1}: {len(held_out & seen_layouts)} of their "
+          f"{len(held_out)} layouts appear in the training demos (S+: seen layouts, other tasks); "
+          "no U+ structure does")
+
+    paths = {seed: args.out / f"bc-seed{seed}.pt" for seed in seeds}
+    todo = [(str(demo_dir), str(paths[s]), s, args.epochs) for s in seeds
+            if not paths[s].with_suffix(".json").is_file()]
+    list(map_local(_train, todo, args.workers))
+    trained = {seed: json.loads(paths[seed].with_suffix(".json").read_text()) for seed in seeds}
+    for seed, info in trained.items():
+        print(f"seed {seed}: {info['samples']} steps x {len(info['losses'])} epochs in {info['seconds']:.0f} s "
+              f"(one torch thread, {args.workers} trainings at once), loss {info['losses'][0]:.3f} -> "
+              f"{info['losses'][-1]:.3f}, training accuracy {info['accuracy']:.3f}")
+
+    policies = [("random", "random", ""), *((f"bc seed {s}", CLONE, str(paths[s].resolve())) for s in seeds),
+                (f"bc seed {seeds[0]} sampling", SAMPLING, str(paths[seeds[0]].resolve())), ("oracle", "oracle", "")]
+    jobs = [(label, spec, ckpt, split, i, 0, str(args.out / "outcomes" / label.replace(" ", "-") / f"{split}-{i}.json"))
+            for label, spec, ckpt in policies for split in SPLITS for i in range(args.eval_episodes)]
+    start = time.perf_counter()
+    played = list(map_local(_play, jobs, args.workers))
+    print(f"played {len(jobs)} episodes in {time.perf_counter() - start:.0f} s")
+    outcomes: dict[tuple[str, str], list[EpisodeOutcome]] = {}
+    seconds: dict[str, list[float]] = {}
+    for job, data in zip(jobs, played, strict=True):
+        seconds.setdefault(job[0], []).append(data.pop("seconds", float("nan")))
+        outcomes.setdefault((job[0], job[3]), []).append(EpisodeOutcome.from_dict(data))
+    table = {key: metrics(v) for key, v in outcomes.items()}
+
+    results: dict[str, Any] = {"demos": len(demos), "training_entries": [training[0], training[-1]],
+                               "labelled_steps": labelled, "seeds": seeds, "training": trained,
+                               "eval_episodes": args.eval_episodes, "metrics": {}}
+    for split in SPLITS:
+        print(f"\n### pickup_object on {split}: entries 0..{args.eval_episodes - 1}\n")
+        print("| policy | successes | SR | GC | PLW-SR | PLW-GC | SR all |\n|---|---|---|---|---|---|---|")
+        for label, _, _ in policies:
+            print(_row(label, table[label, split]))
+            results["metrics"][f"{label} {split}"] = table[label, split].to_dict()
+        clone = [table[f"bc seed {s}", split] for s in seeds]
+        print(f"| bc median [min, max] over {len(seeds)} seeds | | {_spread([m.sr or 0.0 for m in clone])} | "
+              f"{_spread([m.gc or 0.0 for m in clone])} | {_spread([m.plw_sr or 0.0 for m in clone])} | "
+              f"{_spread([m.plw_gc or 0.0 for m in clone])} | |")
+    known = {(split_entry(d.split, d.index).floor_plan, split_entry(d.split, d.index).layout, d.instruction)
+             for d in demos}
+    repeated = {o.index for o in outcomes["oracle", "S+"] if (o.floor_plan, o.layout, o.instruction) in known}
+    print(f"\n### S+ held-out episodes by whether a training demo has their task: {len(repeated)} of "
+          f"{args.eval_episodes} do (entries {sorted(repeated)})\n")
+    print("| policy | new-task successes | new-task SR | repeated-task successes | repeated-task SR |\n"
+          "|---|---|---|---|---|")
+    for label, _, _ in policies:
+        new = metrics(o for o in outcomes[label, "S+"] if o.index not in repeated)
+        old = metrics(o for o in outcomes[label, "S+"] if o.index in repeated)
+        results["metrics"][f"{label} S+ new tasks"] = new.to_dict()
+        results["metrics"][f"{label} S+ repeated tasks"] = old.to_dict()
+        print(f"| {label} | {new.successes}/{new.episodes} | {_num(new.sr)} | {old.successes}/{old.episodes} | "
+              f"{_num(old.sr)} |")
+    drop = [(table[f"bc seed {s}", "S+"].sr or 0.0) - (table[f"bc seed {s}", "U+"].sr or 0.0) for s in seeds]
+    print(f"\nclone SR drop S+ -> U+ per seed: {[round(d, 3) for d in drop]} (median {statistics.median(drop):.3f})")
+    for label, _, _ in policies:
+        for split in SPLITS:
+            ends: dict[str, int] = {}
+            for o in outcomes[label, split]:
+                ends[o.end] = ends.get(o.end, 0) + 1
+            print(f"{label} {split} ends: {dict(sorted(ends.items()))}")
+        times = [t for t in seconds[label] if t == t]
+        if times:
+            print(f"{label}: s/episode (as played, under this load) median {statistics.median(times):.1f} "
+                  f"range {min(times):.1f}..{max(times):.1f}")
+    results["sr_drop"] = drop
+    write_atomic(args.out / "results.json", json.dumps(results, indent=1) + "\n")
+    print(f"wrote {args.out / 'results.json'} and {_plot(table, seeds, args.out / 'bc_success.png')}")
+    print(f"load average at end: {os.getloadavg()}")
+    return 0
+
+
+def _plot(table: dict[tuple[str, str], Metrics], seeds: list[int], path: Path) -> Path:
+    import io
+
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import numpy as np
+
+    names = ["random", "bc", "oracle"]
+    fig, axes = plt.subplots(1, 2, figsize=(9, 3.8), sharey=True)
+    x = np.arange(len(names))
+    for ax, key, title in zip(axes, ("sr", "gc"), ("Success rate (SR)", "Goal conditions (GC)"), strict=True):
+        for k, split in enumerate(SPLITS):
+            heights, low, high = [], [], []
+            for name in names:
+                labels = [f"bc seed {s}" for s in seeds] if name == "bc" else [name]
+                values = [getattr(table[label, split], key) or 0.0 for label in labels]
+                mid = statistics.median(values)
+                heights.append(mid)
+                low.append(mid - min(values))
+                high.append(max(values) - mid)
+            ax.bar(x + (k - 0.5) * 0.38, heights, 0.38, yerr=[low, high], capsize=3, label=split)
+        ax.set_xticks(x, ["random", f"BC (median, {len(seeds)} seeds)", "oracle"])
+        ax.set_ylim(0, 1.05)
+        ax.set_title(f"pickup_object: {title}")
+        ax.grid(axis="y", alpha=0.3)
+    axes[0].set_ylabel("fraction")
+    axes[0].legend(frameon=False)
+    fig.tight_layout()
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format="png", dpi=110)
+    plt.close(fig)
+    write_atomic(path, buffer.getvalue())
+    return path
+
+
+if __name__ == "__main__":
+    sys.exit(main())

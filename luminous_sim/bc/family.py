@@ -1,0 +1,137 @@
+"""The task family behaviour cloning is trained and evaluated on: pick up an object of a named type, in the
+layouts of LUMINOUS's evaluation splits, at 64 px with object-slot targets.
+
+Why this family and not ALFRED's seven types: a few hundred demonstrations of full ALFRED tasks (30-100
+steps, two to four goal conditions, navigation across the room between them) give a cloned policy a
+success rate near zero on both splits, which shows nothing. `pickup_object` keeps what the paper's finding
+is about (the instruction names an object the agent must find in a room layout, and seen layouts differ
+from unseen room structures) at a scale a CPU can learn: one goal condition, an expert of 10-30 steps.
+
+Episode `i` of a split here is the split's entry `i` (`luminous_sim.splits.split_entry`) with its task
+replaced: the same room structure and layout (CSSG in the ALFRED floor plan, `layout_seed`), and a
+`pickup_object` goal drawn by the env from `reset(seed=entry.task_seed, options={"scene": layout})`, so
+every machine plays the same episodes. An entry whose layout or goal cannot be drawn is an outcome
+(`end` "unavailable"), counted in the population, as in `luminous eval`.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+from typing import Any
+
+import numpy as np
+
+from luminous_sim.env import LuminousEnv
+from luminous_sim.errors import InfeasibleSceneError, LuminousError
+from luminous_sim.eval import Agent, EpisodeOutcome, PolicyError, make_agent
+from luminous_sim.scene import Scene
+from luminous_sim.splits import plus_split, split_entry
+
+FAMILY = "pickup_object"
+PICKUP_ENV: dict[str, Any] = {
+    "task_types": [FAMILY], "width": 64, "height": 64, "targets": "objects", "object_slots": 8,
+    "max_steps": 200, "max_failures": 10, "verify_expert": True, "expert_in_info": False,
+}
+"""The env of the family: the small ids' image size and episode limit, object-slot targets (a clone
+chooses among the objects in view rather than localising one in a 64 px image)."""
+
+
+def pickup_env(**overrides: Any) -> LuminousEnv:
+    """A `LuminousEnv` of the family (`PICKUP_ENV` with overrides)."""
+    return LuminousEnv(**{**PICKUP_ENV, **overrides})
+
+
+@lru_cache(maxsize=64)
+def layout_scene(floor_plan: str, room_type: str, layout_seed: int) -> Scene:
+    """A split entry's layout: CSSG in the ALFRED room structure (the env's own split scenes, repeated).
+
+    Raises:
+        InfeasibleSceneError: CSSG found no valid layout.
+    """
+    from luminous_sim.cssg import empty_cdf, generate
+    from luminous_sim.rooms import load_room
+
+    return generate(empty_cdf(room_type), seed=layout_seed, room=load_room(floor_plan)).scene
+
+
+def where(split: str, index: int) -> dict[str, Any]:
+    """The fields of an outcome that name the episode."""
+    entry = split_entry(split, index)
+    return {"split": split, "index": index, "task_type": FAMILY, "floor_plan": entry.floor_plan,
+            "layout": entry.layout}
+
+
+class Unavailable(LuminousError):
+    """A split entry with no pickup episode: `cause` is `layout` or `no_task`."""
+
+    def __init__(self, split: str, index: int, cause: str, detail: str):
+        super().__init__(f"{split} pickup episode {index}: {detail}")
+        self.cause, self.detail = cause, detail
+
+
+def reset_episode(env: LuminousEnv, split: str, index: int) -> tuple[dict[str, Any], dict[str, Any]]:
+    """Start episode `index` of `split` in `env` (a `pickup_env`); the first observation and info.
+
+    Raises:
+        Unavailable: the layout or a goal the expert solves cannot be drawn.
+    """
+    if tuple(env.config.task_types) != (FAMILY,):
+        raise LuminousError(f"a pickup episode needs an env of task_types [{FAMILY!r}], got {env.config.task_types}")
+    entry = split_entry(split, index)
+    try:
+        scene = layout_scene(entry.floor_plan, entry.room_type, entry.layout_seed)
+    except InfeasibleSceneError as exc:
+        raise Unavailable(split, index, "layout", str(exc)) from None
+    try:
+        return env.reset(seed=entry.task_seed, options={"scene": scene})
+    except LuminousError as exc:
+        raise Unavailable(split, index, "no_task", str(exc)) from None
+
+
+def agent_seed(seed: int, split: str, index: int) -> int:
+    """The seed of an agent's own randomness in one episode."""
+    return int(np.random.SeedSequence([seed, plus_split(split).code, index, 15]).generate_state(1)[0])
+
+
+def play_pickup(env: LuminousEnv, agent: Agent, split: str, index: int, seed: int = 0) -> EpisodeOutcome:
+    """One pickup episode of a split played by `agent` to its end, as `luminous_sim.eval.play` plays one.
+
+    Raises:
+        PolicyError: the agent raised (the message names the episode).
+    """
+    named = where(split, index)
+    try:
+        obs, info = reset_episode(env, split, index)
+    except Unavailable as exc:
+        return EpisodeOutcome(**named, end="unavailable", cause=exc.cause, detail=exc.detail)
+    assert env.episode is not None and env.episode.expert is not None, "the family's env proves the expert"
+    steps, terminated, truncated = 0, False, False
+    try:
+        agent.reset(obs["instruction"], {**info, "episode_seed": agent_seed(seed, split, index)})
+        while not (terminated or truncated):
+            obs, _, terminated, truncated, info = env.step(agent.act(obs, info))
+            steps += 1
+    except Exception as exc:
+        raise PolicyError(f"the agent raised on {split} pickup episode {index} at step {steps}: "
+                          f"{type(exc).__name__}: {exc}") from exc
+    finally:
+        env.close()
+    stopped = terminated and not info["success"]
+    end = "success" if info["success"] else "stop" if stopped else (
+        "max_failures" if info["failures"] >= env.config.max_failures else "max_steps")
+    return EpisodeOutcome(**named, end=end, success=bool(info["success"]),
+                          goal_conditions=tuple(info["goal_conditions"]),  # type: ignore[arg-type]
+                          steps=steps - stopped, expert_length=len(env.episode.expert.actions),
+                          failures=int(info["failures"]), instruction=str(obs["instruction"]))
+
+
+def evaluate_pickup(policy: str, split: str, indices: list[int], *, seed: int = 0,
+                    env_kwargs: dict[str, Any] | None = None) -> list[EpisodeOutcome]:
+    """`policy` (`oracle`, `random` or `MODULE:CALLABLE`, as in `luminous eval`) on pickup episodes of a split,
+    in this process; score the outcomes with `luminous_sim.eval.metrics`."""
+    env = pickup_env(**(env_kwargs or {}))
+    agent = make_agent(policy, env)
+    try:
+        return [play_pickup(env, agent, split, i, seed) for i in indices]
+    finally:
+        env.close()

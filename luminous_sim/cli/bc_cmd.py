@@ -1,0 +1,90 @@
+"""`luminous bc`: behaviour cloning from oracle demonstrations (see luminous_sim.bc; needs torch, the `learn`
+extra): `collect` oracle demonstrations of the pickup family on a split, `train` a policy on them, `eval` a
+policy on pickup episodes of S+ or U+ with ALFRED's metrics."""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+from pathlib import Path
+
+from luminous_sim.cli.args import non_negative_int, output_dir, output_file, positive_float, positive_int, seed
+
+SPLITS: tuple[str, ...] = ("S+", "U+", "U+test")
+
+
+def register(sub: argparse._SubParsersAction) -> None:
+    parser = sub.add_parser("bc", help="behaviour cloning: collect oracle demos, train, evaluate (needs torch)",
+                            description="Behaviour cloning from oracle demonstrations of picking up a named "
+                                        "object in the layouts of S+/U+ (docs: README, 'Imitation').")
+    bc = parser.add_subparsers(dest="bc_command", required=True, metavar="STEP")
+    collect = bc.add_parser("collect", help="record the oracle on pickup episodes of a split (resumable)")
+    collect.add_argument("--split", choices=SPLITS, default="S+", help="the split (default S+)")
+    collect.add_argument("--start", type=non_negative_int, default=28,
+                         help="first episode index (default 28: S+ 0-27 are kept for evaluation)")
+    collect.add_argument("--episodes", type=positive_int, required=True, metavar="N", help="episodes to record")
+    collect.add_argument("--out", type=output_dir, required=True, help="demonstrations folder")
+    collect.set_defaults(func=_collect)
+    train = bc.add_parser("train", help="train a policy on demonstrations; write a checkpoint")
+    train.add_argument("--demos", type=Path, required=True, help="demonstrations folder (`luminous bc collect`)")
+    train.add_argument("--out", type=output_file((".pt",), "a .pt checkpoint"), required=True,
+                       help="checkpoint file to write")
+    train.add_argument("--epochs", type=positive_int, default=20, help="passes over the demos (default 20)")
+    train.add_argument("--batch-size", type=positive_int, default=64, help="batch size (default 64)")
+    train.add_argument("--lr", type=positive_float, default=1e-3, help="Adam's learning rate (default 0.001)")
+    train.add_argument("--seed", type=seed, default=0, help="seed of the weights and shuffling (default 0)")
+    train.add_argument("--threads", type=positive_int, default=1, help="torch threads (default 1)")
+    train.set_defaults(func=_train)
+    evaluate = bc.add_parser("eval", help="a policy on pickup episodes of a split: SR, GC, PLW-SR, PLW-GC")
+    evaluate.add_argument("--policy", required=True,
+                          help="oracle, random, or MODULE:CALLABLE (the clone: luminous_sim.bc:bc_agent)")
+    evaluate.add_argument("--checkpoint", type=Path, help="the clone's checkpoint (sets LUMINOUS_BC_CHECKPOINT)")
+    evaluate.add_argument("--split", choices=SPLITS, required=True, help="the split")
+    evaluate.add_argument("--start", type=non_negative_int, default=0, help="first episode index (default 0)")
+    evaluate.add_argument("--episodes", type=positive_int, required=True, metavar="N", help="episodes to play")
+    evaluate.add_argument("--seed", type=seed, default=0, help="seed of the agent's randomness (default 0)")
+    evaluate.add_argument("--out", type=output_file((".json",), "a JSON file"),
+                          help="write the outcomes and metrics to this JSON file")
+    evaluate.set_defaults(func=_eval)
+
+
+def _collect(args: argparse.Namespace) -> int:
+    from luminous_sim.bc import collect_demos
+
+    def show(index: int, demo: object, cause: str) -> None:
+        print(f"{args.split} {index}: " + (f"unavailable ({cause})" if demo is None else "recorded"), file=sys.stderr)
+
+    summary = collect_demos(Path(args.out), args.split, range(args.start, args.start + args.episodes), show)
+    print(json.dumps(summary, indent=1))
+    return 0
+
+
+def _train(args: argparse.Namespace) -> int:
+    from luminous_sim.bc import train_bc
+
+    result = train_bc(args.demos, args.out, epochs=args.epochs, batch_size=args.batch_size, lr=args.lr,
+                      seed=args.seed, threads=args.threads,
+                      progress=lambda e, loss: print(f"epoch {e + 1}: loss {loss:.4f}", file=sys.stderr))
+    print(f"trained on {result.samples} steps of {result.demos} demos: final loss {result.losses[-1]:.4f}, "
+          f"training accuracy {result.accuracy:.3f}; wrote {result.checkpoint}")
+    return 0
+
+
+def _eval(args: argparse.Namespace) -> int:
+    from luminous_sim.assets.objio import write_atomic
+    from luminous_sim.bc import CHECKPOINT_VAR, evaluate_pickup
+    from luminous_sim.eval import check_policy, metrics
+
+    if args.checkpoint is not None:
+        os.environ[CHECKPOINT_VAR] = str(args.checkpoint)
+    check_policy(args.policy)
+    outcomes = evaluate_pickup(args.policy, args.split, list(range(args.start, args.start + args.episodes)),
+                               seed=args.seed)
+    result = metrics(outcomes)
+    print(json.dumps(result.to_dict()))
+    if args.out is not None:
+        write_atomic(args.out, json.dumps({"policy": args.policy, "split": args.split, "metrics": result.to_dict(),
+                                           "episodes": [o.to_dict() for o in outcomes]}, indent=1) + "\n")
+    return 0
