@@ -90,17 +90,20 @@ def test_scene_for_task_in_a_named_room():
 
 
 def test_scene_for_a_given_task_in_a_named_room_fits_that_task():
-    """The default rooms of FloorPlan1 have no kettle: a room is generated for that very task."""
+    """A task whose object FloorPlan1's default room lacks: a room is generated for that very task."""
     from luminous_sim.data import task_misfit
     from luminous_sim.tasks import PddlParams
 
-    kettle = PddlParams("Kettle", "StoveBurner")
-    scene = scene_for_task("pick_and_place_simple", "Kitchen", seed=2, room="FloorPlan1", params=kettle)
-    assert scene.room.name == "FloorPlan1" and scene.source == "pick_and_place_simple-Kettle-None-StoveBurner"
-    assert kettle in feasible_params(scene, state_from_scene(scene), "pick_and_place_simple")
-    assert task_misfit(scene, "pick_and_place_simple", kettle) is None
     default = scene_for_task("pick_and_place_simple", "Kitchen", seed=2, room="FloorPlan1")
-    assert "is not feasible here" in task_misfit(default, "pick_and_place_simple", kettle)
+    present = {o.type for o in default.objects}
+    missing = next(t for t in ("Kettle", "Ladle", "Spatula", "SaltShaker", "PepperShaker", "WineBottle", "Potato",
+                               "Egg", "Lettuce", "Bread") if t not in present)
+    params = PddlParams(missing, "CounterTop")
+    assert "is not feasible here" in task_misfit(default, "pick_and_place_simple", params)
+    scene = scene_for_task("pick_and_place_simple", "Kitchen", seed=2, room="FloorPlan1", params=params)
+    assert scene.room.name == "FloorPlan1" and scene.source == f"pick_and_place_simple-{missing}-None-CounterTop"
+    assert params in feasible_params(scene, state_from_scene(scene), "pick_and_place_simple")
+    assert task_misfit(scene, "pick_and_place_simple", params) is None
 
 
 def test_scene_for_task_refuses_a_room_of_another_type_and_bad_parameters():

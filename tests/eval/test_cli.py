@@ -71,7 +71,7 @@ def test_a_users_module_in_the_current_folder(tmp_path, capsys, monkeypatch):
     (["--policy", "no_such_agent_module:make"], "cannot import module 'no_such_agent_module'"),
     (["--policy", "luminous_sim.eval.examples:nothing"], "has no 'nothing'"),
     (["--split", "U"], "argument --split: invalid choice: 'U'"),
-    (["--episodes", "0"], "argument --episodes: expected a whole number at least 1"),
+    (["--episodes", "0"], "argument --episodes: expected a whole number from 1 to 2**63-1"),
 ])
 def test_bad_specs_are_one_line_errors_with_exit_2(argv, message, tmp_path, capsys):
     args = {"--policy": "random", "--split": "U+", "--episodes": "1", "--out": str(tmp_path / "o")}
