@@ -4,8 +4,8 @@
 environment variable. The env must be the one the policy was trained in (image size, object-slot targets,
 number of slots); the factory says which env options to pass when it is not. Each step `bc_agent` takes the
 policy's most probable action; `bc_agent_sampling` samples from its distribution with a generator seeded
-by the episode's seed (repeatable too). Greedy did better in a first check (5 of 10 held-out S+ episodes
-against 3 of 10): a sampled step is more often a failed one, and ten failures end an episode.
+by the episode's seed (repeatable too). In benchmarks/bench_bc.py the two were within one success of each
+other on 28 episodes a split.
 """
 
 from __future__ import annotations
