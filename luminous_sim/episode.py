@@ -19,7 +19,7 @@ from luminous_sim.cdf.schema import HighLevelStep, LowLevelStep
 from luminous_sim.errors import Failure, FailureCode
 from luminous_sim.planning import Trajectory
 from luminous_sim.scene import Scene
-from luminous_sim.tasks import TaskInstance
+from luminous_sim.tasks import TaskInstance, check_initial, scene_with_initial
 from luminous_sim.world import AgentPose
 
 TASK_REDRAWS = 3
@@ -180,9 +180,9 @@ def run_task(scene: Scene, task: TaskInstance, seed: int, out_dir: Path | None =
     from luminous_sim.planning import Oracle, ScriptOracle, script_from_cdf
 
     names = dict(task.names)
-    world = prepared_world(_with_initial(scene, initial, names), task.task_type)
+    world = prepared_world(scene_with_initial(scene, initial, names), task.task_type)
     try:
-        _check_initial(world.view().state, initial, names)
+        check_initial(world.view().state, initial, names)
         notes = _place_agent(world, start)
         start_pose, start_state = world.agent, world.view().state
         if script is not None:
@@ -239,59 +239,6 @@ def _conclude(world, scene: Scene, task, traj: Trajectory, run: _Run) -> tuple[E
                            failures[0].code if failures else None, failures, run.notes)
     record = EpisodeRecord(task, traj, run.start_state, texts) if run.return_record else None
     return result, record
-
-
-STATE_LITERALS: dict[str, str] = {"isOpen": "isOpen", "isToggled": "isToggled", "isOn": "isToggled",
-                                  "isDirty": "isDirty", "isFilled": "isFilled", "isHot": "isHot", "isCool": "isCold"}
-"""Initial-state predicates a scene object's `states` can be set by (predicate -> state key)."""
-
-
-def _literals(initial: Expr | None) -> list[tuple[Any, bool]]:
-    """(atom, positive) for each literal of a ground conjunction."""
-    from luminous_sim.cdf.predicates import And, Atom, Not
-
-    if initial is None:
-        return []
-    if isinstance(initial, And):
-        return [lit for arg in initial.args for lit in _literals(arg)]
-    if isinstance(initial, Not) and isinstance(initial.arg, Atom):
-        return [(initial.arg, False)]
-    if isinstance(initial, Atom):
-        return [(initial, True)]
-    from luminous_sim.tasks import TaskError
-
-    raise TaskError(f"task.initial: expected ground literals joined by `and`, got {initial}")
-
-
-def _with_initial(scene: Scene, initial: Expr | None, names: dict[str, str]) -> Scene:
-    """The scene with the object states `initial` asks for."""
-    from luminous_sim.tasks import TaskError
-
-    wanted: dict[str, dict[str, bool]] = {}
-    for atom, positive in _literals(initial):
-        key = STATE_LITERALS.get(atom.pred)
-        if key is None or len(atom.args) != 1:
-            continue  # where things are is the layout's business; `_check_initial` checks it
-        oid = names.get(atom.args[0], atom.args[0])
-        if oid not in {o.id for o in scene.objects}:
-            raise TaskError(f"task.initial: ({atom.pred} {atom.args[0]}) names no object of the scene")
-        wanted.setdefault(oid, {})[key] = positive
-    if not wanted:
-        return scene
-    objects = [o.model_copy(update={"states": {**o.states, **wanted[o.id]}}) if o.id in wanted else o
-               for o in scene.objects]
-    return scene.model_copy(update={"objects": objects})
-
-
-def _check_initial(state, initial: Expr | None, names: dict[str, str]) -> None:
-    from luminous_sim.cdf.predicates import Not, to_sexpr
-    from luminous_sim.tasks import TaskError, goal_satisfied
-
-    for atom, positive in _literals(initial):
-        literal = atom if positive else Not(atom)
-        if not goal_satisfied(literal, state, names):
-            raise TaskError(f"task.initial: {to_sexpr(literal)} does not hold in the generated scene "
-                            "(object states are set; where objects stand comes from scene.relations)")
 
 
 def _place_agent(world, start: AgentPoseSpec | None) -> tuple[str, ...]:

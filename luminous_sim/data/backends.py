@@ -56,7 +56,7 @@ class _Closing:
         self.close()
 
     def close(self) -> None:
-        pass
+        """Release the workers (nothing to release by default)."""
 
 
 class LocalBackend(_Closing):

@@ -9,7 +9,8 @@ in the env, an episode the expert does not solve is replaced (`verify_expert`): 
 another task; the count is the reset's `info["redraws"]`.
 
 What `luminous run` does with a CDF (`cdf_episode.run_cdf`, layer L5) is followed here for the parts an
-environment needs: the initial states (`episode._with_initial`), their check and the agent start.
+environment needs: the initial states and their check (`tasks.scene_with_initial`, `tasks.check_initial`)
+and the agent start.
 """
 
 from __future__ import annotations
@@ -21,19 +22,15 @@ from typing import Any
 
 import numpy as np
 
-from luminous_sim.cdf import AgentPoseSpec, ChallengeDefinition, Expr
+from luminous_sim.cdf import AgentPoseSpec, ChallengeDefinition
 from luminous_sim.env.config import EnvConfig
 from luminous_sim.env.episodes import Episode, _prove, dirty_for, draw_goal
 from luminous_sim.env.goals import TaskGoal
 from luminous_sim.env.worlds import WorldPool
 from luminous_sim.errors import CDFError, InfeasibleSceneError, LuminousError
 from luminous_sim.scene import Scene
-from luminous_sim.tasks import TaskError, TaskSamplingError
-from luminous_sim.world import AgentPose, World, WorldView
-
-STATE_LITERALS: dict[str, str] = {"isOpen": "isOpen", "isToggled": "isToggled", "isOn": "isToggled",
-                                  "isDirty": "isDirty", "isFilled": "isFilled", "isHot": "isHot", "isCool": "isCold"}
-"""Initial-state predicates a scene object's `states` can be set by (as `luminous run` reads them)."""
+from luminous_sim.tasks import TaskError, TaskSamplingError, check_initial, scene_with_initial
+from luminous_sim.world import AgentPose, World
 
 
 def cdf_paths(config: EnvConfig, options: dict[str, Any]) -> tuple[str, ...]:
@@ -90,52 +87,6 @@ def cdf_scene(path: str, seed: int) -> Scene:
     return _generated(str(p), p.stat().st_mtime_ns, seed)
 
 
-def _literals(initial: Expr | None, source: str) -> list[tuple[Any, bool]]:
-    """(atom, positive) for each literal of a ground conjunction."""
-    from luminous_sim.cdf.predicates import And, Atom, Not
-
-    if initial is None:
-        return []
-    if isinstance(initial, And):
-        return [lit for arg in initial.args for lit in _literals(arg, source)]
-    if isinstance(initial, Not) and isinstance(initial.arg, Atom):
-        return [(initial.arg, False)]
-    if isinstance(initial, Atom):
-        return [(initial, True)]
-    raise LuminousError(f"{source}: task.initial: expected ground literals joined by `and`, got {initial}")
-
-
-def with_initial(scene: Scene, initial: Expr | None, names: dict[str, str], source: str) -> Scene:
-    """The scene with the object states the CDF's `task.initial` asks for."""
-    wanted: dict[str, dict[str, bool]] = {}
-    ids = {o.id for o in scene.objects}
-    for atom, positive in _literals(initial, source):
-        key = STATE_LITERALS.get(atom.pred)
-        if key is None or len(atom.args) != 1:
-            continue  # where things are is the layout's business: checked once built
-        oid = names.get(atom.args[0], atom.args[0])
-        if oid not in ids:
-            raise LuminousError(f"{source}: task.initial: ({atom.pred} {atom.args[0]}) names no object of the scene")
-        wanted.setdefault(oid, {})[key] = positive
-    if not wanted:
-        return scene
-    objects = [o.model_copy(update={"states": {**o.states, **wanted[o.id]}}) if o.id in wanted else o
-               for o in scene.objects]
-    return scene.model_copy(update={"objects": objects})
-
-
-def check_initial(view: WorldView, initial: Expr | None, names: dict[str, str], source: str) -> None:
-    """Raise when a literal of `task.initial` does not hold in the built scene."""
-    from luminous_sim.cdf.predicates import Not, to_sexpr
-    from luminous_sim.tasks import goal_satisfied
-
-    for atom, positive in _literals(initial, source):
-        literal = atom if positive else Not(atom)
-        if not goal_satisfied(literal, view.state, names):
-            raise LuminousError(f"{source}: task.initial: {to_sexpr(literal)} does not hold in the generated scene "
-                                "(object states are set; where objects stand comes from scene.relations)")
-
-
 def start_pose(world: World, spec: AgentPoseSpec | None) -> AgentPose | None:
     """The CDF's agent start (`task.agent`): the reachable point nearest its position, its rotation and
     horizon (unset parts from the default start); None when the CDF gives none."""
@@ -184,13 +135,16 @@ def cdf_episode(config: EnvConfig, paths: Sequence[str], rng: np.random.Generato
                 goal: Any = TaskGoal(task_from_cdf(doc, names, scene_seed=seed))
             except TaskError as exc:
                 raise LuminousError(f"{path}: task.goal: {exc}") from None
-            scene = with_initial(scene, doc.task.initial, names, path)
+            try:
+                scene = scene_with_initial(scene, doc.task.initial, names)
+            except TaskError as exc:
+                raise LuminousError(f"{path}: {exc}") from None
             world = worlds.get(scene)
             try:
-                check_initial(world.view(), doc.task.initial, names, path)
-            except LuminousError:
+                check_initial(world.view().state, doc.task.initial, names)
+            except TaskError as exc:
                 worlds.put(world)
-                raise
+                raise LuminousError(f"{path}: {exc}") from None
             start = start_pose(world, doc.task.agent)
         else:
             world = worlds.get(scene)

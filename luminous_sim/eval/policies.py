@@ -64,7 +64,7 @@ class OracleAgent:
         self.policy = OraclePolicy(env)
 
     def reset(self, instruction: str, info: dict[str, Any]) -> None:
-        pass
+        """Nothing to reset: the oracle replans from the env's state at every step."""
 
     def act(self, observation: dict[str, Any], info: dict[str, Any]) -> Any:
         return self.policy(observation)

@@ -37,6 +37,7 @@ from luminous_sim.tasks.evaluate import (
     parents,
     task_satisfied,
 )
+from luminous_sim.tasks.initial import STATE_LITERALS, check_initial, initial_literals, scene_with_initial
 from luminous_sim.tasks.meanings import MEANINGS, PredicateMeaning
 from luminous_sim.tasks.model import PddlParams, TaskInstance
 from luminous_sim.tasks.sample import (
@@ -58,6 +59,7 @@ from luminous_sim.tasks.types import (
 __all__ = [
     "MEANINGS",
     "PLAN_ORDER",
+    "STATE_LITERALS",
     "TASK_TYPES",
     "TEMPLATES",
     "Condition",
@@ -69,6 +71,7 @@ __all__ = [
     "TaskSamplingError",
     "TaskType",
     "cdf_for_task",
+    "check_initial",
     "closed_receptacles_goal",
     "compile_goal",
     "conjunct_progress",
@@ -79,6 +82,7 @@ __all__ = [
     "goal_for",
     "goal_satisfied",
     "in_receptacle",
+    "initial_literals",
     "matching",
     "names_from_scene",
     "params_from_goal",
@@ -86,6 +90,7 @@ __all__ = [
     "parents",
     "required_objects",
     "sample_task",
+    "scene_with_initial",
     "state_from_scene",
     "task_conditions",
     "task_description",
