@@ -190,10 +190,13 @@ def alignment_checks(scene: Scene) -> list[Check]:
 
 def host_checks(scene: Scene) -> list[Check]:
     """Small objects on a host the placement table does not rule out for their type (`never_on`), and, for
-    types ALFRED's scenes tell us about (data/object_hosts.json), on a host they use for it."""
+    types ALFRED's scenes tell us about (data/object_hosts.json), on a host they use for it: over every such
+    object, and over those whose room holds a receptacle of a type ALFRED uses for it (where the rule applies;
+    elsewhere CSSG backs off to the compatibility table)."""
     never = placement()["never_on"]
     seen = object_hosts()
     by_id = {o.id: o for o in scene.objects}
+    present = {o.type for o in scene.objects}
     out = []
     for o in scene.objects:
         host = by_id.get(o.parent or "")
@@ -202,5 +205,8 @@ def host_checks(scene: Scene) -> list[Check]:
         if o.type in never:
             out.append(Check("not on a host ruled out", o.id, host.type not in never[o.type]))
         if o.type in seen:
-            out.append(Check("on a host ALFRED uses", o.id, host.type in seen[o.type]))
+            met = host.type in seen[o.type]
+            out.append(Check("on a host ALFRED uses (any room)", o.id, met))
+            if present & set(seen[o.type]):
+                out.append(Check("on a host ALFRED uses (room has one)", o.id, met))
     return out

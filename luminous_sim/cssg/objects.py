@@ -12,7 +12,7 @@ from shapely.geometry import Polygon
 
 from luminous_sim.cssg.draft import Placed, SceneDraft
 from luminous_sim.cssg.requests import Request
-from luminous_sim.cssg.tables import host_weight, supports_for
+from luminous_sim.cssg.tables import fallback_weight, host_weight, ruled_out, supports_for
 from luminous_sim.cssg.walls import clashes
 from luminous_sim.scene import (
     RegionSpot,
@@ -35,14 +35,16 @@ MAX_FILL = 0.85
 def _hosts(draft: SceneDraft, req: Request, by_name: dict[str, str],
            natural: bool = True) -> tuple[list[Placed], str | None]:
     """Candidate receptacles and the region kind wanted ("surface" for on, "volume" for in); with `natural`,
-    for a default object, not those the placement table rules out for the type (`tables.host_weight` 0)."""
+    for a default object, not those the placement table rules out for the type (`tables.ruled_out`)."""
     support = next((r for r in req.rels if r.relation in ("on", "in")), None)
     if support is not None:
         return draft.referents(by_name.get(support.anchor or "")), (
             "surface" if support.relation == "on" else "volume")
-    allowed = {t for t in supports_for(req.type) if not natural or req.explicit or host_weight(req.type, t) > 0}
-    # default objects never go in wall-mounted cabinets: nobody standing on the floor could see them there
-    return [p for p in draft.placed if p.obj.type in allowed and p.obj.layer not in ("object", "decoration")], None
+    allowed = {t for t in supports_for(req.type) if not natural or req.explicit or not ruled_out(req.type, t)}
+    # default objects never go in wall-mounted cabinets (nobody standing on the floor could see them there), but
+    # they do hang on the holders made for them
+    return [p for p in draft.placed if p.obj.type in allowed
+            and (p.obj.layer not in ("object", "decoration") or p.obj.type in HANGERS)], None
 
 
 def _facing_point(draft: SceneDraft, req: Request, by_name: dict[str, str]) -> tuple[float, float] | None:
@@ -125,15 +127,19 @@ def _eligible(draft: SceneDraft, entry, hosts: list[Placed], kind: str | None) -
 
 def _draw_spot(spots: list[RegionSpot], object_type: str, by_frequency: bool, rng: np.random.Generator) -> int:
     """Index of a spot drawn uniformly or (for an object the CDF does not put anywhere) with each host type as
-    likely as ALFRED's scenes put this type there (`tables.host_weight`), shared among that host's spots."""
+    likely as ALFRED's scenes put this type there (`tables.host_weight`), that weight shared among the spots of
+    all hosts of that type. Where no spot is on a host ALFRED used for the type, the back-off
+    (`tables.fallback_weight`: how often ALFRED puts anything there) weighs the compatible hosts instead."""
     if not by_frequency:
         return int(rng.integers(len(spots)))
-    per_host: dict[str, int] = {}
+    per_type: dict[str, int] = {}
     for s in spots:
-        per_host[s.host.id] = per_host.get(s.host.id, 0) + 1
-    w = np.array([host_weight(object_type, s.host.type) / per_host[s.host.id] for s in spots])
+        per_type[s.host.type] = per_type.get(s.host.type, 0) + 1
+    w = np.array([host_weight(object_type, s.host.type) / per_type[s.host.type] for s in spots])
+    if not w.any():
+        w = np.array([fallback_weight(object_type, s.host.type) / per_type[s.host.type] for s in spots])
     if not w.any():  # a CDF object with nowhere better to go (a baseball bat in a room with only a bed)
-        w = np.array([1.0 / per_host[s.host.id] for s in spots])
+        w = np.ones(len(spots))
     return int(min(np.searchsorted(np.cumsum(w), rng.random() * w.sum(), side="right"), len(spots) - 1))
 
 

@@ -14,7 +14,7 @@ import numpy as np
 from luminous_sim.cdf.graph import oriented_relations, resolve_order
 from luminous_sim.cdf.relations import STRUCTURE_ELEMENTS
 from luminous_sim.cdf.schema import ChallengeDefinition
-from luminous_sim.cssg.tables import generation_layer, needs, placement, room_defaults, supports_for
+from luminous_sim.cssg.tables import generation_layer, needs, object_hosts, placement, room_defaults, supports_for
 from luminous_sim.vocab import room_objects
 
 
@@ -192,7 +192,13 @@ def _ordered(reqs: dict[str, Request]) -> list[Request]:
                 if not rel.explicit and rel.anchor in reqs and g.has_edge(r.name, rel.anchor):
                     r.rels.remove(rel)
                     g.remove_edge(rel.anchor, r.name)
+    def rank(r: Request) -> float:
+        # a default object that ALFRED hangs (a hand towel on its holder) waits for the wall things
+        hung = r.layer == "object" and not r.explicit and any(
+            generation_layer(h) == "wall" for h in object_hosts().get(r.type, ()))
+        return layer_rank["wall"] + 0.5 if hung else layer_rank[r.layer]
+
     order = nx.lexicographical_topological_sort(
-        g, key=lambda n: (layer_rank[reqs[n].layer], reqs[n].layer == "object" and not reqs[n].explicit,
+        g, key=lambda n: (rank(reqs[n]), reqs[n].layer == "object" and not reqs[n].explicit,
                           prio.get(reqs[n].type, 99), not reqs[n].explicit, n))
     return [reqs[n] for n in order]

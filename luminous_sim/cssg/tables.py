@@ -78,16 +78,39 @@ def needs(object_type: str) -> tuple[str, ...]:
 
 
 HOST_PRIOR = 1.0
-"""Pseudo-count of every receptacle type the compatibility table allows (ALFRED's sample is small)."""
+"""Pseudo-count of every receptacle type in the back-off weights (`fallback_weight`)."""
+
+
+def ruled_out(object_type: str, receptacle_type: str) -> bool:
+    """Whether the placement table rules this host out for a default object of this type, although the
+    compatibility table allows it ("never_on": no baseball bat on a bed)."""
+    return receptacle_type in placement()["never_on"].get(object_type, ())
 
 
 def host_weight(object_type: str, receptacle_type: str) -> float:
-    """How likely an object of this type with no on/in relation rests on/in a receptacle of that type, relative
-    to the others the compatibility table allows: ALFRED's real counts (data/object_hosts.json) plus HOST_PRIOR,
-    and 0 for a host the placement table rules out ("never_on": no baseball bat on a bed)."""
-    if receptacle_type in placement()["never_on"].get(object_type, ()):
+    """How likely an object of this type with no on/in relation rests on/in a receptacle of that type: how often
+    ALFRED's scenes put it there (data/object_hosts.json; 0 for a host they never used, or one ruled out)."""
+    if ruled_out(object_type, receptacle_type):
         return 0.0
-    return HOST_PRIOR + object_hosts().get(object_type, {}).get(receptacle_type, 0)
+    return float(object_hosts().get(object_type, {}).get(receptacle_type, 0))
+
+
+def fallback_weight(object_type: str, receptacle_type: str) -> float:
+    """The back-off where a room holds none of the hosts ALFRED used for this type (or ALFRED never placed it):
+    how often ALFRED's scenes put anything on/in that receptacle type, plus HOST_PRIOR; 0 for one ruled out.
+    The compatibility table (`supports_for`) decides which receptacles may be weighed at all."""
+    if ruled_out(object_type, receptacle_type):
+        return 0.0
+    return HOST_PRIOR + _host_totals().get(receptacle_type, 0)
+
+
+@cache
+def _host_totals() -> dict[str, int]:
+    totals: dict[str, int] = {}
+    for counts in object_hosts().values():
+        for rec, k in counts.items():
+            totals[rec] = totals.get(rec, 0) + k
+    return totals
 
 
 def object_hosts() -> dict[str, dict[str, int]]:
