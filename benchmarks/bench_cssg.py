@@ -19,7 +19,9 @@ Then the natural-room measures (cssg/natural.py), each over the objects it appli
 (seats at a table facing it, sofa facing the TV or coffee table, armchairs facing the seating group,
 bedside tables at the bed's head, sofa clear of a dining table, drawer units against a wall), the free
 floor the agent reaches (pooled share, scenes with >= 95%, the largest region cut off), furniture square
-to the room, and small objects on plausible hosts.
+to the room, small objects on plausible hosts (not ruled out; on a receptacle type ALFRED's scenes use for
+the type, over every object of a type ALFRED shows and over those whose room holds such a receptacle) and
+small objects on the floor against a wall.
 """
 
 from __future__ import annotations
@@ -156,9 +158,16 @@ def run(room_type: str, n: int, physics: bool, grid_dir: Path | None, alfred: bo
 
 def _natural(scene, catalog, acc: dict) -> None:
     """Add one scene's natural-room measures to `acc`."""
-    from luminous_sim.cssg.natural import alignment_checks, floor_reach, functional_checks, host_checks
+    from luminous_sim.cssg.natural import (
+        alignment_checks,
+        floor_object_checks,
+        floor_reach,
+        functional_checks,
+        host_checks,
+    )
 
-    for c in functional_checks(scene, catalog) + alignment_checks(scene) + host_checks(scene):
+    for c in (functional_checks(scene, catalog) + alignment_checks(scene) + host_checks(scene)
+              + floor_object_checks(scene, catalog)):
         hit = acc["checks"].setdefault(c.rule, [0, 0])
         hit[0] += c.met
         hit[1] += 1

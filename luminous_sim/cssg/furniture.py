@@ -210,8 +210,9 @@ REJECT_CELLS = 3
 """Cells either side of a draw that blocked the way that are not drawn again (at that heading)."""
 
 
-def place_piece(ctx: FloorContext, req: Request, tries: int = 6) -> Placed2D | None:
-    """Place one furniture request; None if no variant fits anywhere.
+def place_piece(ctx: FloorContext, req: Request, tries: int = 6, layer: str = "furniture") -> Placed2D | None:
+    """Place one furniture request (or, with `layer` "object", a small thing lying on the floor); None if no
+    variant fits anywhere.
 
     Cells are drawn with P proportional to exp(-cost / T); a draw that breaks one of the CDF's hard
     relations is redrawn, and the last try takes the cheapest feasible cell instead.
@@ -266,7 +267,7 @@ def place_piece(ctx: FloorContext, req: Request, tries: int = 6) -> Placed2D | N
                 if fallback is None or share > fallback[0]:
                     fallback = (share, entry, x, y, yaw)
             continue
-        placed = _put(ctx, req, entry, x, y, yaw)
+        placed = _put(ctx, req, entry, x, y, yaw, layer)
         if placed is not None or fallback is None:
             return placed
         break
@@ -275,13 +276,14 @@ def place_piece(ctx: FloorContext, req: Request, tries: int = 6) -> Placed2D | N
     return None
 
 
-def _put(ctx: FloorContext, req: Request, entry, x: float, y: float, yaw: float) -> Placed2D | None:
+def _put(ctx: FloorContext, req: Request, entry, x: float, y: float, yaw: float,
+         layer: str = "furniture") -> Placed2D | None:
     """Add a piece where it was drawn (None: a default piece that breaks one of its implicit rules there, which
-    is better left out)."""
+    is better left out); furniture is fixed, a small object on the floor is not."""
     if not req.explicit and not hard_relations_met(ctx, req, entry, x, y, yaw, implicit=True):
         return None
     draft = ctx.draft
-    obj = draft.add(entry, x, y, -entry.bbox_min[2], yaw, "furniture", fixed=True, name=req.name,
+    obj = draft.add(entry, x, y, -entry.bbox_min[2], yaw, layer, fixed=layer != "object", name=req.name,  # type: ignore[arg-type]
                     states=req.states, color=req.colour())
     ctx.commit(obj.id, draft.placed[-1].footprint, reach_of(entry, obj.position[2]))
     placed = Placed2D(req.type, x, y, yaw, entry)

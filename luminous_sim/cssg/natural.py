@@ -6,7 +6,9 @@ read off the scene's geometry alone (so the uniform baseline is measured exactly
   drawer unit standing free of the walls;
 - dead zones: the share of free floor the agent reaches, and the largest region it cannot walk into;
 - alignment: floor furniture square to the (rectilinear) room;
-- hosts: small objects on receptacles the placement table allows for them (no sports gear on a bed).
+- hosts: small objects on receptacles the placement table allows for them (no sports gear on a bed), on a
+  receptacle ALFRED uses for them, and, lying on the floor (a basketball, a plunger), against a wall or in a
+  corner.
 """
 
 from __future__ import annotations
@@ -209,4 +211,17 @@ def host_checks(scene: Scene) -> list[Check]:
             out.append(Check("on a host ALFRED uses (any room)", o.id, met))
             if present & set(seen[o.type]):
                 out.append(Check("on a host ALFRED uses (room has one)", o.id, met))
+    return out
+
+
+def floor_object_checks(scene: Scene, catalog: Catalog | None = None) -> list[Check]:
+    """Small objects lying or standing on the floor (no host): against a wall or in a corner, as ALFRED's
+    scenes keep them, not in the middle of the room."""
+    catalog = catalog or default_catalog()
+    room = scene.room.polygon()
+    out = []
+    for o in scene.objects:
+        if o.layer == "object" and o.parent is None:
+            fp = footprint(catalog.for_object(o), o.position[0], o.position[1], o.yaw)
+            out.append(Check("on the floor, against a wall", o.id, _back_gap(fp, o.yaw, room) <= WALL_GAP))
     return out

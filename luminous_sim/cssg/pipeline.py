@@ -16,6 +16,7 @@ from luminous_sim.assets.catalog import Catalog, default_catalog
 from luminous_sim.cdf.schema import ChallengeDefinition
 from luminous_sim.cssg.attributes import check_sizes
 from luminous_sim.cssg.draft import SceneDraft
+from luminous_sim.cssg.floor_objects import may_lie_on_floor, place_on_floor, wants_floor
 from luminous_sim.cssg.furniture import FloorContext, hard_relations_met, place_piece, register
 from luminous_sim.cssg.objects import place_object
 from luminous_sim.cssg.requests import Request, requests_from_cdf
@@ -183,8 +184,11 @@ def _place(draft: SceneDraft, ctx: FloorContext, req: Request, by_name: dict, oc
         by_name[req.name] = draft.placed[-1].obj.id
         last = draft.placed[-1].obj
         return hard_relations_met(ctx, req, draft.placed[-1].entry, last.position[0], last.position[1], last.yaw)
-    if req.layer == "object":
-        return place_object(draft, req, by_name, occupied)
+    if req.layer == "object":  # sports gear first on the floor as often as ALFRED puts it there
+        if wants_floor(req, draft.rng) and place_on_floor(ctx, req, by_name):
+            return True
+        return place_object(draft, req, by_name, occupied) or (
+            may_lie_on_floor(req) and place_on_floor(ctx, req, by_name))
     ok = place_wall_piece(draft, req, by_name,
                           accept=lambda e, x, y, yaw: hard_relations_met(ctx, req, e, x, y, yaw))
     if ok:

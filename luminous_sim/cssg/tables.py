@@ -116,3 +116,16 @@ def _host_totals() -> dict[str, int]:
 def object_hosts() -> dict[str, dict[str, int]]:
     """Per object type, how often ALFRED's scenes put it on/in each receptacle type (data/object_hosts.json)."""
     return _load("object_hosts.json")["hosts"]
+
+
+def floor_relations(object_type: str) -> tuple[str, ...]:
+    """The floor relations ("in_corner", "against_wall") by which a default object of this type may lie on the
+    floor (placement.json's on_floor); empty for a type that never does."""
+    return tuple(placement()["on_floor"].get(object_type, ()))
+
+
+def floor_share(object_type: str) -> float:
+    """ALFRED's share of this type's placements that rest on the floor (data/object_hosts.json's floor); 0 for a
+    type it never shows."""
+    got = _load("object_hosts.json").get("floor", {}).get(object_type)
+    return got["on_floor"] / got["placements"] if got and got["placements"] else 0.0

@@ -27,8 +27,9 @@ AGENT_HEIGHT = 1.8
 
 
 def blocks_agent(obj: SceneObject, entry: AssetEntry) -> bool:
-    """Whether a placed thing stands in the agent's way: on the floor and lower than its height."""
-    if obj.parent is not None or obj.layer == "object":
+    """Whether a placed thing stands in the agent's way: on the floor (furniture, or a small object lying there:
+    a basketball in a corner) and lower than its height."""
+    if obj.parent is not None:
         return False
     return obj.position[2] + entry.bbox_min[2] < AGENT_HEIGHT
 
