@@ -208,9 +208,9 @@ def host_checks(scene: Scene) -> list[Check]:
             out.append(Check("not on a host ruled out", o.id, host.type not in never[o.type]))
         if o.type in seen:
             met = host.type in seen[o.type]
-            out.append(Check("on a host ALFRED uses (any room)", o.id, met))
+            out.append(Check("on ALFRED's host (any room)", o.id, met))
             if present & set(seen[o.type]):
-                out.append(Check("on a host ALFRED uses (room has one)", o.id, met))
+                out.append(Check("on ALFRED's host (room has one)", o.id, met))
     return out
 
 

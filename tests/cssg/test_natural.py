@@ -11,7 +11,7 @@ from luminous_sim import cdf
 from luminous_sim.cssg import empty_cdf, generate, generate_uniform
 from luminous_sim.cssg.natural import alignment_checks, floor_reach, functional_checks, host_checks
 from luminous_sim.cssg.requests import requests_from_cdf
-from luminous_sim.cssg.tables import host_weight
+from luminous_sim.cssg.tables import fallback_weight, host_weight
 
 SEEDS = range(8)
 
@@ -114,13 +114,18 @@ def test_furniture_is_square_to_the_room():
 
 
 def test_no_sports_gear_on_a_bed():
-    assert host_weight("BasketBall", "Bed") == 0 and host_weight("BasketBall", "SideTable") > 0
+    assert host_weight("BasketBall", "Bed") == 0 and fallback_weight("BasketBall", "Bed") == 0
+    assert fallback_weight("BasketBall", "SideTable") > 0
     assert host_weight("Knife", "CounterTop") > host_weight("Knife", "Drawer")  # ALFRED's counts
-    checks = []
+    checks, gear = [], []
     for seed in range(20):
         scene = generate(empty_cdf("Bedroom"), seed=seed).scene
         checks += [c.met for c in host_checks(scene) if c.rule == "not on a host ruled out"]
-    assert len(checks) >= 3 and all(checks)
+        by_id = {o.id: o for o in scene.objects}
+        gear += [o.parent is None or by_id[o.parent].type != "Bed" for o in scene.objects
+                 if o.type in ("BaseballBat", "BasketBall", "TennisRacket")]
+    assert checks and all(checks)
+    assert len(gear) >= 3 and all(gear)  # on the floor (basketballs) or on a host other than the bed
 
 
 @pytest.mark.slow
