@@ -166,7 +166,7 @@ def _natural(scene, catalog, acc: dict) -> None:
         host_checks,
     )
 
-    for c in (functional_checks(scene, catalog) + alignment_checks(scene) + host_checks(scene)
+    for c in (functional_checks(scene, catalog) + alignment_checks(scene) + host_checks(scene, catalog)
               + floor_object_checks(scene, catalog)):
         hit = acc["checks"].setdefault(c.rule, [0, 0])
         hit[0] += c.met

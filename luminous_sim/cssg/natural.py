@@ -23,7 +23,20 @@ from shapely.geometry import LineString, Polygon
 
 from luminous_sim.assets.catalog import Catalog, default_catalog
 from luminous_sim.cssg.tables import object_hosts, placement
-from luminous_sim.scene import STEP, Scene, SceneObject, blocks_agent, footprint
+from luminous_sim.scene import (
+    STEP,
+    Scene,
+    SceneObject,
+    Shade,
+    View,
+    blocks_agent,
+    footprint,
+    region_spots,
+    rotate,
+    scene_reachable_grid,
+    shades,
+)
+from luminous_sim.vocab import HANGERS, abilities
 from luminous_sim.vocab.agent_body import AGENT_RADIUS
 
 SEATS = frozenset({"Chair", "Stool", "Footstool"})
@@ -190,15 +203,22 @@ def alignment_checks(scene: Scene) -> list[Check]:
     return out
 
 
-def host_checks(scene: Scene) -> list[Check]:
+def host_checks(scene: Scene, catalog: Catalog | None = None) -> list[Check]:
     """Small objects on a host the placement table does not rule out for their type (`never_on`), and, for
     types ALFRED's scenes tell us about (data/object_hosts.json), on a host they use for it: over every such
-    object, and over those whose room holds a receptacle of a type ALFRED uses for it (where the rule applies;
-    elsewhere CSSG backs off to the compatibility table)."""
+    object, and over those whose room holds a receptacle of a type ALFRED uses for it with a region the agent
+    can reach into from where it stands (where the rule applies; elsewhere CSSG backs off to the compatibility
+    table). A region the agent cannot see into within reach (a bathtub's bottom) holds nothing it could pick up,
+    so it does not count; nor does a cabinet on the wall, where no one standing
+    on the floor sees in (CSSG puts no default object there)."""
+    catalog = catalog or default_catalog()
     never = placement()["never_on"]
     seen = object_hosts()
     by_id = {o.id: o for o in scene.objects}
-    present = {o.type for o in scene.objects}
+    eyes = scene_reachable_grid(scene, catalog).reshape(-1, 2)
+    usable = {o.type for o in scene.objects if o.type in _host_types()
+              and (o.layer != "decoration" or o.type in HANGERS)  # not a wall cabinet above the counter
+              and _reached(o, catalog.for_object(o), eyes)}
     out = []
     for o in scene.objects:
         host = by_id.get(o.parent or "")
@@ -209,9 +229,34 @@ def host_checks(scene: Scene) -> list[Check]:
         if o.type in seen:
             met = host.type in seen[o.type]
             out.append(Check("on ALFRED's host (any room)", o.id, met))
-            if present & set(seen[o.type]):
+            if usable & set(seen[o.type]):
                 out.append(Check("on ALFRED's host (room has one)", o.id, met))
     return out
+
+
+SMALL = 0.05
+"""Height (m) of the small object the agent must see and reach in a region for the region to count."""
+
+
+def _reached(host: SceneObject, entry, eyes: np.ndarray) -> bool:
+    """Whether the agent, standing on one of `eyes` (its reachable grid), sees and reaches a small object
+    somewhere on a 3 x 3 lattice over one of the host's regions (as CSSG's object layer tests its spots): a
+    bathtub's bottom is too low, too far in and behind its rim."""
+    shade = shades(entry)
+    for spot in region_spots(host, entry):
+        if spot.gated and not abilities(host.type).openable:
+            continue
+        local = [(fx * spot.size[0] / 3, fy * spot.size[1] / 3) for fx in (-1, 0, 1) for fy in (-1, 0, 1)]
+        points = rotate(np.array(local), spot.yaw) + np.array(spot.center)
+        view = View(shade.get(spot.name, Shade()), host.position[:2], host.yaw, eyes,
+                    around=(spot.center, 0.5 * float(np.hypot(*spot.size))))
+        if view.sees_each(points, (spot.floor_z + 0.5 * SMALL, spot.floor_z + 0.8 * SMALL)).any():
+            return True
+    return False
+
+
+def _host_types() -> set[str]:
+    return {t for hosts in object_hosts().values() for t in hosts}
 
 
 def floor_object_checks(scene: Scene, catalog: Catalog | None = None) -> list[Check]:
