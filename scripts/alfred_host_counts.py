@@ -7,8 +7,9 @@ From every trajectory of a split (valid_seen by default):
 - hosts: the receptacle each object was picked up from the first time, before the agent had put it anywhere
   (the planner's `coordinateReceptacleObjectId` of that PickupObject: where AI2-THOR's scene put it), each
   object counted once per trajectory (both objects of a pick_two task count);
-- floor: per type, first pick-ups from no receptacle (the floor), and of its distinct placements in `scene.object_poses` (every pickupable object of the scene,
-  as ALFRED randomised it for that trajectory), how many rest on the floor: the object's centre at most its
+- floor: per type, first pick-ups from no receptacle (the floor), and of its distinct placements in
+  `scene.object_poses` (every pickupable object of the scene, as ALFRED randomised it for that trajectory),
+  how many rest on the floor: the object's centre at most its
   asset's half height + FLOOR_SLACK above the floor (AI2-THOR's floors are at y = 0). Low shelves and the
   bottoms of base cabinets pass that test too, so the share is an upper bound for kitchen and bathroom things;
   `placement.json`'s `on_floor` says which types CSSG lets lie on the floor.
