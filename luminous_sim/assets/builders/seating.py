@@ -60,13 +60,21 @@ def _pillow(size, center, lean: float, slot: str = "cushion") -> Part:
 
 # ------------------------------------------------------------------------------------------------ chair
 
-@register("Chair", variants=5, category="furniture")
+BAR_STOOL = "bar_stool"
+"""Tag of the Chair variants that are counter-height stools (ALFRED types the stools at AI2-THOR's kitchen
+counters as Chair; CSSG draws these only for a chair at a counter, the others everywhere else)."""
+
+
+@register("Chair", variants=8, category="furniture")
 def chair(v: int, rng: np.random.Generator) -> AssetSpec:
-    """A dining/desk chair: four legs, a seat and a back.
+    """A dining/desk chair: four legs, a seat and a back; or (variants 5-7) a counter-height bar stool.
 
     Variants: slatted back, solid panel back, ladder back with stretchers, metal tube chair, upholstered
-    parsons chair with tapered legs.
+    parsons chair with tapered legs; backless round stool on splayed legs with a footrest ring, square
+    wooden stool with stretchers and a low back, swivel stool on a pedestal with a round base.
     """
+    if v >= 5:
+        return _bar_stool(v, rng)
     w, d = pick(rng, 0.42, 0.5), pick(rng, 0.42, 0.5)
     seat_h = pick(rng, 0.44, 0.48)
     back_h = pick(rng, 0.4, 0.5)
@@ -118,6 +126,60 @@ def chair(v: int, rng: np.random.Generator) -> AssetSpec:
         regions=[surface("seat", w, d - 0.05, seat_h, 0.4, cy=0.025)],
         description="chair with four legs, a seat and a back",
     )
+
+
+def _bar_stool(v: int, rng: np.random.Generator) -> AssetSpec:
+    """A stool for a kitchen counter (about 0.9 m): seat at 0.62-0.68 m, a footrest about 0.25 m up."""
+    seat_h = pick(rng, 0.62, 0.68)
+    foot_h = pick(rng, 0.22, 0.27)
+    parts: list[Part] = []
+    if v == 5:  # round seat on four splayed legs, a ring footrest
+        r = pick(rng, 0.16, 0.19)
+        spread = r + pick(rng, 0.04, 0.07)
+        for k in range(4):
+            a = np.pi / 4 + k * np.pi / 2
+            top = (0.6 * r * np.cos(a), 0.6 * r * np.sin(a), seat_h - 0.04)
+            foot = (spread * np.cos(a), spread * np.sin(a), 0.0)
+            parts.append(Part(g.splayed_leg(top, foot, 0.016, 0.013), "metal", convex=True))
+        ring = r + (spread - r) * (1 - foot_h / (seat_h - 0.04)) * 0.97
+        parts.append(Part(g.torus_ring(ring, 0.009, (0, 0, foot_h)), "metal", collide=False))
+        parts.append(Part(g.cylinder(r, 0.04, (0, 0, seat_h - 0.02), sections=24), "wood", convex=True))
+        region = surface("seat", 1.4 * r, 1.4 * r, seat_h, 0.4, margin=0.0)
+        desc, mass = "backless round bar stool on splayed metal legs with a footrest ring", 4.0
+    elif v == 6:  # square wooden stool, stretchers all round, a low back
+        w = pick(rng, 0.36, 0.42)
+        t = 0.035
+        parts += corner_legs(w, w, seat_h - t, 0.025, 0.017, "wood", square=True)
+        for sy in (-1, 1):  # footrest at the front and back, side stretchers a little higher
+            parts.append(Part(g.box((w - 0.05, 0.022, 0.03), (0, sy * (w / 2 - 0.025), foot_h)), "wood", convex=True))
+        for sx in (-1, 1):
+            parts.append(Part(g.box((0.022, w - 0.05, 0.03), (sx * (w / 2 - 0.025), 0, foot_h + 0.1)), "wood",
+                              convex=True))
+        parts.append(Part(g.box((w, w, t), (0, 0, seat_h - t / 2)), "wood", convex=True))
+        back_y, back_h = -w / 2 + 0.02, pick(rng, 0.2, 0.26)
+        for sx in (-1, 1):
+            parts.append(Part(g.box((0.034, 0.034, back_h), (sx * (w / 2 - 0.025), back_y, seat_h + back_h / 2)),
+                              "wood", convex=True))
+        parts.append(Part(g.box((w - 0.02, 0.025, 0.07), (0, back_y, seat_h + back_h - 0.035)), "wood", convex=True))
+        region = surface("seat", w, w - 0.04, seat_h, 0.4, cy=0.02)
+        desc, mass = "square wooden bar stool with stretchers and a low back", 5.0
+    else:  # swivel stool: round base, a column, a footrest ring and a padded seat
+        r = pick(rng, 0.17, 0.2)
+        base = pick(rng, 0.2, 0.23)
+        parts.append(Part(g.frustum(base, base * 0.8, 0.03, sections=24), "metal", convex=True))
+        parts.append(Part(g.cylinder(0.03, seat_h - 0.1, (0, 0, 0.03 + (seat_h - 0.1) / 2), sections=14), "metal",
+                          convex=True))
+        parts.append(Part(g.torus_ring(pick(rng, 0.15, 0.18), 0.01, (0, 0, foot_h)), "metal", collide=False))
+        for a in (0.0, np.pi / 2):  # the footrest's spokes
+            dx, dy = np.cos(a), np.sin(a)
+            parts.append(Part(g.rod((-0.16 * dx, -0.16 * dy, foot_h), (0.16 * dx, 0.16 * dy, foot_h), 0.008),
+                              "metal", collide=False))
+        prof = [(0, 0), (r * 0.55, 0), (r, 0.02), (r, 0.06), (r * 0.9, 0.075), (0, 0.08)]
+        parts.append(Part(g.revolve(prof, (0, 0, seat_h - 0.08), sections=24), "leather", convex=True))
+        region = surface("seat", 1.4 * r, 1.4 * r, seat_h, 0.4, margin=0.0)
+        desc, mass = "swivel bar stool with a padded seat on a pedestal with a round base", 7.0
+    return AssetSpec("Chair", v, "furniture", [Link("base", parts, mass)], regions=[region], description=desc,
+                     tags=[BAR_STOOL])
 
 
 # ------------------------------------------------------------------------------------ upholstered body
