@@ -61,7 +61,8 @@ def sample_uniform(cdf: ChallengeDefinition, shell: RoomShell, rng: np.random.Ge
     """One baseline sample; its report scores the CDF's relations that it met by chance."""
     draft = SceneDraft(shell, catalog, rng)
     place_fixtures(draft)
-    requests = requests_from_cdf(cdf, shell.room_type, rng, area=shell.area)
+    requests = requests_from_cdf(cdf, shell.room_type, rng, area=shell.area,
+                                 fixtures=frozenset(p.obj.type for p in draft.placed if p.obj.layer == "fixture"))
     ctx = FloorContext.create(draft)
     by_name: dict[str, str] = {}
     occupied: dict = {}

@@ -4,15 +4,19 @@ heaviest relation, on the free-floor grid, footprint collision-free and clear of
 from __future__ import annotations
 
 import math
+from collections.abc import Iterator
+from contextlib import contextmanager
 from dataclasses import dataclass
 
 import numpy as np
+import shapely
+import shapely.affinity
 
 from luminous_sim.cssg.draft import SEGMENTED_FIXTURES, SceneDraft
 from luminous_sim.cssg.grid import HEADINGS, FloorGrid
 from luminous_sim.cssg.lattice import Lattice
 from luminous_sim.cssg.reach import FloorPiece
-from luminous_sim.cssg.requests import Request
+from luminous_sim.cssg.requests import FIXTURE_ANCHOR, Request
 from luminous_sim.cssg.scores import (
     TEMPERATURE,
     TOLERANCE,
@@ -34,6 +38,8 @@ REACHED_SHARE = 0.95
 to the rest: ProcTHOR's "all floor space connected", with a little slack for pockets behind furniture."""
 WORK_ZONE = 0.7
 """metres kept free in front of every fixture (counters, sink, stove, fridge, toilet, bathtub)."""
+SEAT_COUNTERS = frozenset({"CounterTop"})
+"""Fixtures whose work zone a seat at them may stand in (stools at a kitchen counter)."""
 
 
 @dataclass
@@ -55,6 +61,9 @@ class FloorContext:
     """Relation fields computed so far (they depend on the room, the subject and the anchor only)."""
     lattice: Lattice = None  # type: ignore[assignment]
     """The agent's 0.25 m grid in this room."""
+    seat_zone: np.ndarray = None  # type: ignore[assignment]
+    """Cells kept free only as the work zone in front of a plain counter run (no sink, stove or appliance in
+    front of them, no door's clearance): where a stool at the counter may stand (`seat_zone_open`)."""
 
     @classmethod
     def create(cls, draft: SceneDraft) -> FloorContext:
@@ -63,16 +72,51 @@ class FloorContext:
         for zone in draft.shell.door_clearance_zones():
             grid.block(zone)
         pieces = []
+        blocked_before = ~grid.free
+        counter = np.zeros(grid.shape, dtype=bool)
         for p in draft.placed:
             if p.obj.parent is None:
                 grid.block(p.footprint)
                 pieces.append(FloorPiece.of(p.obj.id, grid._cells(p.footprint), reach_of(p.entry, p.obj.position[2])))
                 if p.obj.layer == "fixture":  # keep the work zone in front of counters and appliances
-                    grid.block(front_zone(p.entry, p.obj.position[0], p.obj.position[1], p.obj.yaw, WORK_ZONE))
+                    zone = front_zone(p.entry, p.obj.position[0], p.obj.position[1], p.obj.yaw, WORK_ZONE)
+                    if p.obj.type in SEAT_COUNTERS:
+                        counter |= grid._cells(zone)
+                    grid.block(zone)
+        other = np.zeros(grid.shape, dtype=bool)  # everything but the counters' own zones
+        for p in draft.placed:
+            if p.obj.parent is None:
+                other |= grid._cells(p.footprint)
+            if p.obj.layer == "fixture" and p.obj.type not in SEAT_COUNTERS:
+                # nor in front of a sink, a stove (its burners and knobs sit in the run) or an appliance
+                other |= grid._cells(_in_front(p.footprint, p.obj.yaw, WORK_ZONE + p.entry.dims[1]))
         c = poly.centroid
         lattice = Lattice.of(draft.shell, grid)
         clear = lattice.open_among(p.footprint for p in draft.placed if blocks_agent(p.obj, p.entry))
-        return cls(draft, grid, directional_wall_distance(grid), (c.x, c.y), {}, {}, pieces, clear, {}, lattice)
+        ctx = cls(draft, grid, directional_wall_distance(grid), (c.x, c.y), {}, {}, pieces, clear, {}, lattice,
+                  counter & ~other & ~blocked_before & grid.room)
+        for p in draft.placed:  # the room's fixtures as anchors of implicit rules ("@CounterTop": any run)
+            name = FIXTURE_ANCHOR + p.obj.type
+            if p.obj.layer == "fixture" and p.obj.parent is None and name not in ctx.placed:
+                register(ctx, name, p.obj, p.entry)
+        return ctx
+
+    @contextmanager
+    def seat_zone_open(self, req: Request) -> Iterator[None]:
+        """While placing a seat at a counter (a request with a rule's variant tag: a bar stool), the counters'
+        work zone is the only free floor (it stands at the counter's front, not beside its end); whatever
+        the seat then takes of it stays taken."""
+        if req.tag is None:
+            yield
+            return
+        before = self.grid.free.copy()
+        self.grid.set_free(self.seat_zone.copy())
+        try:
+            yield
+        finally:
+            now = self.grid.free
+            self.seat_zone = self.seat_zone & now
+            self.grid.set_free(before & now)
 
     def walkable(self, clear: np.ndarray) -> np.ndarray:
         """Fine-grid cells under the agent's grid points in the largest 4-connected part of those
@@ -108,10 +152,11 @@ class FloorContext:
     def snapshot(self) -> tuple:
         """What placing a piece changes, to go back to with `restore`."""
         return (self.grid.free.copy(), self.clear.copy(), list(self.pieces), dict(self.placed),
-                dict(self.alternates))
+                dict(self.alternates), self.seat_zone.copy())
 
     def restore(self, snap: tuple) -> None:
-        free, clear, pieces, placed, alternates = snap
+        free, clear, pieces, placed, alternates, seat_zone = snap
+        self.seat_zone = seat_zone.copy()
         self.grid.set_free(free.copy())
         self.clear, self.pieces = clear.copy(), list(pieces)
         self.placed, self.alternates = dict(placed), dict(alternates)
@@ -155,6 +200,18 @@ class FloorContext:
     def cost_at(self, relation: str, entry, name: str | None, x: float, y: float, yaw: float | None = None) -> float:
         return min(cost_in_field(relation, self.relation_field(relation, entry, a), self.grid, entry, self.wall_dirs,
                                  x, y, yaw) for a in self.anchors(name))
+
+
+SEAT_SIDE = 0.15
+"""metres either side of a sink, a stove or an appliance kept clear of seats at the counter."""
+
+
+def _in_front(fp, yaw: float, depth: float):
+    """The floor a footprint sweeps moving `depth` metres forward (towards its front at `yaw`), widened by
+    SEAT_SIDE: where one stands to use it."""
+    front = (-math.sin(yaw), math.cos(yaw))
+    moved = shapely.affinity.translate(fp, front[0] * depth, front[1] * depth)
+    return shapely.convex_hull(shapely.union(fp, moved)).buffer(SEAT_SIDE)
 
 
 UNARY = frozenset({"against_wall", "in_corner", "in_centre"})

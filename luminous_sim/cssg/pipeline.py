@@ -179,8 +179,9 @@ def _place(draft: SceneDraft, ctx: FloorContext, req: Request, by_name: dict, oc
         if req.type in ATTACHED:
             return False
     if req.layer in ("furniture", "fixture"):
-        if place_piece(ctx, req) is None:
-            return False
+        with ctx.seat_zone_open(req):  # a stool at the counter stands where one works at it
+            if place_piece(ctx, req) is None:
+                return False
         by_name[req.name] = draft.placed[-1].obj.id
         last = draft.placed[-1].obj
         return hard_relations_met(ctx, req, draft.placed[-1].entry, last.position[0], last.position[1], last.yaw)
@@ -212,7 +213,7 @@ def sample_layout(cdf: ChallengeDefinition, shell: RoomShell, rng: np.random.Gen
     """
     draft = SceneDraft(shell, catalog, rng)
     place_fixtures(draft)
-    requests = requests_from_cdf(cdf, shell.room_type, rng, area=shell.area)
+    requests = requests_from_cdf(cdf, shell.room_type, rng, area=shell.area, fixtures=_fixtures(draft))
     ctx = FloorContext.create(draft)
     by_name: dict[str, str] = {}
     occupied: dict = {}
@@ -245,6 +246,11 @@ def sample_layout(cdf: ChallengeDefinition, shell: RoomShell, rng: np.random.Gen
     report = check_layout(draft, requests, ctx, unplaced, attempt)
     report.ignored_attributes = {r.name: sorted(r.attributes) for r in requests if r.name in bound and r.attributes}
     return draft, report
+
+
+def _fixtures(draft: SceneDraft) -> frozenset[str]:
+    """Types of the fixtures the room already has (for rules about them: stools at the counter)."""
+    return frozenset(p.obj.type for p in draft.placed if p.obj.layer == "fixture")
 
 
 def _undo_floors(requests: list[Request]) -> list[float]:

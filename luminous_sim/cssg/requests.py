@@ -50,14 +50,21 @@ class Request:
     """colour, material and size from the CDF (size: a factor or {width, depth, height})."""
     clear_above: float = 0.0
     """Half-width (m) of a wall piece the CDF hangs above this one (0: none): no window behind it there."""
+    tag: str | None = None
+    """The variant tag a rule asks for (a chair at a counter: "bar_stool"); None: only untagged-by-rule variants."""
 
     def variants(self, catalog) -> list:
-        """The asset variants this request may use, filtered and scaled by its attributes."""
+        """The asset variants this request may use, filtered and scaled by its attributes: those with the rule's
+        variant tag it asks for, else those without any rule's tag (no bar stool at a dining table)."""
         from luminous_sim.cssg.attributes import candidates
 
         pool = catalog.of_type(self.type)
         if self.asset:
             pool = [e for e in pool if e.id == self.asset]
+        elif self.tag:
+            pool = [e for e in pool if self.tag in e.tags] or pool
+        else:
+            pool = [e for e in pool if not set(e.tags) & rule_tags()] or pool
         return candidates(pool, self.attributes)
 
     def colour(self, where: str = "") -> tuple[float, float, float] | None:
@@ -76,9 +83,27 @@ DEFAULT_ABOVE_WIDTH = 1.2
 """Width (m) assumed for a wall piece hung above something when the CDF gives no size (a large painting)."""
 
 
+FIXTURE_ANCHOR = "@"
+"""Prefix of the anchor name an implicit rule gives a fixture type of the room (`@CounterTop`: any counter run)."""
+
+
+@cache
+def rule_tags() -> frozenset[str]:
+    """Variant tags that implicit rules ask for (drawn only by the requests those rules apply to)."""
+    return frozenset(r["variant_tag"] for r in implicit_table()["rules"] if "variant_tag" in r)
+
+
+def _rule_tag(subject: str, relation: str, target: str) -> str | None:
+    return next((r["variant_tag"] for r in implicit_table()["rules"] if "variant_tag" in r and r["subject"] == subject
+                 and r["relation"] == relation and r.get("target") == target), None)
+
+
 def requests_from_cdf(cdf: ChallengeDefinition, room_type: str, rng: np.random.Generator,
-                      defaults: bool = True, area: float = 20.0) -> list[Request]:
-    """Every object instance to place, with its relations, in placement order."""
+                      defaults: bool = True, area: float = 20.0, fixtures: frozenset[str] = frozenset()
+                      ) -> list[Request]:
+    """Every object instance to place, with its relations, in placement order; `fixtures`: the types of the
+    fixtures the room already has (a kitchen's counter runs), which defaults may need and implicit rules
+    may target."""
     inst = _instances(cdf)
     specs = {o.name: o for o in cdf.scene.objects}
     reqs: dict[str, Request] = {}
@@ -94,9 +119,11 @@ def requests_from_cdf(cdf: ChallengeDefinition, room_type: str, rng: np.random.G
         if o.flipped and cdf.scene.relations[o.index].relation == "in_front_of":
             rel = "face"  # "desk in front of chair" with the desk first: the chair faces the desk
         anchors = [o.anchor] if o.anchor is None or o.anchor in STRUCTURE_ELEMENTS else inst[o.anchor]
+        tag = _rule_tag(specs[o.subject].type, rel, specs[o.anchor].type) if o.anchor in specs else None
         for sub in inst[o.subject]:
             anchor = anchors[min(inst[o.subject].index(sub), len(anchors) - 1)] if anchors != [None] else None
             reqs[sub].rels.append(Rel(rel, anchor, o.weight, o.hard, True, f"cdf:scene.relations[{o.index}]"))
+            reqs[sub].tag = reqs[sub].tag or tag  # the CDF's chair facing a counter is a bar stool too
     for r in list(reqs.values()):
         size = r.attributes.get("size")
         width = size.get("width", DEFAULT_ABOVE_WIDTH) if isinstance(size, dict) else DEFAULT_ABOVE_WIDTH
@@ -104,8 +131,8 @@ def requests_from_cdf(cdf: ChallengeDefinition, room_type: str, rng: np.random.G
             if rel.relation == "above" and rel.anchor in reqs:
                 reqs[rel.anchor].clear_above = max(reqs[rel.anchor].clear_above, width / 2)
     if defaults:
-        _add_defaults(reqs, room_type, rng, area)
-    _add_implicit(reqs, room_type)
+        _add_defaults(reqs, room_type, rng, area, fixtures)
+    _add_implicit(reqs, room_type, fixtures)
     return _ordered(reqs)
 
 
@@ -123,7 +150,8 @@ ROOMY = 20.0
 """m^2 from which a room gets its full share of optional furniture; smaller rooms get proportionally less."""
 
 
-def _add_defaults(reqs: dict[str, Request], room_type: str, rng: np.random.Generator, area: float) -> None:
+def _add_defaults(reqs: dict[str, Request], room_type: str, rng: np.random.Generator, area: float,
+                  fixtures: frozenset[str] = frozenset()) -> None:
     """Room-type furniture and ALFRED-frequency objects that the CDF did not ask for."""
     have = {r.type for r in reqs.values()}
     room_share = min(1.0, area / ROOMY)
@@ -139,7 +167,7 @@ def _add_defaults(reqs: dict[str, Request], room_type: str, rng: np.random.Gener
             continue
         name = f"{t.lower()}_auto0"
         reqs[name] = Request(name, t, generation_layer(t), False)
-    have = {r.type for r in reqs.values()}
+    have = {r.type for r in reqs.values()} | fixtures
     for name in [n for n, r in reqs.items() if not r.explicit and needs(r.type)]:
         if not have & set(needs(reqs[name].type)):
             del reqs[name]  # a chair with no table to sit at
@@ -149,7 +177,7 @@ REPEATABLE = frozenset({"away_from", "far"})
 """Relations that one piece may have to several anchors at once (away from the walls and from the sofa)."""
 
 
-def _add_implicit(reqs: dict[str, Request], room_type: str) -> None:
+def _add_implicit(reqs: dict[str, Request], room_type: str, fixtures: frozenset[str] = frozenset()) -> None:
     by_type: dict[str, list[str]] = {}
     for r in reqs.values():
         by_type.setdefault(r.type, []).append(r.name)
@@ -166,12 +194,15 @@ def _add_implicit(reqs: dict[str, Request], room_type: str) -> None:
                 anchor = target
             elif target in by_type:
                 anchor = by_type[target][0]
+            elif target in fixtures:
+                anchor = FIXTURE_ANCHOR + target
             else:
                 continue
             if anchor is not None and any(x.explicit and x.anchor == anchor for x in req.rels):
                 continue  # the CDF already says how these two relate ("coffee table beside the sofa")
             src = f"implicit:{rule['subject']} {rule['relation']} {target or ''}".strip()
             req.rels.append(Rel(rule["relation"], anchor, float(rule["weight"]), False, False, src))
+            req.tag = req.tag or rule.get("variant_tag")
 
 
 def _ordered(reqs: dict[str, Request]) -> list[Request]:
