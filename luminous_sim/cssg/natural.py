@@ -1,7 +1,7 @@
 """Whether a finished scene is arranged as people arrange rooms: the measures of the natural-room rules,
 read off the scene's geometry alone (so the uniform baseline is measured exactly as CSSG is).
 
-- functional groups: seats at a table and facing it, a sofa facing the TV or coffee table, armchairs
+- functional groups: seats at a table and facing it, bar stools at a counter's front and facing it, a sofa facing the TV or coffee table, armchairs
   facing the seating group, bedside tables at the bed's head, no sofa against a dining table, no
   drawer unit standing free of the walls;
 - dead zones: the share of free floor the agent reaches, and the largest region it cannot walk into;
@@ -22,6 +22,7 @@ from scipy import ndimage
 from shapely.geometry import LineString, Polygon
 
 from luminous_sim.assets.catalog import Catalog, default_catalog
+from luminous_sim.cssg.requests import rule_tags
 from luminous_sim.cssg.tables import object_hosts, placement
 from luminous_sim.scene import (
     STEP,
@@ -45,6 +46,8 @@ SEAT_GAP, SEAT_RAY = 0.5, 1.2
 """A seat is at a table within SEAT_GAP m of it, facing it when a ray SEAT_RAY m long from its centre meets it."""
 VIEW_RAY = 4.0
 """How far (m) a sofa or an armchair looks for what it faces."""
+COUNTERS = frozenset({"CounterTop"})
+"""What a bar stool (a Chair variant with an implicit rule's variant tag) stands at."""
 SOFA_TARGETS = frozenset({"TVStand", "CoffeeTable"})
 GROUP = frozenset({"Sofa", "CoffeeTable", "TVStand", "Ottoman"})
 """The seating group an armchair faces."""
@@ -143,7 +146,19 @@ def functional_checks(scene: Scene, catalog: Catalog | None = None) -> list[Chec
                              all(fp.distance(t) >= DINING_CLEAR for _, t in dining)))
     for o, fp in of({"Drawer"}):
         out.append(Check("drawer unit against a wall", o.id, _back_gap(fp, o.yaw, room) <= WALL_GAP))
+    counters = of(COUNTERS)
+    for o, fp in of(SEATS):
+        if set(catalog.for_object(o).tags) & rule_tags():  # a bar stool: at a counter, facing its front
+            ray = _ray(fp, o.yaw, SEAT_RAY)
+            out.append(Check("stool at a counter, facing it", o.id,
+                             any(fp.distance(t) <= SEAT_GAP and ray.intersects(t) and _faces_front(o, c)
+                                 for c, t in counters)))
     return out
+
+
+def _faces_front(seat: SceneObject, counter: SceneObject) -> bool:
+    """Whether a seat looks at a counter's front (the two face each other), not at its end."""
+    return float(np.dot(_front(seat.yaw), _front(counter.yaw))) < -0.9
 
 
 def _at_head(fp: Polygon, bed: SceneObject, bed_fp: Polygon) -> bool:
