@@ -70,7 +70,7 @@ def chair(v: int, rng: np.random.Generator) -> AssetSpec:
     """A dining/desk chair: four legs, a seat and a back; or (variants 5-7) a counter-height bar stool.
 
     Variants: slatted back, solid panel back, ladder back with stretchers, metal tube chair, upholstered
-    parsons chair with tapered legs; backless round stool on splayed legs with a footrest ring, square
+    parsons chair with tapered legs; backless round stool on splayed legs with footrest rungs, square
     wooden stool with stretchers and a low back, swivel stool on a pedestal with a round base.
     """
     if v >= 5:
@@ -133,19 +133,22 @@ def _bar_stool(v: int, rng: np.random.Generator) -> AssetSpec:
     seat_h = pick(rng, 0.62, 0.68)
     foot_h = pick(rng, 0.22, 0.27)
     parts: list[Part] = []
-    if v == 5:  # round seat on four splayed legs, a ring footrest
+    if v == 5:  # round seat on four splayed legs, rungs between them as a footrest
         r = pick(rng, 0.16, 0.19)
         spread = r + pick(rng, 0.04, 0.07)
+        at_rung = spread + (0.6 * r - spread) * foot_h / (seat_h - 0.04)  # the legs' distance out at the rungs
+        rungs = []
         for k in range(4):
             a = np.pi / 4 + k * np.pi / 2
             top = (0.6 * r * np.cos(a), 0.6 * r * np.sin(a), seat_h - 0.04)
             foot = (spread * np.cos(a), spread * np.sin(a), 0.0)
             parts.append(Part(g.splayed_leg(top, foot, 0.016, 0.013), "metal", convex=True))
-        ring = r + (spread - r) * (1 - foot_h / (seat_h - 0.04)) * 0.97
-        parts.append(Part(g.torus_ring(ring, 0.009, (0, 0, foot_h)), "metal", collide=False))
+            rungs.append((at_rung * np.cos(a), at_rung * np.sin(a), foot_h))
+        for k in range(4):
+            parts.append(Part(g.rod(rungs[k], rungs[(k + 1) % 4], 0.009), "metal", convex=True))
         parts.append(Part(g.cylinder(r, 0.04, (0, 0, seat_h - 0.02), sections=24), "wood", convex=True))
         region = surface("seat", 1.4 * r, 1.4 * r, seat_h, 0.4, margin=0.0)
-        desc, mass = "backless round bar stool on splayed metal legs with a footrest ring", 4.0
+        desc, mass = "backless round bar stool on splayed metal legs with rungs as a footrest", 4.0
     elif v == 6:  # square wooden stool, stretchers all round, a low back
         w = pick(rng, 0.36, 0.42)
         t = 0.035
