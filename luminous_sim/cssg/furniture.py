@@ -109,14 +109,13 @@ class FloorContext:
         if req.tag is None:
             yield
             return
-        before = self.grid.free.copy()
+        before = self.grid.free.copy()  # the zone is blocked there, so a seat placed in it stays blocked
         self.grid.set_free(self.seat_zone.copy())
         try:
             yield
         finally:
-            now = self.grid.free
-            self.seat_zone = self.seat_zone & now
-            self.grid.set_free(before & now)
+            self.seat_zone = self.seat_zone & self.grid.free
+            self.grid.set_free(before)
 
     def walkable(self, clear: np.ndarray) -> np.ndarray:
         """Fine-grid cells under the agent's grid points in the largest 4-connected part of those

@@ -52,3 +52,27 @@ def test_no_bar_stools_outside_kitchens():
     for room_type in ("LivingRoom", "Bedroom"):
         for seed in range(6):
             assert not _stools(generate(empty_cdf(room_type), seed=seed).scene)
+
+
+def test_a_stool_leaves_the_rest_of_the_floor_to_the_furniture_after_it():
+    import numpy as np
+
+    from luminous_sim.cssg.draft import SceneDraft
+    from luminous_sim.cssg.furniture import FloorContext
+    from luminous_sim.cssg.pipeline import choose_room
+    from luminous_sim.cssg.structure import place_fixtures
+
+    for seed in range(12):
+        rng = np.random.default_rng(seed)
+        shell = choose_room(empty_cdf("Kitchen"), rng)
+        draft = SceneDraft(shell, default_catalog(), rng)
+        place_fixtures(draft)
+        ctx = FloorContext.create(draft)
+        if not ctx.seat_zone.any():
+            continue
+        free = ctx.grid.free.copy()
+        with ctx.seat_zone_open(Request("stool", "Chair", "furniture", False, tag="bar_stool")):
+            assert not (ctx.grid.free & ~ctx.seat_zone).any()  # only the counters' work zone is open
+        assert (ctx.grid.free == free).all()
+        return
+    raise AssertionError("no kitchen with a seat zone in 12 seeds")
