@@ -1,9 +1,9 @@
 """Whether a finished scene is arranged as people arrange rooms: the measures of the natural-room rules,
 read off the scene's geometry alone (so the uniform baseline is measured exactly as CSSG is).
 
-- functional groups: seats at a table and facing it, bar stools at a counter's front and facing it, a sofa facing the TV or coffee table, armchairs
-  facing the seating group, bedside tables at the bed's head, no sofa against a dining table, no
-  drawer unit standing free of the walls;
+- functional groups: seats at a table and facing it, bar stools at a counter's front and facing it, a sofa
+  facing the TV or coffee table, armchairs facing the seating group, bedside tables at the bed's head, no
+  sofa against a dining table, no drawer unit standing free of the walls;
 - dead zones: the share of free floor the agent reaches, and the largest region it cannot walk into;
 - alignment: floor furniture square to the (rectilinear) room;
 - hosts: small objects on receptacles the placement table allows for them (no sports gear on a bed), on a
