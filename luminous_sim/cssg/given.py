@@ -28,7 +28,7 @@ from luminous_sim.cssg.pipeline import Generated
 from luminous_sim.cssg.reach import FloorPiece
 from luminous_sim.cssg.requests import Request, requests_from_cdf
 from luminous_sim.cssg.structure import _add_anchors
-from luminous_sim.cssg.tables import generation_layer, supports_for
+from luminous_sim.cssg.tables import floor_relations, generation_layer, supports_for
 from luminous_sim.cssg.validate import check_layout
 from luminous_sim.rooms.shell import RoomShell
 from luminous_sim.scene import Layer, SceneObject, footprint, local_to_world, reach_of
@@ -107,6 +107,16 @@ def _layer(p: Placement) -> Layer:
 
 def _floor_piece(p: Placement) -> bool:
     return p.parent is None and _layer(p) in ("furniture", "fixture")
+
+
+FLOOR_TOL = 0.01
+"""metres between a small object's bottom and the floor within which it lies on the floor."""
+
+
+def _lies_on_floor(p: Placement) -> bool:
+    """A small object of a type that may lie on the floor (a basketball in a corner), resting there: kept where
+    it is given, like a floor piece, instead of going to the object layer."""
+    return bool(floor_relations(p.entry.type)) and abs(p.position[2] + p.entry.bbox_min[2]) <= FLOOR_TOL
 
 
 def _z_range(p: Placement) -> tuple[float, float]:
@@ -251,7 +261,7 @@ def place_given(shell: RoomShell, placements: list[Placement], seed: int = 0, ca
             gone.add(p.key)
             repairs.append(Repair(p.key, p.entry.type, "left_out", f"its parent {p.parent} was left out"))
             continue
-        if p.parent is None and _layer(p) == "object":
+        if p.parent is None and _layer(p) == "object" and not _lies_on_floor(p):
             loose.append(p)  # no support given: the object layer places it
             continue
         if p.parent is not None or not repair:
