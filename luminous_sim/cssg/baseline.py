@@ -69,7 +69,7 @@ def sample_uniform(cdf: ChallengeDefinition, shell: RoomShell, rng: np.random.Ge
     unplaced = []
     for req in requests:
         free = Request(req.name, req.type, req.layer, req.explicit, req.asset, req.states,
-                       attributes=req.attributes)  # no relations
+                       attributes=req.attributes, tag=req.tag)  # no relations, the same variants (bar stools)
         if req.layer in ("furniture", "fixture"):
             ok = place_uniform(ctx, free)
             if ok:
