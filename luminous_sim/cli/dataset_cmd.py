@@ -15,8 +15,8 @@ from luminous_sim.cli.args import int_range, non_negative_int, output_dir, posit
 from luminous_sim.data.backends import BACKENDS
 from luminous_sim.splits import PLUS_SPLITS
 
-EPILOG = ("example: luminous dataset minari --env Luminous-NavToObject-64-v0 --episodes 100 --out out/minari   "
-          "(read back: minari.MinariDataset('out/minari/luminous/NavToObject-64-v0/oracle-v0/data'))")
+EPILOG = ("example: luminous dataset minari --env Luminous-NavToObject-64-v1 --episodes 100 --out out/minari   "
+          "(read back: minari.MinariDataset('out/minari/luminous/NavToObject-64-v1/oracle-v0/data'))")
 
 
 def env_option(text: str) -> tuple[str, Any]:
@@ -65,7 +65,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     b.set_defaults(func=_build, build_parser=b)
     p = actions.add_parser("minari", help="roll out the oracle in a registered env and write a Minari dataset",
                        epilog=EPILOG)
-    p.add_argument("--env", required=True, help="a registered id, e.g. Luminous-NavToObject-64-v0")
+    p.add_argument("--env", required=True, help="a registered id, e.g. Luminous-NavToObject-64-v1")
     p.add_argument("--episodes", type=positive_int, required=True, help="episodes to write")
     p.add_argument("--out", type=output_dir, required=True,
                    help="a new folder: the Minari datasets root the dataset is written under")
