@@ -128,7 +128,7 @@ def _rate(ok: int, n: int) -> str:
 
 def filter_table(by_type: dict[str, list[dict]], types: list[str]) -> None:
     """Success as sampled (before the filter) beside success after it, and what the filter removed."""
-    print(f"{'task type':36}{'as sampled':>16}{'removed':>9}{'kept: ok':>12}{'removed: ok':>13}"
+    print(f"{'task type':36}{'as sampled':>16}{'removed':>9}{'kept: ok':>15}{'removed: ok':>14}"
           f"{'after filter':>16}{'no task':>9}")
     tot = Counter()
     for t in types:
@@ -143,10 +143,10 @@ def filter_table(by_type: dict[str, list[dict]], types: list[str]) -> None:
                       after_ok=sum(r["success"] for r in after), unsampled=len(rs) - len(raw))
         tot.update(row)
         print(f"{t:36}{_rate(row['raw_ok'], row['raw']):>16}{row['removed']:>9}"
-              f"{_rate(row['kept_ok'], row['kept']):>12}{_rate(row['removed_ok'], row['removed']):>13}"
+              f"{_rate(row['kept_ok'], row['kept']):>15}{_rate(row['removed_ok'], row['removed']):>14}"
               f"{_rate(row['after_ok'], row['after']):>16}{row['unsampled']:>9}")
     print(f"{'all':36}{_rate(tot['raw_ok'], tot['raw']):>16}{tot['removed']:>9}"
-          f"{_rate(tot['kept_ok'], tot['kept']):>12}{_rate(tot['removed_ok'], tot['removed']):>13}"
+          f"{_rate(tot['kept_ok'], tot['kept']):>15}{_rate(tot['removed_ok'], tot['removed']):>14}"
           f"{_rate(tot['after_ok'], tot['after']):>16}{tot['unsampled']:>9}")
     causes = Counter(r["raw"]["removed"] for t in types for r in by_type[t]
                      if r["raw"]["sampled"] and r["raw"]["removed"])
