@@ -106,6 +106,18 @@ def test_ray_backend_gives_the_same_files(alfred_split, reference, tmp_path):
     assert tree(tmp_path / "r") == tree(reference)
 
 
+@pytest.mark.slow
+def test_frames_and_video_are_the_same_whatever_the_workers_and_backend(alfred_split, tmp_path):
+    backends = [("local", 1), ("local", 2)] + ([("ray", 2)] if _has_ray() else [])
+    trees = []
+    for name, workers in backends:
+        with make_backend(name, workers) as backend:
+            build_from_alfred(tmp_path / f"{name}{workers}", alfred_split, backend=backend, progress=False)
+        trees.append(tree(tmp_path / f"{name}{workers}"))
+    assert any(k.endswith("video.mp4") for k in trees[0]) and any(".jpg" in k for k in trees[0])
+    assert all(t == trees[0] for t in trees[1:])
+
+
 def _cli(split: Path, out: Path, *more: str) -> list[str]:
     return [sys.executable, "-m", "luminous_sim.cli.main", "dataset", "build", "--from-alfred", str(split),
             "--out", str(out), "--no-frames", "--no-progress", *more]
