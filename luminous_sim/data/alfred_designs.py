@@ -89,6 +89,10 @@ def read_design(path: str | Path) -> AlfredDesign:
         raise DesignError(f"{path}: {exc}") from exc
     if not isinstance(scene_num, int) or floor_plan != f"FloorPlan{scene_num}":
         raise DesignError(f"{path}: scene.floor_plan {floor_plan!r} does not match scene.scene_num {scene_num!r}")
+    from luminous_sim.vocab import ALFRED_TASK_TYPES
+
+    if task_type not in ALFRED_TASK_TYPES:
+        raise DesignError(f"{path}: task_type {task_type!r} is not one of ALFRED's: {', '.join(ALFRED_TASK_TYPES)}")
     return AlfredDesign(str(task_type), params, floor_plan, scene_num, path)
 
 
@@ -96,9 +100,14 @@ def read_designs(split_dir: str | Path) -> list[AlfredDesign]:
     """Every design of an ALFRED split folder (`<task dir>/<trial>/traj_data.json`), in path order.
 
     Raises:
-        DesignError: the folder holds no traj_data.json, or one is malformed.
+        DesignError: the folder is missing or holds no traj_data.json, or one is malformed.
     """
-    paths = sorted(Path(split_dir).glob("*/*/traj_data.json"))
+    split_dir = Path(split_dir)
+    if not split_dir.exists():
+        raise DesignError(f"{split_dir}: no such ALFRED split folder")
+    if not split_dir.is_dir():
+        raise DesignError(f"{split_dir}: not a folder (an ALFRED split is a folder of <task>/<trial>/traj_data.json)")
+    paths = sorted(split_dir.glob("*/*/traj_data.json"))
     if not paths:
         raise DesignError(f"{split_dir}: no <task>/<trial>/traj_data.json files")
     return [read_design(p) for p in paths]

@@ -17,6 +17,7 @@ import io
 import json
 import math
 import re
+from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
@@ -247,9 +248,10 @@ def _jpeg(frame) -> bytes:
 
 
 def export_alfred(out_root: Path, scene: Scene, record: EpisodeRecord, seed: int, task_id: str | None = None,
-                  video: bool = False) -> Path:
+                  video: bool = False, sidecar: Mapping[str, Any] | None = None) -> Path:
     """Write a solved episode (`run_episode(scene, task_type, seed, return_record=True)`) under `out_root`
-    in ALFRED's layout and return its trial folder.
+    in ALFRED's layout and return its trial folder. `sidecar` adds keys to (or replaces keys of) the
+    sidecar file, e.g. how to regenerate an episode that `run_episode` did not make.
 
     Raises:
         ExportError: the episode failed, or its plan has no ALFRED subgoal.
@@ -277,6 +279,7 @@ def export_alfred(out_root: Path, scene: Scene, record: EpisodeRecord, seed: int
         "regenerate": "luminous_sim.episode.run_episode(Scene.from_json(json.dumps(scene)), "
                       "task['task_type'], seed, return_record=True)",
         "scene": json.loads(scene.to_json()),
+        **(sidecar or {}),
     }
     write_atomic(trial / SIDECAR, json.dumps(sidecar, sort_keys=True, indent=1) + "\n")
     return trial

@@ -115,8 +115,9 @@ def _env() -> dict[str, str]:
     return {**os.environ, "PYTHONPATH": os.pathsep.join([str(REPO), os.environ.get("PYTHONPATH", "")])}
 
 
-def _kill_when(out: Path, ready, timeout: float = 300.0) -> None:
-    proc = subprocess.Popen(_cli(out), env=_env(), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+def _kill_when(out: Path, ready, timeout: float = 300.0, argv: list[str] | None = None) -> None:
+    """Start the build `argv` (default: the split build `_cli(out)`) and SIGKILL it once `ready()` holds."""
+    proc = subprocess.Popen(argv or _cli(out), env=_env(), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     deadline = time.monotonic() + timeout
     while not ready() and proc.poll() is None and time.monotonic() < deadline:
         time.sleep(0.02)
