@@ -8,9 +8,11 @@ room the outdoors can be seen only through an opening (a doorway or a window: a 
 so before a render each outdoor box is left out when no opening could show it: the opening is wholly
 outside the view, or the box lies wholly beyond one side of the cone from the eye through the opening's
 inner or outer face (the openings grown by `OPENING_MARGIN` on every side). Then no pixel of the box can
-be in the frame: the frame is the same, pixel for pixel (tests/world/test_portals.py checks RGB, depth and
-segmentation over every view of several rooms). With the eye outside the room, or too near a wall's plane
-for its cone, every box is drawn.
+be in the frame: depth and segmentation are the same, pixel for pixel, and so is RGB but for TinyRenderer's
+own rounding: which bodies are drawn at all (even one moved out of the view instead of hidden) can move a
+pixel's colour by one level, measured on 1 pixel in 8.8 million over 3,000 views of five rooms
+(tests/world/test_portals.py bounds it). With the eye outside the room, or too near a wall's plane for its
+cone, every box is drawn.
 """
 
 from __future__ import annotations
