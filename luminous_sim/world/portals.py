@@ -97,7 +97,8 @@ class OutdoorCuller:
     """Which outdoor boxes no opening of the room can show from a camera."""
 
     def __init__(self, room: Any, boxes: Sequence[tuple[Sequence[float], Sequence[float]]]):
-        """`room`: the scene's room (a `rooms.RoomShell`); `boxes`: each outdoor box's world (lo, hi) corners, axis-aligned, in the order of `hidden`'s answer."""
+        """`room`: the scene's room (a `rooms.RoomShell`); `boxes`: each outdoor box's world (lo, hi) corners,
+        axis-aligned, in the order of `hidden`'s answer."""
         self._openings = openings(room)
         self._room = room.polygon()
         self._corners = np.stack([box_corners(lo, hi) for lo, hi in boxes]) if boxes else np.zeros((0, 8, 3))

@@ -14,7 +14,6 @@ from luminous_sim.world.config import WorldConfig
 from luminous_sim.world.portals import Opening, box_corners
 from luminous_sim.world.world import World
 
-
 RGB_TOLERANCE = 1
 """Largest RGB difference allowed (measured: 1, on 1 pixel of 8.8 million in these views)."""
 MAX_OFF_SHARE = 1e-5
@@ -66,7 +65,7 @@ def test_the_outdoors_is_drawn_through_an_open_doorway():
         pts = w.nav.points()
         x, y = pts[int(np.argmin(np.linalg.norm(pts - mid, axis=1)))]
         yaw = float(np.degrees(np.arctan2(mid[0] - x, mid[1] - y)))  # 0 = +y, 90 = +x
-        facing = int(round(yaw / 90.0)) % 4 * 90
+        facing = round(yaw / 90.0) % 4 * 90
         hidden = {}
         for rot in (0, 90, 180, 270):
             pose = AgentPose(float(x), float(y), rot, 30)
@@ -95,3 +94,13 @@ def test_a_box_beside_an_opening_is_hidden_and_one_behind_it_is_not():
     assert op.hides(eye, boxes).tolist() == [False, True]
     assert op.depth(eye) == pytest.approx(2.0)
     assert float(n @ d) == pytest.approx(0.0)
+
+
+def test_cull_outdoors_off_draws_the_outdoors_in_every_view():
+    scene = generate(empty_cdf("Kitchen"), seed=0).scene
+    with World(scene, WorldConfig(width=64, height=64, settle_steps=0, cull_outdoors=False)) as w:
+        pose = _views(w, 9)[0]
+        eye = np.array(pose.eye())
+        view = w.client.computeViewMatrix(list(eye), list(eye + np.array(pose.view_direction())), [0, 0, 1])
+        proj = w.client.computeProjectionMatrixFOV(60.0, 1.0, 0.05, 20.0)
+        assert w._culler is not None and w._culler.outdoors_hidden(view, proj, 64, 64) == []
