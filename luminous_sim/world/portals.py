@@ -21,7 +21,7 @@ from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
-from shapely.geometry import Point
+from shapely import contains_xy
 
 OPENING_MARGIN = 0.05
 """Metres an opening is grown on every side (along the wall and up and down) before its cones are made."""
@@ -61,9 +61,10 @@ class Opening:
         faces = []
         for v in (0.0, -t):
             (ax, ay), (bx, by) = wall.point(u0, v), wall.point(u1, v)
-            faces.append(np.array([[ax, ay, z0], [bx, by, z0], [bx, by, z1], [ax, ay, z1]]))
-        self.faces = faces
-        self.corners = np.concatenate(faces)
+            faces.append([[ax, ay, z0], [bx, by, z0], [bx, by, z1], [ax, ay, z1]])
+        self.faces = np.array(faces)
+        """The inner and outer faces' corners, in order around each face, shape (2, 4, 3)."""
+        self.corners = self.faces.reshape(8, 3)
 
     def depth(self, eye: np.ndarray) -> float:
         """How far the eye is in front of the wall's inner plane (into the room)."""
@@ -72,17 +73,11 @@ class Opening:
     def hides(self, eye: np.ndarray, corners: np.ndarray) -> np.ndarray:
         """For boxes (n, 8, 3): whether each lies wholly beyond one side of a cone from `eye` through one of
         this opening's two faces (so no ray from the eye through the opening reaches it)."""
-        hidden = np.zeros(len(corners), dtype=bool)
-        rel = corners - eye
-        for face in self.faces:
-            edges = face - eye
-            centre = edges.mean(axis=0)
-            for i in range(4):
-                n = np.cross(edges[i], edges[(i + 1) % 4])
-                if n @ centre < 0:
-                    n = -n
-                hidden |= (rel @ n < 0).all(axis=-1)
-        return hidden
+        edges = self.faces - eye  # (2, 4, 3)
+        planes = np.cross(edges, np.roll(edges, -1, axis=1))  # each side of each cone, as a normal
+        inward = np.einsum("fpc,fc->fp", planes, edges.mean(axis=1))
+        planes = (planes * np.where(inward < 0, -1.0, 1.0)[..., None]).reshape(8, 3)
+        return ((corners - eye) @ planes.T < 0).all(axis=1).any(axis=1)
 
 
 def openings(room: Any) -> list[Opening]:
@@ -100,19 +95,20 @@ class OutdoorCuller:
         """`room`: the scene's room (a `rooms.RoomShell`); `boxes`: each outdoor box's world (lo, hi) corners,
         axis-aligned, in the order of `hidden`'s answer."""
         self._openings = openings(room)
+        self._opening_corners = np.stack([op.corners for op in self._openings]) if self._openings \
+            else np.zeros((0, 8, 3))
         self._room = room.polygon()
         self._corners = np.stack([box_corners(lo, hi) for lo, hi in boxes]) if boxes else np.zeros((0, 8, 3))
 
     def hidden(self, eye: np.ndarray, view_proj: np.ndarray, margin: tuple[float, float]) -> np.ndarray:
         """Whether each outdoor box is out of sight from `eye` for this camera (a bool per box)."""
         n = len(self._corners)
-        if n == 0 or not self._room.contains(Point(float(eye[0]), float(eye[1]))):
+        if n == 0 or not contains_xy(self._room, float(eye[0]), float(eye[1])):
             return np.zeros(n, dtype=bool)
         seen = outside_view(self._corners, view_proj, margin)  # start: only boxes out of the view are hidden
         hidden = np.ones(n, dtype=bool)
-        for op in self._openings:
-            if outside_view(op.corners[None], view_proj, margin)[0]:
-                continue
+        away = outside_view(self._opening_corners, view_proj, margin)
+        for op in (op for op, out in zip(self._openings, away, strict=True) if not out):
             if op.depth(eye) < MIN_EYE_DEPTH:
                 return seen
             hidden &= op.hides(eye, self._corners)
