@@ -150,8 +150,9 @@ def build_scene(scene: Scene, catalog: Catalog | None = None, client: BulletClie
         client.changeDynamics(slab, -1, lateralFriction=0.9)
         slabs.append(slab)
     walls = [_box(client, w.center, w.size, w.yaw, wall_rgba) for w in room.wall_boxes()]
+    ceiling = _ceiling(client, room)
     outdoors = _outdoors(client, room)
-    overhead = _ceiling(client, room) + outdoors
+    overhead = ceiling + outdoors
     objects: dict[str, LoadedAsset] = {}
     for obj in scene.objects:
         entry = catalog.for_object(obj)
