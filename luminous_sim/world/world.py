@@ -56,7 +56,9 @@ class World:
         self._facts: FrameFacts | None = None
         from luminous_sim.world.culling import FrustumCuller
 
-        self._culler = FrustumCuller(self.client, self.built.objects) if self.config.cull else None
+        room = scene.room if self.config.cull_outdoors else None
+        self._culler = FrustumCuller(self.client, self.built.objects, room, self.built.outdoors) \
+            if self.config.cull else None
         self.last = StepResult(True, "", {"action": "Initialize"})
         self.interactions = Interactions(self)
         self._view = LiveView(self)
