@@ -9,11 +9,12 @@ from pathlib import Path
 import numpy as np
 
 from luminous_sim.assets.objio import png_bytes, write_atomic
-from luminous_sim.cssg import Generated
+from luminous_sim.cssg import Generated, HouseGenerated
 
 
-def write_scene_outputs(generated: Generated, out_dir: Path, physics: bool = True) -> dict:
-    """Write the files for one generated scene into `out_dir`; returns the combined report."""
+def write_scene_outputs(generated: Generated | HouseGenerated, out_dir: Path, physics: bool = True) -> dict:
+    """Write the files for one generated scene (a room or a house) into `out_dir`; returns the combined report
+    (a house's `layout` holds each room's CSSG report and which rooms its connected floor reaches)."""
     from luminous_sim.world import build_scene, check_physics, egocentric, top_down
 
     out_dir = Path(out_dir)

@@ -446,14 +446,18 @@ class RoomShell(_Model):
         if self.house is None:
             return []
         out = []
+        edge = self._polygon.exterior
+        half = self.wall_thickness / 2
         for w in self.house.walls:
-            u = 0.0
+            # an end on another interior wall stops at that wall's face, so that the two do not overlap
+            u = 0.0 if edge.distance(shapely.Point(w.start)) < 1e-6 else half
+            end = w.wall.length - (0.0 if edge.distance(shapely.Point(w.end)) < 1e-6 else half)
             for a, b in sorted(d.span for d in self.house.doors if d.wall == w.id):
                 if a > u:
                     out.append((w, u, a))
                 u = max(u, b)
-            if w.wall.length > u:
-                out.append((w, u, w.wall.length))
+            if end > u:
+                out.append((w, u, end))
         return out
 
     def interior_footprints(self) -> list[Polygon]:
