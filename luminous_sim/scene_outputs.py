@@ -44,11 +44,16 @@ def _reachable(scene) -> np.ndarray:
 
 
 def _view_from(scene, grid: np.ndarray) -> tuple[float, float, float]:
-    """A standing point near the room's middle, facing the direction with the most room."""
+    """A standing point near the room's middle (a house's largest room's), facing the direction with the most
+    room (in a house, up to its interior walls)."""
     from shapely.geometry import Point
 
     poly = scene.room.polygon()
     c = np.array(poly.centroid.coords[0])
+    if scene.room.house is not None:
+        biggest = max(scene.room.house.rooms, key=lambda r: (r.polygon().area, r.name))
+        c = np.array(biggest.polygon().centroid.coords[0])
+        poly = scene.room.free_floor()
     x, y = grid[int(np.argmin(np.linalg.norm(grid - c, axis=1)))]
 
     def depth(a: float) -> float:
