@@ -298,7 +298,7 @@ class HouseSpec(_Model):
 
     model_config = ConfigDict(title="House")
 
-    rooms: Annotated[tuple[HouseRoomSpec, ...], Field(min_length=1, max_length=12)]
+    rooms: Annotated[tuple[HouseRoomSpec, ...], Field(min_length=2, max_length=12)]
     adjacency: tuple[tuple[Name, Name], ...] = Field(
         (), description="pairs of room names joined by a door (so they share a wall)")
     size: HouseSize | None = Field(None, description="the outline; default: from the rooms' areas")
