@@ -75,7 +75,8 @@ def generation(sizes: list[int], seeds: int, pictures: Path | None) -> tuple[dic
             nav_ok += names <= _nav_rooms(house)
             if pictures is not None:
                 _picture(house, pictures / f"house_{n}rooms_seed{seed}.png")
-        out[str(n)] = {"houses": seeds, "failed": failed, "cpu_s_median": _r(statistics.median(times)) if times else None,
+        out[str(n)] = {"houses": seeds, "failed": failed,
+                       "cpu_s_median": _r(statistics.median(times)) if times else None,
                        "cpu_s_min": _r(min(times)) if times else None, "cpu_s_max": _r(max(times)) if times else None,
                        "rooms": rooms, "rooms_reached": reached, "rooms_redrawn": redrawn,
                        "houses_nav_grid_in_every_room": nav_ok}

@@ -309,7 +309,7 @@ def _house_room_types(data: Any) -> Any:
     if isinstance(data, dict) and "room_type" not in data and isinstance(data.get("house"), dict):
         rooms = data["house"].get("rooms")
         if isinstance(rooms, (list, tuple)):
-            types = [r.get("type") for r in rooms if isinstance(r, dict) and isinstance(r.get("type"), str)]
+            types: list[str] = [r["type"] for r in rooms if isinstance(r, dict) and isinstance(r.get("type"), str)]
             derived = [t for t in dict.fromkeys(_ROOM_TYPE_ALIASES.get(t.lower(), t) for t in types) if t in ROOM_TYPES]
             if derived:
                 return {**data, "room_type": derived}

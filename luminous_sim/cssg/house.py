@@ -23,7 +23,7 @@ from luminous_sim.errors import CDFError, InfeasibleSceneError, RoomError
 from luminous_sim.rooms.house import FloorPlan, RoomRequest, plan_house
 from luminous_sim.scene import Scene, scene_reachable_grid
 
-__all__ = ["HouseGenerated", "HouseReport", "generate_house", "ROOM_REDRAWS"]
+__all__ = ["ROOM_REDRAWS", "HouseGenerated", "HouseReport", "generate_house"]
 
 ROOM_REDRAWS = 6
 """Times a room is furnished again (its next seed) when some of its floor cannot be reached from the house's."""

@@ -25,7 +25,7 @@ from luminous_sim.errors import RoomError
 from luminous_sim.rooms.checks import shell_problems
 from luminous_sim.rooms.fixtures import plan_fixtures
 from luminous_sim.rooms.generate import ROOM_SPECS, WALL_HEIGHT, _u, _windows
-from luminous_sim.rooms.geometry import r4, snap, snap_up
+from luminous_sim.rooms.geometry import canonical_ring, r4, snap, snap_up
 from luminous_sim.rooms.shell import (
     Door,
     HouseDoor,
@@ -35,9 +35,10 @@ from luminous_sim.rooms.shell import (
     RoomShell,
     Window,
     make_shell,
+    walls_from_outline,
 )
 
-__all__ = ["FloorPlan", "RoomRequest", "plan_house", "MIN_SIDE", "WALL_THICKNESS"]
+__all__ = ["MIN_SIDE", "WALL_THICKNESS", "FloorPlan", "RoomRequest", "plan_house"]
 
 GRID = 0.25
 """Walls and doorways snap to the agent's grid."""
@@ -272,7 +273,7 @@ def _doors(cells: list[_Cell], splits: list[Split], wanted: set[frozenset[str]],
                 if not vertical and sy0 == sy1 and abs(sy0 - p[1]) < 1e-6 and sx0 - 1e-6 <= lo and hi <= sx1 + 1e-6:
                     options[frozenset((a.name, b.name))] = (k, lo - sx0, hi - sx0)
                     break
-    missing = sorted("-".join(sorted(p)) for p in wanted if p not in options)
+    missing = sorted("-".join(sorted(pair)) for pair in wanted if pair not in options)
     if missing:
         return f"rooms {', '.join(missing)} share no wall long enough for a door"
     parent = {c.name: c.name for c in cells}
@@ -282,8 +283,8 @@ def _doors(cells: list[_Cell], splits: list[Split], wanted: set[frozenset[str]],
             n = parent[n]
         return n
 
-    chosen = sorted(wanted, key=lambda p: sorted(p))
-    rest = sorted((p for p in options if p not in wanted), key=lambda p: sorted(p))
+    chosen = sorted(wanted, key=sorted)
+    rest = sorted((pair for pair in options if pair not in wanted), key=sorted)
     keys = rng.random(len(rest))
 
     def preference(k: int) -> tuple[int, int, float]:
@@ -291,25 +292,25 @@ def _doors(cells: list[_Cell], splits: list[Split], wanted: set[frozenset[str]],
         return (-kinds.count("LivingRoom"), kinds.count("Bathroom"), float(keys[k]))
 
     rest = [rest[k] for k in sorted(range(len(rest)), key=preference)]
-    for p in chosen:
-        a, b = sorted(p)
-        parent[root(a)] = root(b)
-    for p in rest:
-        a, b = sorted(p)
-        if root(a) != root(b):
-            parent[root(a)] = root(b)
-            chosen.append(p)
+    for pair in chosen:
+        one, two = sorted(pair)
+        parent[root(one)] = root(two)
+    for pair in rest:
+        one, two = sorted(pair)
+        if root(one) != root(two):
+            parent[root(one)] = root(two)
+            chosen.append(pair)
     if len({root(c.name) for c in cells}) > 1:
         return "the rooms cannot all be joined by doors"
     doors = []
-    for n, p in enumerate(chosen):
-        k, lo, hi = options[p]
+    for n, pair in enumerate(chosen):
+        k, lo, hi = options[pair]
         start = splits[k][0][1] if splits[k][0][0] == splits[k][1][0] else splits[k][0][0]
         us = _door_offsets(start, lo, hi)
         u = float(us[int(rng.integers(len(us)))])
-        a, b = sorted(p)
+        one, two = sorted(pair)
         doors.append(HouseDoor(id=f"HouseDoor_{n}", wall=f"iw{k}", offset=r4(u), width=DOOR_WIDTH,
-                               height=DOOR_HEIGHT, rooms=(a, b)))
+                               height=DOOR_HEIGHT, rooms=(one, two)))
     return doors
 
 
@@ -376,8 +377,7 @@ def _room_shell(cell: _Cell, req: RoomRequest, doors: list[HouseDoor], walls: di
 
 def _house_windows(shells: list[RoomShell], outline: Polygon) -> list[Window]:
     """Every room's windows, placed on the house's outside walls."""
-    house_walls = make_shell(name="outline", room_type="Kitchen", shape="rect", outline=list(outline.exterior.coords)[:4],
-                             wall_height=3.0, wall_thickness=WALL_THICKNESS).walls
+    house_walls = walls_from_outline(canonical_ring(outline.exterior.coords))
     out: list[Window] = []
     for s in shells:
         for win in s.windows:

@@ -37,10 +37,10 @@ from luminous_sim.tasks.evaluate import (
     parents,
     task_satisfied,
 )
-from luminous_sim.tasks.rooms import object_rooms, rooms_apart
 from luminous_sim.tasks.initial import STATE_LITERALS, check_initial, initial_literals, scene_with_initial
 from luminous_sim.tasks.meanings import MEANINGS, PredicateMeaning
 from luminous_sim.tasks.model import PddlParams, TaskInstance
+from luminous_sim.tasks.rooms import object_rooms, rooms_apart
 from luminous_sim.tasks.sample import (
     draw_params,
     feasible_params,
