@@ -58,7 +58,7 @@ def generation(sizes: list[int], seeds: int, pictures: Path | None) -> tuple[dic
     houses: dict[tuple[int, int], HouseGenerated] = {}
     for n in sizes:
         doc = house_cdf(n)
-        times, failed, redrawn, rooms, reached, nav_ok = [], [], 0, 0, 0, 0
+        times, failed, redrawn, rooms, reached, nav_ok, replanned = [], [], 0, 0, 0, 0, 0
         for seed in range(seeds):
             t0 = time.process_time()
             try:
@@ -71,6 +71,7 @@ def generation(sizes: list[int], seeds: int, pictures: Path | None) -> tuple[dic
             rooms += len(house.report.rooms_reached)
             reached += sum(house.report.rooms_reached.values())
             redrawn += sum(r["redraws"] > 0 for r in house.scene.notes["rooms"].values())
+            replanned += house.report.plan_redraws > 0
             names = {r.name for r in house.scene.room.house.rooms}  # type: ignore[union-attr]
             nav_ok += names <= _nav_rooms(house)
             if pictures is not None:
@@ -79,11 +80,12 @@ def generation(sizes: list[int], seeds: int, pictures: Path | None) -> tuple[dic
                        "cpu_s_median": _r(statistics.median(times)) if times else None,
                        "cpu_s_min": _r(min(times)) if times else None, "cpu_s_max": _r(max(times)) if times else None,
                        "rooms": rooms, "rooms_reached": reached, "rooms_redrawn": redrawn,
-                       "houses_nav_grid_in_every_room": nav_ok}
+                       "houses_nav_grid_in_every_room": nav_ok, "houses_plan_redrawn": replanned}
         row = out[str(n)]
         print(f"{n} rooms: {seeds - len(failed)}/{seeds} houses, CPU s median {row['cpu_s_median']} "
               f"({row['cpu_s_min']}..{row['cpu_s_max']}); rooms reached across doors {reached}/{rooms}; "
-              f"navigation grid in every room {nav_ok}/{seeds - len(failed)}; rooms furnished again {redrawn}",
+              f"navigation grid in every room {nav_ok}/{seeds - len(failed)}; rooms furnished again {redrawn}; "
+              f"houses whose floor plan was drawn again {replanned}",
               flush=True)
         for f in failed:
             print(f"  failed: {f}", flush=True)

@@ -4,7 +4,8 @@ type's rules inside its own shell, and one scene for the whole house.
 Every room is generated as a room of its own (its shell holds its doors, whose clearance zones CSSG keeps
 free), then the rooms' objects are put together in one scene whose shell is the house. A room whose
 reachable floor is not all reachable from the house's connected floor (furniture walling off a doorway)
-is drawn again with its next seed. Same CDF and seed: the same house, byte for byte.
+is drawn again with its next seed; a plan with a room CSSG cannot furnish is drawn again. Same CDF and seed:
+the same house, byte for byte.
 """
 
 from __future__ import annotations
@@ -29,6 +30,9 @@ ROOM_REDRAWS = 6
 """Times a room is furnished again (its next seed) when some of its floor cannot be reached from the house's."""
 PLAN_STREAM = 1 << 20
 """The floor plan's seed stream, apart from the rooms' (which are numbered 0, 1, ...)."""
+PLAN_REDRAWS = 4
+"""Floor plans drawn at most: a plan is drawn again when one of its rooms cannot be furnished (CSSG finds no
+valid layout, or furniture keeps walling off its doorway)."""
 
 
 @dataclass(frozen=True)
@@ -39,6 +43,8 @@ class HouseReport:
     reachable_points: int
     rooms_reached: dict[str, bool]
     room_seeds: dict[str, int] = field(default_factory=dict)
+    plan_redraws: int = 0
+    """Floor plans drawn before this one (each had a room CSSG could not furnish)."""
 
     @property
     def ok(self) -> bool:
@@ -47,7 +53,8 @@ class HouseReport:
 
     def to_dict(self) -> dict[str, Any]:
         return {"ok": self.ok, "reachable_points": self.reachable_points, "rooms_reached": dict(self.rooms_reached),
-                "room_seeds": dict(self.room_seeds), "rooms": {k: v.to_dict() for k, v in self.rooms.items()}}
+                "room_seeds": dict(self.room_seeds), "plan_redraws": self.plan_redraws,
+                "rooms": {k: v.to_dict() for k, v in self.rooms.items()}}
 
 
 @dataclass(frozen=True)
@@ -59,8 +66,9 @@ class HouseGenerated:
     report: HouseReport
 
 
-def _room_seed(seed: int, index: int, redraw: int) -> int:
-    return int(np.random.SeedSequence([seed, index, redraw]).generate_state(1)[0])
+def _room_seed(seed: int, index: int, redraw: int, plan_redraw: int = 0) -> int:
+    entropy = [seed, index, redraw] + ([PLAN_STREAM, plan_redraw] if plan_redraw else [])
+    return int(np.random.SeedSequence(entropy).generate_state(1)[0])
 
 
 def generate_house(cdf: ChallengeDefinition, seed: int = 0, catalog: Catalog | None = None) -> HouseGenerated:
@@ -76,23 +84,38 @@ def generate_house(cdf: ChallengeDefinition, seed: int = 0, catalog: Catalog | N
     catalog = catalog or default_catalog()
     requests = [RoomRequest(r.name, r.type, r.min_area, r.max_area) for r in house.rooms]
     size = (house.size.width, house.size.depth) if house.size is not None else None
-    try:
-        plan = plan_house(requests, np.random.default_rng(np.random.SeedSequence([seed, PLAN_STREAM])), size=size,
-                          adjacency=house.adjacency, name=cdf.name or "house")
-    except RoomError as exc:
-        raise InfeasibleSceneError(f"CDF {cdf.name or ''}: scene.house: {exc}") from None
+    why = ""
+    for redraw in range(PLAN_REDRAWS):
+        stream = [seed, PLAN_STREAM] + ([redraw] if redraw else [])
+        try:
+            plan = plan_house(requests, np.random.default_rng(np.random.SeedSequence(stream)), size=size,
+                              adjacency=house.adjacency, name=cdf.name or "house")
+        except RoomError as exc:
+            raise InfeasibleSceneError(f"CDF {cdf.name or ''}: scene.house: {exc}") from None
+        furnished = _furnish(cdf, seed, plan, requests, catalog, redraw)
+        if isinstance(furnished, HouseGenerated):
+            return furnished
+        why = furnished
+    raise InfeasibleSceneError(f"CDF {cdf.name or ''}: scene.house: no floor plan of {PLAN_REDRAWS} could be "
+                               f"furnished (last: {why})")
+
+
+def _furnish(cdf: ChallengeDefinition, seed: int, plan: FloorPlan, requests: list[RoomRequest], catalog: Catalog,
+             plan_redraw: int) -> HouseGenerated | str:
+    """Every room furnished by CSSG, a room whose floor is cut off from the house's drawn again; a string says
+    why the plan could not be furnished."""
     redraws = dict.fromkeys((r.name for r in requests), 0)
     rooms: dict[str, Generated] = {}
     while True:
         for i, (req, shell) in enumerate(zip(requests, plan.rooms, strict=True)):
             if req.name in rooms:
                 continue
-            sub = _room_seed(seed, i, redraws[req.name])
+            sub = _room_seed(seed, i, redraws[req.name], plan_redraw)
             try:
                 rooms[req.name] = generate(empty_cdf(req.room_type), seed=sub, room=shell, catalog=catalog)
             except InfeasibleSceneError as exc:
-                raise InfeasibleSceneError(f"house room {req.name!r} ({req.room_type}): {exc}") from None
-        scene = _assemble(cdf, seed, plan, rooms, redraws)
+                return f"house room {req.name!r} ({req.room_type}): {exc}"
+        scene = _assemble(cdf, seed, plan, rooms, redraws, plan_redraw)
         grid = scene_reachable_grid(scene, catalog)
         keys = {(round(x * 4), round(y * 4)) for x, y in grid}
         reached = {name: _all_in(scene_reachable_grid(g.scene, catalog), keys) for name, g in rooms.items()}
@@ -101,12 +124,12 @@ def generate_house(cdf: ChallengeDefinition, seed: int = 0, catalog: Catalog | N
             break
         for name in cut_off:
             if redraws[name] + 1 >= ROOM_REDRAWS:
-                raise InfeasibleSceneError(f"house room {name!r}: its floor is cut off from the house's in "
-                                           f"{ROOM_REDRAWS} draws (furniture walls off its doorway)")
+                return (f"house room {name!r}: its floor is cut off from the house's in {ROOM_REDRAWS} draws "
+                        "(furniture walls off its doorway)")
             redraws[name] += 1
             del rooms[name]
-    seeds = {r.name: _room_seed(seed, i, redraws[r.name]) for i, r in enumerate(requests)}
-    report = HouseReport({n: g.report for n, g in rooms.items()}, len(grid), reached, seeds)
+    seeds = {r.name: _room_seed(seed, i, redraws[r.name], plan_redraw) for i, r in enumerate(requests)}
+    report = HouseReport({n: g.report for n, g in rooms.items()}, len(grid), reached, seeds, plan_redraw)
     return HouseGenerated(scene, plan, report)
 
 
@@ -115,7 +138,7 @@ def _all_in(points: np.ndarray, keys: set[tuple[int, int]]) -> bool:
 
 
 def _assemble(cdf: ChallengeDefinition, seed: int, plan: FloorPlan, rooms: dict[str, Generated],
-              redraws: dict[str, int]) -> Scene:
+              redraws: dict[str, int], plan_redraw: int) -> Scene:
     """One scene: the house shell and every room's objects (ids are positions, so rooms never clash)."""
     objects = []
     seen: set[str] = set()
@@ -126,6 +149,6 @@ def _assemble(cdf: ChallengeDefinition, seed: int, plan: FloorPlan, rooms: dict[
             seen.add(o.id)
             objects.append(o)
     notes = {"rooms": {s.name: {"room_type": s.room_type, "attempt": rooms[s.name].scene.notes.get("attempt"),
-                                "redraws": redraws[s.name]} for s in plan.rooms}}
+                                "redraws": redraws[s.name]} for s in plan.rooms}, "plan_redraws": plan_redraw}
     return Scene(room=plan.shell, seed=seed, generator="cssg-house", objects=tuple(objects), source=cdf.name or "",
                  notes=notes)

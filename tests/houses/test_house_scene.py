@@ -122,3 +122,28 @@ def test_rooms_apart_keeps_only_tasks_across_rooms(house: HouseGenerated) -> Non
         here = {rooms[i] for i, o in state.objects.items() if o.object_type == p.object_target and i in rooms}
         there = {rooms[i] for i, o in state.objects.items() if o.object_type == p.parent_target and i in rooms}
         assert here and there and not here & there
+
+
+def test_a_plan_with_a_room_cssg_cannot_furnish_is_drawn_again(monkeypatch: pytest.MonkeyPatch) -> None:
+    import luminous_sim.cssg.house as house_mod
+    from luminous_sim.errors import InfeasibleSceneError
+
+    real = house_mod.generate
+    calls = {"n": 0}
+
+    def first_fails(*args, **kwargs):
+        calls["n"] += 1
+        if calls["n"] == 1:
+            raise InfeasibleSceneError("no valid layout")
+        return real(*args, **kwargs)
+
+    monkeypatch.setattr(house_mod, "generate", first_fails)
+    got = generate_house(cdf.loads(SMALL), seed=0)
+    assert got.report.plan_redraws == 1 and got.scene.notes["plan_redraws"] == 1 and got.report.ok
+
+    def always_fails(*args, **kwargs):
+        raise InfeasibleSceneError("no valid layout")
+
+    monkeypatch.setattr(house_mod, "generate", always_fails)
+    with pytest.raises(InfeasibleSceneError, match="no floor plan of 4 could be furnished"):
+        generate_house(cdf.loads(SMALL), seed=0)
