@@ -147,3 +147,18 @@ def test_a_plan_with_a_room_cssg_cannot_furnish_is_drawn_again(monkeypatch: pyte
     monkeypatch.setattr(house_mod, "generate", always_fails)
     with pytest.raises(InfeasibleSceneError, match="no floor plan of 4 could be furnished"):
         generate_house(cdf.loads(SMALL), seed=0)
+
+
+def test_ray_batches_fit_pybullets_limit() -> None:
+    """A house's sight-line check casts more rays than one rayTestBatch takes; a batch of 16,384 would come
+    back empty."""
+    from luminous_sim.world.client import new_client
+    from luminous_sim.world.sightlines import RAY_BATCH
+
+    client = new_client()
+    try:
+        froms = [(0.0, 0.0, 1.0)] * RAY_BATCH
+        tos = [(0.0, 0.0, -1.0)] * RAY_BATCH
+        assert len(client.rayTestBatch(froms, tos)) == RAY_BATCH
+    finally:
+        client.disconnect()
