@@ -92,3 +92,8 @@ def test_the_shipped_default_house_satisfies_the_json_schema() -> None:
     assert not [e.message for e in validator.iter_errors(parse_text(DEFAULT_HOUSE.read_text()))]
     assert cdf.load(DEFAULT_HOUSE).scene.house is not None
     assert list(validator.iter_errors({"cdf_version": 2, "scene": {}}))  # a room type or a house is needed
+
+
+def test_the_summary_lists_the_house_rooms() -> None:
+    text = cdf.summarize(cdf.from_document(HOUSE))
+    assert text.startswith("house: 3 rooms: kitchen (Kitchen), living (LivingRoom), bath (Bathroom); 1 doorways asked")
