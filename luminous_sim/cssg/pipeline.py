@@ -23,7 +23,7 @@ from luminous_sim.cssg.structure import fixture_types, place_fixtures
 from luminous_sim.cssg.tables import generation_layer
 from luminous_sim.cssg.validate import LayoutReport, check_layout, named, relation_checks
 from luminous_sim.cssg.walls import place_wall_piece
-from luminous_sim.errors import InfeasibleSceneError
+from luminous_sim.errors import CDFError, InfeasibleSceneError
 from luminous_sim.rooms.shell import RoomShell
 from luminous_sim.scene import Scene
 
@@ -272,6 +272,9 @@ def _fails_for_good(req: Request, draft: SceneDraft, ctx: FloorContext, unplaced
 def generate(cdf: ChallengeDefinition, seed: int = 0, room: RoomShell | None = None,
              catalog: Catalog | None = None, attempts: int = ATTEMPTS) -> Generated:
     """Sample layouts until one passes validation; the same inputs give the same scene, byte for byte."""
+    if cdf.scene.house is not None:
+        raise CDFError(f"CDF {cdf.name or ''}: scene.house describes a house of several rooms; expected "
+                       "cssg.generate_house for it (generate makes one room)")
     catalog = catalog or default_catalog()
     check_sizes(cdf, catalog)
     failures: Counter[str] = Counter()

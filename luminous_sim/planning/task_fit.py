@@ -7,7 +7,7 @@ already covered. ALFRED's generator drops tasks its expert fails; we rule most o
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 
 import numpy as np
 
@@ -96,14 +96,19 @@ def unseeable(view: WorldView) -> set[str]:
 
 
 def draw_task(scene: Scene, view: WorldView, task_type: str, rng: np.random.Generator,
-              excluded: Iterable[str] = (), full: Iterable[str] = ()) -> TaskInstance:
+              excluded: Iterable[str] = (), full: Iterable[str] = (),
+              keep: Callable[[PddlParams], bool] | None = None) -> TaskInstance:
     """A feasible task of `task_type` that the world can physically support, leaving out objects no
     one can see and `excluded` ones (the oracle found no pose to see them), and putting nothing in the
-    `full` receptacles (a put found no room there). Raises TaskSamplingError when there is none."""
+    `full` receptacles (a put found no room there); `keep` filters the parameters further (e.g.
+    `tasks.rooms_apart`: object and receptacle in different rooms of a house). Raises TaskSamplingError
+    when there is none."""
     excluded = set(excluded) | unseeable(view)
     verdict: dict[tuple, bool] = {}
 
     def fits(p: PddlParams) -> bool:
+        if keep is not None and not keep(p):
+            return False
         key = (p.object_target, p.object_sliced, p.mrecep_target, p.parent_target)
         if key not in verdict:
             verdict[key] = physically_feasible(view, p, excluded, two=task_type == "pick_two_obj_and_place",

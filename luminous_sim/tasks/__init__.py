@@ -40,6 +40,7 @@ from luminous_sim.tasks.evaluate import (
 from luminous_sim.tasks.initial import STATE_LITERALS, check_initial, initial_literals, scene_with_initial
 from luminous_sim.tasks.meanings import MEANINGS, PredicateMeaning
 from luminous_sim.tasks.model import PddlParams, TaskInstance
+from luminous_sim.tasks.rooms import object_rooms, rooms_apart
 from luminous_sim.tasks.sample import (
     draw_params,
     feasible_params,
@@ -85,10 +86,12 @@ __all__ = [
     "initial_literals",
     "matching",
     "names_from_scene",
+    "object_rooms",
     "params_from_goal",
     "params_problems",
     "parents",
     "required_objects",
+    "rooms_apart",
     "sample_task",
     "scene_with_initial",
     "state_from_scene",

@@ -88,11 +88,11 @@ def feasible_params(
     """
     info = task_info(task_type)
     where = f"no {task_type} task in {_where(scene)}"
-    room = scene.room.room_type
-    if room not in info.rooms:
+    rooms = scene.room.room_types
+    if not info.rooms.intersection(rooms):
         raise TaskSamplingError(
             f"{where}: ALFRED generates it only in {', '.join(sorted(info.rooms))}, "
-            f"and this is a {room}"
+            f"and this is a {' and '.join(rooms)}"
         )
     cands, why = candidates(state, task_type, sliced)
     if not cands:

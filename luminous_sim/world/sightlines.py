@@ -22,8 +22,8 @@ if TYPE_CHECKING:
 
 OVERSHOOT = 0.3
 """Metres a sight line runs past its target point."""
-RAY_BATCH = 16384
-"""PyBullet's limit on rays per rayTestBatch call."""
+RAY_BATCH = 16383
+"""PyBullet's limit on rays per rayTestBatch call (with 16,384 it silently returns nothing)."""
 MAX_PITCH_DOWN = HORIZON_MAX + 30.0
 """Steepest downward sight line the camera can frame (the lowest horizon plus half the 60-degree fov)."""
 
