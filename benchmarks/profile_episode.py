@@ -111,8 +111,9 @@ def _import_all() -> None:
         importlib.import_module(name)
 
 
-def run_once(split: str, count: int, profile: Any = None) -> tuple[dict[str, float], float, int]:
-    """(exclusive CPU seconds per stage, total CPU seconds, trials built) of one pass over the episodes."""
+def run_once(split: str, count: int, profile: Any = None) -> tuple[dict[str, float], float, int, dict[str, int]]:
+    """(exclusive CPU seconds per stage, total CPU seconds, trials built, calls per stage) of one pass over
+    the episodes."""
     from luminous_sim.data.build import BuildOptions, _run_job, layout_scene, split_jobs
 
     _import_all()
@@ -132,7 +133,7 @@ def run_once(split: str, count: int, profile: Any = None) -> tuple[dict[str, flo
             profile.disable()
         timer.flush()
         total = time.process_time() - start
-    return dict(timer.seconds), total, built
+    return dict(timer.seconds), total, built, dict(timer.calls)
 
 
 def main() -> None:
@@ -155,14 +156,16 @@ def main() -> None:
         runs.append(run_once(args.split, args.count, profile))
         if profile is not None:
             profile.dump_stats(str(args.cprofile))
-    stages = sorted({s for per, _, _ in runs for s in per}, key=lambda s: -statistics.median(
-        per.get(s, 0.0) for per, _, _ in runs))
+    stages = sorted({s for per, *_ in runs for s in per}, key=lambda s: -statistics.median(
+        per.get(s, 0.0) for per, *_ in runs))
     n = args.count
-    print(f"{'stage':<36} {'s/episode':>10} {'share':>6}")
-    totals = [t for _, t, _ in runs]
+    print(f"{'stage':<36} {'s/episode':>10} {'share':>6} {'calls/episode':>14}")
+    totals = [t for _, t, *_ in runs]
     for s in stages:
-        v = [per.get(s, 0.0) / n for per, _, _ in runs]
-        print(f"{s:<36} {statistics.median(v):10.3f} {statistics.median(v) * n / statistics.median(totals):6.1%}")
+        v = [per.get(s, 0.0) / n for per, *_ in runs]
+        calls = runs[0][3].get(s, 0) / n
+        print(f"{s:<36} {statistics.median(v):10.3f} {statistics.median(v) * n / statistics.median(totals):6.1%} "
+              f"{calls:14.1f}")
     per_ep = [t / n for t in totals]
     print(f"{'total':<36} {statistics.median(per_ep):10.3f}  (min..max {min(per_ep):.3f}..{max(per_ep):.3f}); "
           f"built {runs[0][2]}/{n}; {60 / statistics.median(per_ep):.1f} episodes per CPU-minute")
