@@ -65,6 +65,7 @@ class World:
         self.agent = agent or self.default_start()
         self._facts: FrameFacts | None = None
         self._kept: KeptFrame | None = None
+        self._scene_digest: str | None = None
         from luminous_sim.world.culling import FrustumCuller
 
         self._culler = FrustumCuller(self.client, self.built.objects) if self.config.cull else None
@@ -76,6 +77,14 @@ class World:
 
         self._start = take_snapshot(self)
         self.client = WatchedClient(self.built.client)  # notes a touch of the physics (see `reset_to_start`)
+
+    def scene_digest(self) -> str:
+        """sha256 of the scene's JSON (computed once): worlds built from equal scenes share it."""
+        if self._scene_digest is None:
+            from luminous_sim.world.sightlines import scene_digest
+
+            self._scene_digest = scene_digest(self.scene)
+        return self._scene_digest
 
     def view(self) -> WorldView:
         """The world's read-only face: states, poses, visibility, reachable poses, dry-run puts."""
