@@ -41,6 +41,7 @@ from luminous_sim.tasks.initial import STATE_LITERALS, check_initial, initial_li
 from luminous_sim.tasks.meanings import MEANINGS, PredicateMeaning
 from luminous_sim.tasks.model import PddlParams, TaskInstance
 from luminous_sim.tasks.sample import (
+    draw_kept,
     draw_params,
     feasible_params,
     feasible_task_types,
@@ -75,6 +76,7 @@ __all__ = [
     "closed_receptacles_goal",
     "compile_goal",
     "conjunct_progress",
+    "draw_kept",
     "draw_params",
     "feasible_params",
     "feasible_task_types",
