@@ -438,7 +438,7 @@ def test_draw_kept_is_the_draw_over_the_kept_candidates_asking_less():
                                                                    replace=False).tolist())
             asked = []
 
-            def keep(p, chosen=chosen, asked=asked):
+            def keep(p, chosen=chosen, asked=asked, cands=cands):
                 asked.append(p)
                 return cands.index(p) in chosen
 
