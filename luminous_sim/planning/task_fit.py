@@ -79,13 +79,40 @@ def physically_feasible(view: WorldView, params: PddlParams, excluded: Iterable[
     """The task's object (or its movable receptacle) has room in the target receptacle (`two` of them,
     for pick_two_obj_and_place), and the object has room in its movable receptacle; receptacles a put
     already found `full` do not count."""
-    obj = params.object_target + ("Sliced" if params.object_sliced else "")
-    inner = params.mrecep_target or obj
-    if params.parent_target and not has_room(view, inner, params.parent_target, excluded, full):
-        return False
-    if two and params.parent_target and not has_room_for_two(view, inner, params.parent_target, excluded, full):
-        return False
-    return not (params.mrecep_target and not has_room(view, obj, params.mrecep_target, excluded, full))
+    return _RoomChecks(view, excluded, full).feasible(params, two)
+
+
+class _RoomChecks:
+    """`has_room` and `has_room_for_two` in one world state, each answer computed once: each check draws
+    from its own fresh stream (`SPOT_SEED`) and moves nothing, so an answer depends on its arguments alone,
+    and many candidate tasks ask the same (object type, receptacle type) question."""
+
+    def __init__(self, view: WorldView, excluded: Iterable[str], full: Iterable[str]):
+        self.view, self.excluded, self.full = view, frozenset(excluded), frozenset(full)
+        self._one: dict[tuple[str, str], bool] = {}
+        self._two: dict[tuple[str, str], bool] = {}
+
+    def room(self, object_type: str, receptacle_type: str) -> bool:
+        key = (object_type, receptacle_type)
+        if key not in self._one:
+            self._one[key] = has_room(self.view, object_type, receptacle_type, self.excluded, self.full)
+        return self._one[key]
+
+    def room_for_two(self, object_type: str, receptacle_type: str) -> bool:
+        key = (object_type, receptacle_type)
+        if key not in self._two:
+            self._two[key] = has_room_for_two(self.view, object_type, receptacle_type, self.excluded, self.full)
+        return self._two[key]
+
+    def feasible(self, params: PddlParams, two: bool) -> bool:
+        """`physically_feasible(view, params, excluded, two, full)`."""
+        obj = params.object_target + ("Sliced" if params.object_sliced else "")
+        inner = params.mrecep_target or obj
+        if params.parent_target and not self.room(inner, params.parent_target):
+            return False
+        if two and params.parent_target and not self.room_for_two(inner, params.parent_target):
+            return False
+        return not (params.mrecep_target and not self.room(obj, params.mrecep_target))
 
 
 def unseeable(view: WorldView) -> set[str]:
@@ -104,15 +131,10 @@ def draw_task(scene: Scene, view: WorldView, task_type: str, rng: np.random.Gene
     `tasks.rooms_apart`: object and receptacle in different rooms of a house). Raises TaskSamplingError
     when there is none."""
     excluded = set(excluded) | unseeable(view)
-    verdict: dict[tuple, bool] = {}
+    checks = _RoomChecks(view, excluded, full)
+    two = task_type == "pick_two_obj_and_place"
 
     def fits(p: PddlParams) -> bool:
-        if keep is not None and not keep(p):
-            return False
-        key = (p.object_target, p.object_sliced, p.mrecep_target, p.parent_target)
-        if key not in verdict:
-            verdict[key] = physically_feasible(view, p, excluded, two=task_type == "pick_two_obj_and_place",
-                                               full=full)
-        return verdict[key]
+        return (keep is None or keep(p)) and checks.feasible(p, two)
 
     return sample_task(scene, view.state.without(excluded), task_type, rng, keep=fits)

@@ -42,6 +42,7 @@ from luminous_sim.tasks.meanings import MEANINGS, PredicateMeaning
 from luminous_sim.tasks.model import PddlParams, TaskInstance
 from luminous_sim.tasks.rooms import object_rooms, rooms_apart
 from luminous_sim.tasks.sample import (
+    draw_kept,
     draw_params,
     feasible_params,
     feasible_task_types,
@@ -76,6 +77,7 @@ __all__ = [
     "closed_receptacles_goal",
     "compile_goal",
     "conjunct_progress",
+    "draw_kept",
     "draw_params",
     "feasible_params",
     "feasible_task_types",
