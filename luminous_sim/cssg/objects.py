@@ -21,6 +21,7 @@ from luminous_sim.scene import (
     blocks_agent,
     fits,
     hang_pose,
+    hanger_back,
     region_spots,
     rotate,
     sample_in_region,
@@ -158,9 +159,7 @@ def place_object(draft: SceneDraft, req: Request, by_name: dict[str, str],
         hanging = spot.host.type in HANGERS
         if hanging:
             host = next(p for p in draft.placed if p.obj.id == spot.host.id)
-            region = next(r for r in host.entry.regions if r["name"] == spot.name)
-            back = region["center"][1] + host.entry.link_origins[region["link"]][1] - host.entry.bbox_min[1]
-            got = None if occupied[key] else hang_pose(entry, spot, host_back=back)
+            got = None if occupied[key] else hang_pose(entry, spot, host_back=hanger_back(host.entry, spot.name))
             if got is not None and clashes(draft, entry, got[0], got[1], got[3], got[2] + entry.bbox_min[2],
                                            ignore=spot.host.id):
                 got = None  # a towel hanging down into what stands below its holder

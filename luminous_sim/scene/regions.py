@@ -14,6 +14,7 @@ from shapely.geometry import Polygon
 from luminous_sim.assets.catalog import AssetEntry
 from luminous_sim.scene.model import SceneObject
 from luminous_sim.scene.pose import rotate
+from luminous_sim.scene.sight import shades
 
 EDGE_INSET = 0.04
 
@@ -54,6 +55,31 @@ def fits(entry: AssetEntry, spot: RegionSpot) -> bool:
     """Whether the object could stand in the region at all (size and height)."""
     w, d, h = entry.dims
     return h <= spot.clearance + 1e-6 and min(w, d) <= min(spot.size) and max(w, d) <= max(spot.size)
+
+
+def open_tops(entry: AssetEntry) -> set[str]:
+    """Names of the vessel regions open at the top (a pan, bowl, pot, basin or garbage can: a volume with
+    no door and nothing over it): what goes in may stand out over the rim, as an apple does from a pan in
+    AI2-THOR, so their height does not limit what they take."""
+    roofs = shades(entry)
+    return {r["name"] for r in entry.regions if r["kind"] == "volume" and not r.get("requires_open")
+            and roofs[r["name"]].roof is None}
+
+
+def can_hold(host: AssetEntry, thing: AssetEntry, count: int = 1) -> bool:
+    """Whether `count` of `thing` fit upright side by side in one region of `host` (a row along either
+    side, each turned either way): as tall as the region's clearance at most, unless it is open at the
+    top. A static test of sizes: what else stands there is not counted."""
+    w, d, h = thing.dims
+    tops = open_tops(host) if any(r["kind"] == "volume" for r in host.regions) else set()
+    for r in host.regions:
+        sx, sy, sz = r["size"]
+        if h > sz + 1e-6 and r["name"] not in tops:
+            continue
+        if any(count * a <= long + 1e-6 and b <= short + 1e-6
+               for a, b in ((w, d), (d, w)) for long, short in ((sx, sy), (sy, sx))):
+            return True
+    return False
 
 
 def sample_in_region(
@@ -177,6 +203,13 @@ def _square(ring: list) -> bool:
 
 
 """Receptacles that things hang on (a bar, a ring, a spindle) rather than stand in."""
+
+
+def hanger_back(host: AssetEntry, region_name: str) -> float:
+    """How far (m) behind the centre of a hanger's region its own back (the wall it is fixed to) is: what
+    `hang_pose` clears."""
+    region = next(r for r in host.regions if r["name"] == region_name)
+    return region["center"][1] + host.link_origins[region["link"]][1] - host.bbox_min[1]
 
 
 def hang_pose(entry: AssetEntry, spot: RegionSpot, host_back: float | None = None) -> tuple[float, float, float,

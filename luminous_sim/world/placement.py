@@ -11,10 +11,19 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from luminous_sim.errors import Failure, FailureCode
-from luminous_sim.scene import View, region_spots, sample_in_region, scan_region, shades
+from luminous_sim.scene import (
+    View,
+    hang_pose,
+    hanger_back,
+    open_tops,
+    region_spots,
+    sample_in_region,
+    scan_region,
+    shades,
+)
 from luminous_sim.scene.model import SceneObject
 from luminous_sim.states.model import WorldState
-from luminous_sim.vocab import PILING_RECEPTACLES, abilities
+from luminous_sim.vocab import HANGERS, PILING_RECEPTACLES, abilities
 from luminous_sim.vocab.agent_body import CAMERA_HEIGHT
 from luminous_sim.world.asset_loader import base_link_pose
 from luminous_sim.world.client import body_aabb
@@ -42,6 +51,8 @@ def place(world: World, state: WorldState, oid: str, receptacle: str, rng: np.ra
     if isinstance(got, Failure):
         return got
     release(world, state, oid, got)
+    if type_of(state, receptacle) in HANGERS:  # it hangs there, held by the hanger, as scene generation hangs it
+        world.client.changeDynamics(world.built.objects[oid].body, -1, mass=0.0)
     return None
 
 
@@ -93,7 +104,10 @@ def find_spot(world: World, state: WorldState, oid: str, receptacle: str, rng: n
         x0, y0, x1, y1 = fp.bounds
         boxes.append(((x0, y0, z + e.bbox_min[2]), (x1, y1, z + e.bbox_max[2])))
         prints.append(fp)
-    open_top = _open_tops(loaded_r.entry)
+    if type_of(state, receptacle) in HANGERS:
+        return _hang_spot(world, entry, loaded_r.entry, spots, prints, rng) or Failure(
+            FailureCode.RECEPTACLE_FULL, f"{receptacle} is full: something already hangs on it")
+    open_top = open_tops(loaded_r.entry)
     order = _spot_order(world, spots, rng)
     # near the agent first (AI2-THOR puts things where the agent looks); then anywhere in a region it reaches:
     # the reach limit is on the receptacle, not on where in it the object lands (the bottom of a garbage can)
@@ -116,6 +130,18 @@ def find_spot(world: World, state: WorldState, oid: str, receptacle: str, rng: n
             if got is not None:
                 return got[:4]
     return Failure(FailureCode.RECEPTACLE_FULL, f"{receptacle} is full: no free, stable spot for {oid}")
+
+
+def _hang_spot(world: World, entry, host_entry, spots: list, prints: list, rng: np.random.Generator) -> Spot | None:
+    """A towel, a hand towel or a roll of toilet paper hangs centred on a free region of its hanger (a bar, a
+    ring, a spindle), as scene generation hangs it (`scene.hang_pose`), whatever its size: AI2-THOR snaps it
+    there. A region is free when nothing already hanging there overlaps that pose; near the agent first."""
+    for i in _spot_order(world, spots, rng):
+        spot = spots[i]
+        x, y, z, yaw, fp = hang_pose(entry, spot, host_back=hanger_back(host_entry, spot.name))
+        if not any(fp.intersects(other) and fp.intersection(other).area > 1e-6 for other in prints):
+            return x, y, z, yaw
+    return None
 
 
 def _host_now(world: World, state: WorldState, receptacle: str) -> SceneObject:
@@ -270,14 +296,6 @@ def _box_distances(spot, eyes: np.ndarray, top: float) -> np.ndarray:
 def _region_distance(spot, eyes: np.ndarray, top: float) -> float:
     """Metres from the nearest of `eyes` to the region's volume (`_box_distances`)."""
     return float(np.min(_box_distances(spot, eyes, top))) if len(eyes) else math.inf
-
-
-def _open_tops(entry) -> set[str]:
-    """Names of the vessel regions open at the top (a pan, bowl, pot, basin or garbage can: a volume
-    with no door and nothing over it): what goes in may stand out over the rim, as an apple does from a
-    pan in AI2-THOR, so their height does not limit what they take."""
-    return {r["name"] for r in entry.regions if r["kind"] == "volume" and not r.get("requires_open")
-            and shades(entry)[r["name"]].roof is None}
 
 
 def _needs_open(entry, region_name: str) -> bool:
