@@ -17,7 +17,7 @@ from luminous_sim.cdf.schema import ChallengeDefinition
 from luminous_sim.cssg.attributes import check_sizes
 from luminous_sim.cssg.draft import SceneDraft
 from luminous_sim.cssg.furniture import FloorContext, hard_relations_met, place_piece, register
-from luminous_sim.cssg.objects import place_object
+from luminous_sim.cssg.objects import place_object, reserve_for_goal
 from luminous_sim.cssg.requests import Request, requests_from_cdf
 from luminous_sim.cssg.structure import fixture_types, place_fixtures
 from luminous_sim.cssg.tables import generation_layer
@@ -217,9 +217,13 @@ def sample_layout(cdf: ChallengeDefinition, shell: RoomShell, rng: np.random.Gen
     bound: set[str] = set()
     backtracks = 0
     undo_floor = _undo_floors(requests)
+    reserved: int | None = None  # where room was kept for the goal's puts (before the room's own objects)
     i = 0
     while i < len(requests):
         req = requests[i]
+        if req.layer == "object" and not req.explicit and reserved is None:
+            reserve_for_goal(draft, requests, by_name, occupied)
+            reserved = i
         if req.layer in ("furniture", "fixture"):
             checkpoints[req.name] = _save(i, draft, ctx, bound, by_name, occupied, unplaced)
         ok = _place(draft, ctx, req, by_name, occupied, bound)
@@ -230,6 +234,8 @@ def sample_layout(cdf: ChallengeDefinition, shell: RoomShell, rng: np.random.Gen
             if anchors:
                 cp = checkpoints[anchors[0]]
                 _restore(cp, draft, ctx, bound, by_name, occupied, unplaced)
+                if reserved is not None and cp.index <= reserved:
+                    reserved = None
                 backtracks += 1
                 i = cp.index
                 continue
