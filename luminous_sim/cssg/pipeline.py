@@ -281,6 +281,7 @@ def generate(cdf: ChallengeDefinition, seed: int = 0, room: RoomShell | None = N
     catalog = catalog or default_catalog()
     check_sizes(cdf, catalog)
     failures: Counter[str] = Counter()
+    unplaced: set[str] = set()
     shell = room
     for attempt in range(attempts):
         rng = np.random.default_rng(np.random.SeedSequence([seed, attempt]))
@@ -297,7 +298,9 @@ def generate(cdf: ChallengeDefinition, seed: int = 0, room: RoomShell | None = N
             return Generated(scene, report)
         failures.update(report.failed_relations())
         failures.update(f"{n} could not be placed" for n in report.unplaced if n in report.required)
+        unplaced.update(n for n in report.unplaced if n in report.required)
         failures.update(f"{o} is out of the agent's reach" for o in report.unreachable)
         failures.update(f"{a} overlaps {b}" for a, b in report.overlaps)
     worst = "; ".join(f"{k} ({v}/{attempts})" for k, v in failures.most_common(6)) or "no valid sample"
-    raise InfeasibleSceneError(f"CDF {cdf.name or ''!s}: no valid layout in {attempts} samples: {worst}")
+    raise InfeasibleSceneError(f"CDF {cdf.name or ''!s}: no valid layout in {attempts} samples: {worst}",
+                               unplaced=tuple(sorted(unplaced)))

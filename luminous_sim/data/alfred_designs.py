@@ -17,6 +17,7 @@ from typing import Any
 import numpy as np
 
 from luminous_sim.assets.catalog import Catalog
+from luminous_sim.cdf import ChallengeDefinition
 from luminous_sim.errors import InfeasibleSceneError, LuminousError
 from luminous_sim.scene import Scene
 from luminous_sim.tasks import (
@@ -191,11 +192,13 @@ def design_scene(design: AlfredDesign, seed: int, catalog: Catalog | None = None
         raise NoDesignScene(f"{design.name}: {exc}", "no_cdf") from exc
     room = load_room(design.floor_plan)
     causes: list[tuple[str, str]] = []
+    avoid: set[str] = set()
     for layout_seed in _layout_seeds(seed, tries):
         try:
             scene = generate(cdf, seed=layout_seed, room=room, catalog=catalog).scene
         except InfeasibleSceneError as exc:
             causes.append(("no_layout", str(exc)))
+            cdf, avoid = _without_surfaces(cdf, design, avoid, exc.unplaced)
             continue
         why = scene_misfit(scene, design, catalog)
         if why is not None and why[0] == "no_room":
@@ -207,6 +210,23 @@ def design_scene(design: AlfredDesign, seed: int, catalog: Catalog | None = None
         causes.append(why)
     shown = "; ".join(f"[{c}] {m}" for c, m in causes[:3])
     raise NoDesignScene(f"{design.name} (seed {seed}): no scene in {len(causes)} layouts: {shown}", causes[-1][0])
+
+
+def _without_surfaces(cdf: ChallengeDefinition, design: AlfredDesign, avoid: set[str],
+                      unplaced: Collection[str]) -> tuple[ChallengeDefinition, set[str]]:
+    """The design's CDF with its things starting elsewhere than on the surfaces that could not be placed
+    (a dining table in a small U-shaped kitchen), and the surface types now avoided; the same CDF when
+    none of what could not be placed is such a surface."""
+    names = {n.split("#")[0] for n in unplaced}
+    surfaces = {o.type for o in cdf.scene.objects if o.name in names
+                and any(r.relation == "on" and r.target == o.name for r in cdf.scene.relations)}
+    surfaces -= {design.params.parent_target, design.params.mrecep_target, design.params.toggle_target}
+    if not surfaces - avoid:
+        return cdf, avoid
+    try:
+        return cdf_for_task(design.task_type, design.params, design.room_type, avoid | surfaces), avoid | surfaces
+    except TaskError:
+        return cdf, avoid
 
 
 @dataclass(frozen=True)
