@@ -85,3 +85,21 @@ def test_a_scan_finds_the_one_gap_that_random_draws_miss():
     assert got is not None and gap.buffer(1e-6).contains(got[4])
     assert misses > 10
     assert next(scan_region(cube, spot, occupied + [gap]), None) is None
+
+
+def test_can_hold_counts_height_unless_open_at_the_top_and_things_side_by_side():
+    """A plunger stands only on a cabinet shelf taller than it; two spray bottles stand side by side only in
+    a garbage can wide enough for both; an open can's rim does not limit what goes in it."""
+    from luminous_sim.scene import can_hold
+
+    cat = default_catalog()
+    by_id = {e.id: e for t in ("Cabinet", "Plunger", "GarbageCan", "SprayBottle", "Pan", "Apple")
+             for e in cat.of_type(t)}
+    plunger = by_id["Plunger_02"]  # 0.55 m tall
+    assert [e.id for e in cat.of_type("Cabinet") if can_hold(e, plunger)] == ["Cabinet_05"]  # 0.58 m shelves
+    spray = by_id["SprayBottle_02"]  # 9 x 11 cm
+    assert can_hold(by_id["GarbageCan_00"], spray) and not can_hold(by_id["GarbageCan_00"], spray, 2)
+    assert can_hold(by_id["GarbageCan_01"], spray, 2)  # 20.7 cm inside: 2 x 9 cm in a row
+    tall = by_id["GarbageCan_02"]
+    assert tall.regions[0]["size"][2] < 0.6 and can_hold(tall, plunger)  # open at the top: it may stand out
+    assert not can_hold(by_id["Pan_00"], by_id["Plunger_00"])  # 14 cm wide, the pan 12 cm inside
