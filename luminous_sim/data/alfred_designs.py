@@ -119,8 +119,10 @@ def scene_misfit(scene: Scene, design: AlfredDesign, catalog: Catalog | None = N
     """(cause, message) when the design's task is not a fair task in `scene`, else None.
 
     Causes: `goal_at_start` (the goal already holds), `infeasible` (an object or receptacle missing or
-    seen from no reachable pose), `no_room` (no free, stable spot for the put within reach). The world
-    is built as an episode builds it (for cleaning, everything dirtyable is dirty).
+    seen from no reachable pose), `no_room` (no free, stable spot for the put within reach), `no_pose`
+    (too few of a type the task needs are in the agent's picture from any pose the oracle would walk to:
+    a potato a sight line grazes past the coffee machine in front of it). The world is built as an
+    episode builds it (for cleaning, everything dirtyable is dirty).
     """
     from luminous_sim.episode import prepared_world
     from luminous_sim.planning import physically_feasible, unseeable
@@ -144,9 +146,33 @@ def scene_misfit(scene: Scene, design: AlfredDesign, catalog: Catalog | None = N
         two = design.task_type == "pick_two_obj_and_place"
         if not physically_feasible(view, design.params, hidden, two=two):
             return "no_room", f"{design.name}: no free, stable spot for the put within reach"
+        unposed = _unposed(view, design, hidden)
+        if unposed:
+            return "no_pose", f"{design.name}: no pose from which enough of {unposed} are seen within reach"
         return None
     finally:
         world.close()
+
+
+def _unposed(view, design: AlfredDesign, hidden: Collection[str]) -> str | None:
+    """The first object type the task needs of which fewer than it needs have an interaction pose (the
+    oracle's own test: seen in the rendered picture from a pose on the grid; for a thing in a closed
+    container, the container), or None."""
+    from luminous_sim.states import enclosing_closed
+    from luminous_sim.tasks import required_objects
+
+    state = view.state
+    for object_type, count in required_objects(design.task_type, design.params):
+        ids = [i for i in state.of_type(object_type) if i not in hidden]
+        posed = 0
+        for i in ids:
+            if view.interaction_pose(enclosing_closed(state, i) or i) is not None:
+                posed += 1
+                if posed >= count:
+                    break
+        if posed < count:
+            return object_type
+    return None
 
 
 def clear_for_put(scene: Scene, params: PddlParams, declared: Collection[str]) -> Scene | None:

@@ -111,6 +111,7 @@ def find_spot(world: World, state: WorldState, oid: str, receptacle: str, rng: n
     order = _spot_order(world, spots, rng)
     # near the agent first (AI2-THOR puts things where the agent looks); then anywhere in a region it reaches:
     # the reach limit is on the receptacle, not on where in it the object lands (the bottom of a garbage can)
+    hidden = None  # a real put's first pose out of the agent's view: taken only when no region has one in view
     for anywhere in (False, True):
         for i in order:
             spot = spots[i]
@@ -119,16 +120,28 @@ def find_spot(world: World, state: WorldState, oid: str, receptacle: str, rng: n
             ceiling = spot.floor_z + spot.clearance
             occupied = [fp for (lo, hi), fp in zip(boxes, prints)  # only what is on this shelf
                         if lo[2] < ceiling and hi[2] > spot.floor_z - 0.01]
-            got = _sample_in_view(world, entry, spot, rng, occupied, eyes, real, host, top, anywhere,
-                                  framed=_in_frame(world) if not dry_run else None)
+            got, seen = _sample_in_view(world, entry, spot, rng, occupied, eyes, real, host, top, anywhere,
+                                        framed=_in_frame(world) if not dry_run else None)
+            if got is not None and not seen:
+                hidden = hidden or got  # a fridge's bottom shelf below the view: another shelf may be in it
+                continue
             if got is None and spot.gated and not anywhere:  # the back half too, rather than refusing
-                got = sample_in_region(entry, dc_replace(spot, gated=False), rng, occupied, tries=60)
+                whole = dc_replace(spot, gated=False)
+                got, seen = _sample_in_view(world, entry, whole, rng, occupied, eyes, real, host, top,
+                                            framed=_in_frame(world) if not dry_run else None)
+                if got is not None and not seen:
+                    hidden = hidden or got
+                    continue
+                if got is None and not real:  # a dry run: room at all, as a put with the door open may find
+                    got = sample_in_region(entry, whole, rng, occupied, tries=60)
             if got is None and type_of(state, receptacle) in PILING_RECEPTACLES and not anywhere:
                 got = _stack_pose(entry, spot, boxes)
             if got is None and type_of(state, receptacle) in CENTRED_ON and not anywhere and not occupied:
                 got = _centred_pose(entry, spot, spot.floor_z)
             if got is not None:
                 return got[:4]
+    if hidden is not None:
+        return hidden[:4]
     return Failure(FailureCode.RECEPTACLE_FULL, f"{receptacle} is full: no free, stable spot for {oid}")
 
 
@@ -177,12 +190,14 @@ def _in_frame(world: World, margin: float = 0.9):
 
 
 def _sample_in_view(world: World, entry, spot, rng: np.random.Generator, occupied: list, eyes: np.ndarray,
-                    real: bool, host: SceneObject, top: float, anywhere: bool = False, framed=None):
+                    real: bool, host: SceneObject, top: float, anywhere: bool = False,
+                    framed=None) -> tuple[tuple | None, bool]:
     """A free pose in the region within reach of one of `eyes` ((N, 3)) and, among a few draws, one
     such an eye has a clear line to: AI2-THOR puts things where the agent can see them, not behind a
     basin's near rim where they could not be picked up again. A real put (one eye, the agent's) falls
     back on a pose out of clear view; a dry run does not. Under a shelf or table top, only where
-    scene generation's sight model sees it (its front), since the top hides the rest.
+    scene generation's sight model sees it (its front), since the top hides the rest. Returns the pose
+    (or None) and whether it is in clear view.
 
     `anywhere`: the pose need not be within reach of an eye, only the region (as AI2-THOR limits the
     distance to the receptacle, not to where the object lands in it); it must still be in sight of an
@@ -195,7 +210,7 @@ def _sample_in_view(world: World, entry, spot, rng: np.random.Generator, occupie
     if anywhere:
         eyes = eyes[_box_distances(spot, eyes, top) <= reach]
         if not len(eyes):
-            return None
+            return None, False
     shade = shades(world.built.objects[spot.host.id].entry).get(spot.name)
     view = (View(shade, host.position[:2], host.yaw, eyes[:, :2], reach=math.inf if anywhere else None)
             if shade and shade.roof else None)
@@ -222,16 +237,16 @@ def _sample_in_view(world: World, entry, spot, rng: np.random.Generator, occupie
             continue
         first = first or (got if real else None)
         if clear_view(got):
-            return got
+            return got, True
     # no random draw was in clear view (a basin's near rim hides most of it), or none found room (the gap left
     # on a crowded table): scan the region for the first few poses in clear view before settling for one that is not
     for i, got in enumerate(scan_region(entry, spot, occupied, accept=in_reach)):
         if clear_view(got):
-            return got
+            return got, True
         first = first or (got if real else None)
         if i + 1 >= SCAN_VIEW_CHECKS:
             break
-    return first
+    return first, False
 
 
 def _standing_eyes(world: World) -> np.ndarray:
