@@ -193,17 +193,17 @@ def _held_entry(draft: SceneDraft, object_type: str, by_name: dict[str, str], re
 
 def reserve_for_goal(draft: SceneDraft, requests: list[Request], by_name: dict[str, str],
                      occupied: dict[tuple[str, str], list[Polygon]]) -> list[tuple[str, str]]:
-    """Keep room in each receptacle the CDF's goal puts things in (`Request.holds`) before the room's
+    """Keep room in each receptacle the CDF's goal puts things in (`Request.goal_puts`) before the room's
     default objects fill it: the footprints of as many of the put things as the goal puts there, side by
     side in one region where the agent sees them (hung, on a hanger), are marked taken. A receptacle with
     no such room is left as it is. Draws come from a stream of their own (the sample's is not touched).
     Returns the (host id, region) pairs reserved."""
     done = []
     for req in requests:
-        if not req.holds or req.name not in by_name:
+        if not req.goal_puts or req.name not in by_name:
             continue
         hosts = draft.referents(by_name[req.name])
-        for object_type, count in sorted(req.holds.items()):
+        for object_type, count in sorted(req.goal_puts.items()):
             entry = _held_entry(draft, object_type, by_name, requests)
             if entry is None:
                 continue

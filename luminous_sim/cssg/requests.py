@@ -53,7 +53,10 @@ class Request:
     clear_above: float = 0.0
     """Half-width (m) of a wall piece the CDF hangs above this one (0: none): no window behind it there."""
     holds: dict[str, int] = field(default_factory=dict)
-    """Object type -> how many the CDF's goal puts in or on this receptacle at once (`goal_holds`)."""
+    """Object type -> how many the CDF puts in or on this receptacle at once (`put_holds`)."""
+    goal_puts: dict[str, int] = field(default_factory=dict)
+    """Object type -> how many the CDF's goal puts in or on this receptacle at once (`goal_holds`): room
+    kept for them before the room's default objects are placed."""
 
     def variants(self, catalog) -> list:
         """The asset variants this request may use, filtered and scaled by its attributes, and, of a
@@ -119,9 +122,12 @@ def requests_from_cdf(cdf: ChallengeDefinition, room_type: str, rng: np.random.G
         for rel in r.rels:
             if rel.relation == "above" and rel.anchor in reqs:
                 reqs[rel.anchor].clear_above = max(reqs[rel.anchor].clear_above, width / 2)
-    for name, holds in goal_holds(cdf).items():
+    for name, holds in put_holds(cdf).items():
         for iname in inst[name]:
             reqs[iname].holds = dict(holds)
+    for name, holds in goal_holds(cdf).items():
+        for iname in inst[name]:
+            reqs[iname].goal_puts = dict(holds)
     if defaults:
         _add_defaults(reqs, room_type, rng, area)
     _add_implicit(reqs, room_type)
@@ -155,6 +161,23 @@ def goal_holds(cdf: ChallengeDefinition) -> dict[str, dict[str, int]]:
         for host in hosts:
             puts.setdefault(host, {}).setdefault(thing, set()).add(what)
     return {host: {t: len(args) for t, args in things.items()} for host, things in puts.items()}
+
+
+def put_holds(cdf: ChallengeDefinition) -> dict[str, dict[str, int]]:
+    """CDF object name -> {object type: count} that must fit in or on it at once: what the CDF's `on`
+    and `in` relations put there (two boxes on one table), or what its goal puts there (`goal_holds`),
+    whichever is more."""
+    specs = {o.name: o for o in cdf.scene.objects}
+    out: dict[str, dict[str, int]] = {}
+    for r in cdf.scene.relations:
+        if r.relation in ("on", "in") and r.subject in specs and r.target in specs:
+            held = out.setdefault(r.target, {})
+            held[specs[r.subject].type] = held.get(specs[r.subject].type, 0) + specs[r.subject].count
+    for host, things in goal_holds(cdf).items():
+        held = out.setdefault(host, {})
+        for t, n in things.items():
+            held[t] = max(held.get(t, 0), n)
+    return out
 
 
 def _layer(object_type: str, declared: str | None, room_type: str) -> str:

@@ -241,11 +241,13 @@ def design_scene(design: AlfredDesign, seed: int, catalog: Catalog | None = None
 def _without_surfaces(cdf: ChallengeDefinition, design: AlfredDesign, avoid: set[str],
                       unplaced: Collection[str]) -> tuple[ChallengeDefinition, set[str]]:
     """The design's CDF with its things starting elsewhere than on the surfaces that could not be placed
-    (a dining table in a small U-shaped kitchen), and the surface types now avoided; the same CDF when
-    none of what could not be placed is such a surface."""
+    (a dining table in a small U-shaped kitchen) or that what stands on them could not be placed on (a
+    microwave on counters full of burners and sink), and the surface types now avoided; the same CDF when
+    there is no such surface."""
     names = {n.split("#")[0] for n in unplaced}
-    surfaces = {o.type for o in cdf.scene.objects if o.name in names
-                and any(r.relation == "on" and r.target == o.name for r in cdf.scene.relations)}
+    types = {o.name: o.type for o in cdf.scene.objects}
+    surfaces = {types[r.target] for r in cdf.scene.relations
+                if r.relation == "on" and r.target in types and (r.target in names or r.subject in names)}
     surfaces -= {design.params.parent_target, design.params.mrecep_target, design.params.toggle_target}
     if not surfaces - avoid:
         return cdf, avoid

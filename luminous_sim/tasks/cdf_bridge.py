@@ -205,21 +205,17 @@ class _Doc:
 
 
 def fits_on(surface: str, object_type: str, count: int = 1) -> bool:
-    """Whether `count` of the smallest asset of `object_type` fit side by side on one region of the
-    largest asset of `surface` (True where the catalog has neither: generation will say)."""
+    """Whether `count` of some asset of `object_type` fit side by side in one region of some asset of
+    `surface` (`scene.can_hold`: in a row, upright; True where the catalog has neither: generation will
+    say). Two boxes do not fit on a side table."""
     from luminous_sim.assets.catalog import default_catalog
+    from luminous_sim.scene import can_hold
 
     catalog = default_catalog()
     things, hosts = catalog.of_type(object_type), catalog.of_type(surface)
     if not things or not hosts:
         return True
-    short, long = min((sorted(e.dims[:2]) for e in things), key=lambda d: (d[1], d[0]))
-    for host in hosts:
-        for r in host.regions:
-            w, d = sorted(r["size"][:2])
-            if short <= w and long <= d and count * short * long <= w * d:
-                return True
-    return False
+    return any(can_hold(host, thing, count) for host in hosts for thing in things)
 
 
 def _cdf_goal(goal: Expr) -> Expr:
