@@ -62,8 +62,9 @@ def test_infeasible_cdf_names_what_failed():
         "  room: {max_area: 6}\n  objects:\n    - {name: bed, type: Bed, count: 4}\n",
         source="beds.yaml",
     )
-    with pytest.raises(InfeasibleSceneError, match=r"too_many_beds.*bed.* could not be placed"):
+    with pytest.raises(InfeasibleSceneError, match=r"too_many_beds.*bed.* could not be placed") as info:
         generate(doc, seed=0, attempts=3)
+    assert info.value.unplaced and all(n.split("#")[0] == "bed" for n in info.value.unplaced)
 
 
 def test_baseline_meets_fewer_relations_than_cssg():
@@ -335,3 +336,19 @@ def test_generation_keeps_room_for_the_goals_put_before_the_rooms_defaults():
             free += sum(next(scan_region(entry, s, on), None) is not None
                         for s in region_spots(counter, cat.for_object(counter)))
         assert free, seed
+
+
+def test_the_cdfs_on_relations_choose_a_surface_variant_that_holds_what_they_put_there():
+    """Two boxes on one dining table: only dining tables with a row for two boxes are drawn."""
+    from luminous_sim.assets.catalog import default_catalog
+    from luminous_sim.cssg.requests import put_holds, requests_from_cdf
+    from luminous_sim.scene import can_hold
+
+    doc = cdf.loads("cdf_version: 2\nscene:\n  room_type: LivingRoom\n  objects:\n"
+                    "    - {name: table, type: DiningTable}\n    - {name: box, type: Box, count: 2}\n"
+                    "  relations:\n    - {subject: box, relation: on, target: table}\n")
+    assert put_holds(doc) == {"table": {"Box": 2}}
+    cat = default_catalog()
+    (table,) = [r for r in requests_from_cdf(doc, "LivingRoom", np.random.default_rng(0)) if r.name == "table"]
+    kept = table.variants(cat)
+    assert kept and all(any(can_hold(e, b, 2) for b in cat.of_type("Box")) for e in kept)
