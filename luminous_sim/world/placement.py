@@ -112,6 +112,7 @@ def find_spot(world: World, state: WorldState, oid: str, receptacle: str, rng: n
     # near the agent first (AI2-THOR puts things where the agent looks); then anywhere in a region it reaches:
     # the reach limit is on the receptacle, not on where in it the object lands (the bottom of a garbage can)
     hidden = None  # a real put's first pose out of the agent's view: taken only when no region has one in view
+    last = None  # a real put's first pose in a region's back half out of reach of the eye: taken after that
     for anywhere in (False, True):
         for i in order:
             spot = spots[i]
@@ -132,16 +133,19 @@ def find_spot(world: World, state: WorldState, oid: str, receptacle: str, rng: n
                 if got is not None and not seen:
                     hidden = hidden or got
                     continue
-                if got is None and not real:  # a dry run: room at all, as a put with the door open may find
+                if got is None:  # room at all: a drawer's region stays where it is closed, out of reach
                     got = sample_in_region(entry, whole, rng, occupied, tries=60)
+                    if got is not None and real:  # a real put's last resort, after every pose within reach
+                        last = last or got
+                        continue
             if got is None and type_of(state, receptacle) in PILING_RECEPTACLES and not anywhere:
                 got = _stack_pose(entry, spot, boxes)
             if got is None and type_of(state, receptacle) in CENTRED_ON and not anywhere and not occupied:
                 got = _centred_pose(entry, spot, spot.floor_z)
             if got is not None:
                 return got[:4]
-    if hidden is not None:
-        return hidden[:4]
+    if hidden is not None or last is not None:
+        return (hidden or last)[:4]
     return Failure(FailureCode.RECEPTACLE_FULL, f"{receptacle} is full: no free, stable spot for {oid}")
 
 
