@@ -20,6 +20,7 @@ from luminous_sim.scene import (
     Shade,
     View,
     blocks_agent,
+    edge_slides,
     fits,
     hang_pose,
     hanger_back,
@@ -238,5 +239,8 @@ def _reserve_in(draft: SceneDraft, entry, spot: RegionSpot, taken: list[Polygon]
             got = next(scan_region(entry, spot, taken + kept, accept=accept), None)
         if got is None:
             return []
+        if count > 1:  # against an edge, leaving room beside it for the next
+            got = next((c for c in edge_slides(got, spot) if not any(c[4].intersects(o) for o in taken + kept)
+                        and accept(np.array(c[4].centroid.coords[0]))), got)
         kept.append(got[4])
     return kept

@@ -24,6 +24,7 @@ from luminous_sim.scene.reach import REACH, horizontal_reach, reach_of
 from luminous_sim.scene.regions import (
     RegionSpot,
     can_hold,
+    edge_slides,
     fits,
     hang_pose,
     hanger_back,
@@ -48,6 +49,7 @@ __all__ = [
     "against_wall",
     "blocks_agent",
     "can_hold",
+    "edge_slides",
     "fits",
     "footprint",
     "front_zone",

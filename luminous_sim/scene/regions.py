@@ -9,6 +9,7 @@ from itertools import pairwise
 
 import numpy as np
 import shapely
+from shapely import affinity
 from shapely.geometry import Polygon
 
 from luminous_sim.assets.catalog import AssetEntry
@@ -64,6 +65,34 @@ def open_tops(entry: AssetEntry) -> set[str]:
     roofs = shades(entry)
     return {r["name"] for r in entry.regions if r["kind"] == "volume" and not r.get("requires_open")
             and roofs[r["name"]].roof is None}
+
+
+PACK_GAP = 0.01
+"""Metres a put slid against a region's edge keeps off it."""
+
+
+def edge_slides(got: tuple, spot) -> list[tuple]:
+    """`got` (x, y, z, yaw, footprint) moved within the region to its nearest corner, then to the nearest edge
+    across the footprint's short side, then along its long side: candidates that leave the most room beside."""
+    x, y, z, yaw, fp = got
+    c, s_ = math.cos(spot.yaw), math.sin(spot.yaw)
+    pts = np.array(fp.exterior.coords) - np.array(spot.center)
+    local = np.column_stack([pts[:, 0] * c + pts[:, 1] * s_, -pts[:, 0] * s_ + pts[:, 1] * c])
+    lo, hi = local.min(axis=0), local.max(axis=0)
+    half = np.array(spot.size) / 2 - PACK_GAP
+    # per local axis, the shift to the nearer edge (0 where the footprint fills the region)
+    shift = [(half[k] - hi[k]) if abs(half[k] - hi[k]) <= abs(lo[k] + half[k]) else -(lo[k] + half[k])
+             for k in (0, 1)]
+    short = int(np.argmin(hi - lo))
+    moves = [(shift[0], shift[1]), (shift[0], 0.0) if short == 0 else (0.0, shift[1]),
+             (0.0, shift[1]) if short == 0 else (shift[0], 0.0)]
+    out = []
+    for du, dv in moves:
+        if abs(du) < 1e-4 and abs(dv) < 1e-4:
+            continue
+        dx, dy = du * c - dv * s_, du * s_ + dv * c
+        out.append((x + dx, y + dy, z, yaw, affinity.translate(fp, dx, dy)))
+    return out
 
 
 def can_hold(host: AssetEntry, thing: AssetEntry, count: int = 1) -> bool:

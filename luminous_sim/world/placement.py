@@ -13,6 +13,7 @@ import numpy as np
 from luminous_sim.errors import Failure, FailureCode
 from luminous_sim.scene import (
     View,
+    edge_slides,
     hang_pose,
     hanger_back,
     open_tops,
@@ -235,13 +236,24 @@ def _sample_in_view(world: World, entry, spot, rng: np.random.Generator, occupie
         hits = world.client.rayTestBatch(near.tolist(), [centre.tolist()] * len(near))
         return any(h[0] == -1 for h in hits)
 
+    def packed(got):
+        """The pose slid to the nearest corner of the region, else the nearest edge across the object's short
+        side (so a second pan still fits beside the first), where that is free, reached and in clear view."""
+        for cand in edge_slides(got, spot):
+            fp = cand[4]
+            c = fp.centroid
+            if (not any(fp.intersects(o) for o in occupied) and in_reach(np.array([c.x, c.y]))
+                    and clear_view(cand)):
+                return cand
+        return got
+
     for _ in range(VIEW_TRIES):
         got = sample_in_region(entry, spot, rng, occupied, tries=60, accept=in_reach)
         if got is None:  # a tight fit (a box beside a remote) may take more draws
             continue
         first = first or (got if real else None)
         if clear_view(got):
-            return got, True
+            return packed(got), True
     # no random draw was in clear view (a basin's near rim hides most of it), or none found room (the gap left
     # on a crowded table): scan the region for the first few poses in clear view before settling for one that is not
     for i, got in enumerate(scan_region(entry, spot, occupied, accept=in_reach)):
