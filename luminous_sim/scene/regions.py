@@ -183,8 +183,9 @@ def scan_region(entry: AssetEntry, spot: RegionSpot, occupied: list[Polygon], st
         room_x, room_y = spot.size[0] / 2 - ex, spot.size[1] / 2 - ey
         if room_x < 0 or room_y < 0:
             continue
-        us = np.arange(-math.floor(room_x / step), math.floor(room_x / step) + 1) * step
-        vs = np.arange(-math.floor(room_y / step), math.floor(room_y / step) + 1) * step
+        # the lattice, and flush against each edge (the one gap left beside a pan pushed to the other side)
+        us = np.union1d(np.arange(-math.floor(room_x / step), math.floor(room_x / step) + 1) * step, [-room_x, room_x])
+        vs = np.union1d(np.arange(-math.floor(room_y / step), math.floor(room_y / step) + 1) * step, [-room_y, room_y])
         for u in us:
             for v in vs:
                 cands.append((u * u + v * v, k, float(u), float(v)))
