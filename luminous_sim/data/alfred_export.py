@@ -24,6 +24,7 @@ from typing import Any
 from luminous_sim.assets.objio import write_atomic
 from luminous_sim.episode import EpisodeRecord, write_video
 from luminous_sim.errors import LuminousError
+from luminous_sim.planning import Trajectory
 from luminous_sim.scene import Scene
 from luminous_sim.scene.ids import type_of_id
 from luminous_sim.vocab import abilities
@@ -176,12 +177,21 @@ def _task_id(seed: int) -> str:
     return f"trial_T20000101_{(seed // 1_000_000) % 1_000_000:06d}_{seed % 1_000_000:06d}"
 
 
+def first_cause(traj: Trajectory) -> str:
+    """Why a trajectory failed: its first failed attempt's message (later ones often only echo it after a
+    replan), or that the goal was left unmet when no attempt failed."""
+    if traj.failures:
+        return traj.failures[0]
+    done, total = traj.goal_conditions
+    return f"the goal is not met at the end: {done} of {total} goal conditions hold"
+
+
 def alfred_traj_data(scene: Scene, record: EpisodeRecord, seed: int,
                      task_id: str | None = None) -> tuple[dict[str, Any], list[int]]:
     """The traj_data.json content of a solved episode, and the map from our high_idx to ALFRED's."""
     traj, task = record.trajectory, record.task
     if not traj.success:
-        raise ExportError(f"only solved episodes are exported (this one failed: {traj.failure})")
+        raise ExportError(f"only solved episodes are exported (this one failed: {first_cause(traj)})")
     coords = _Coordinates(scene)
     ours = [h for h in traj.high_pddl if h["planner_action"]["action"] != "End"]
     fold = fold_subgoals([h["planner_action"]["action"] for h in ours])

@@ -15,7 +15,7 @@ from luminous_sim.errors import Failure
 from luminous_sim.scene import Scene
 from luminous_sim.tasks.model import PddlParams, TaskInstance
 from luminous_sim.tasks.sample import sample_task
-from luminous_sim.vocab import HANGERS, parent_type
+from luminous_sim.vocab import parent_type
 from luminous_sim.world import WorldView
 
 SPOT_SEED = 2024
@@ -40,7 +40,7 @@ def has_room(view: WorldView, object_type: str, receptacle_type: str, excluded: 
     hosts = _hosts(state, receptacle_type, full)
     if hosts is None:
         return False
-    if receptacle_type in HANGERS or not objs or not hosts:
+    if not objs or not hosts:
         return True
     rng = np.random.default_rng(SPOT_SEED)
     return any(not isinstance(view.free_spot(o, h, rng, assume_open=True), Failure)
@@ -57,7 +57,7 @@ def has_room_for_two(view: WorldView, object_type: str, receptacle_type: str, ex
     hosts = _hosts(state, receptacle_type, full)
     if hosts is None:
         return False
-    if receptacle_type in HANGERS or not hosts:
+    if not hosts:
         return True
     if not objs and state.of_type(parent_type(object_type) or ""):
         return has_room(view, object_type, receptacle_type, excluded, full)
