@@ -1,13 +1,28 @@
 """Oracle figures in the layout of the paper's Table 2: success per task type over sampled tasks in
-generated scenes, subgoal success per subgoal type, median planning time, and low-level trajectory
-length per type next to ALFRED's (spec 2.3, train means).
+generated scenes, before and after the feasibility filter, subgoal success per subgoal type, median
+planning time, and low-level trajectory length per type next to ALFRED's (spec 2.3, train means).
 
-    python benchmarks/bench_oracle.py --n 50 --jobs 2   # the issue's figure (about 5 s per episode)
+    python benchmarks/bench_oracle.py --n 50 --jobs 2   # the issue's figure (about 10 s per slot)
     python benchmarks/bench_oracle.py --n 5
 
 Rooms are default rooms of a room type the task type allows; where none of three holds a task of the
 type that fits physically (two of a kind for pick_two, room in the receptacle), a room is generated for a
-drawn task ('for task' column). 'no task' counts slots where no such room was found.
+drawn task ('for task' column). 'no task' counts slots where no such room was found (no scene: neither
+population has a task there).
+
+Two populations of tasks share each slot's scene:
+
+- 'as sampled' (the paper's Table 2 counts these): the sampler's raw draw, `tasks.sample_task` over the
+  scene's whole state (as `run_episode` sets the world up: for cleaning, everything dirty), with the
+  slot's task stream; no object left out as unseeable, no `physically_feasible` filter, solved by the
+  oracle once with no redraw (`episode.run_task`).
+- 'after filter' (today's figure): `episode.run_episode`, whose `planning.draw_task` leaves out objects
+  seen from no reachable pose and keeps only tasks whose put has a free, stable spot
+  (`physically_feasible`), and which redraws a task after a failure that blames the task.
+
+'removed' counts raw draws the filter would not have kept (`filter_verdict`: the filter's tests for one
+task), with their success beside it.
+
 Every episode is appended to a JSON-lines file (--out) as it finishes; a rerun with the same file
 skips the episodes already there, so a long run can be stopped and resumed.
 """
@@ -35,8 +50,51 @@ ROOMS = {"pick_and_place_simple": ["Kitchen", "LivingRoom", "Bedroom", "Bathroom
          "pick_and_place_with_movable_recep": ["Kitchen", "LivingRoom", "Bedroom"]}
 
 
+def filter_verdict(scene, view, task_type: str, params) -> str | None:
+    """Why `planning.draw_task`'s filter would not keep the task of `params` in this world, or None: its
+    objects must be seen from some reachable pose (`unseeable`) and its put must have a free, stable spot
+    (`physically_feasible`), the tests `draw_task` applies to every candidate."""
+    from luminous_sim.planning import physically_feasible, unseeable
+    from luminous_sim.tasks import TaskSamplingError, feasible_params
+
+    hidden = unseeable(view)
+    try:
+        seen = feasible_params(scene, view.state.without(hidden), task_type)
+    except TaskSamplingError:
+        seen = []
+    if params not in seen:
+        return "an object it needs is seen from no reachable pose"
+    if not physically_feasible(view, params, hidden, two=task_type == "pick_two_obj_and_place"):
+        return "no free, stable spot for its put"
+    return None
+
+
+def raw_episode(scene, task_type: str, k: int) -> dict:
+    """The sampler's raw draw for slot `k` in `scene` (no filter), solved once by the oracle, and whether the
+    feasibility filter would have kept it."""
+    import numpy as np
+
+    from luminous_sim.episode import prepared_world, run_task
+    from luminous_sim.tasks import TaskSamplingError, sample_task
+
+    rng = np.random.default_rng(np.random.SeedSequence([k, 11]))  # run_episode's task stream
+    world = prepared_world(scene, task_type)
+    try:
+        view = world.view()
+        task = sample_task(scene, view.state, task_type, rng)
+        removed = filter_verdict(scene, view, task_type, task.params)
+    except TaskSamplingError as exc:
+        return {"sampled": False, "why": str(exc)}
+    finally:
+        world.close()
+    r = run_task(scene, task, seed=k, record_frames=False)
+    return {"sampled": True, "goal": r.goal, "success": r.success, "goal_conditions": list(r.goal_conditions),
+            "failure": r.failure, "removed": removed}
+
+
 def episode(task_type: str, k: int) -> dict:
-    """Run task slot `k` of `task_type` in a generated room that supports such a task."""
+    """Run task slot `k` of `task_type` in a generated room that supports such a task: the filtered draw
+    (`run_episode`) and the raw one (`raw_episode`)."""
     from luminous_sim.data import scene_for_task
     from luminous_sim.episode import run_episode
     from luminous_sim.errors import LuminousError
@@ -49,24 +107,67 @@ def episode(task_type: str, k: int) -> dict:
         r, traj = run_episode(scene, task_type, seed=k, record_frames=False, return_trajectory=True)
     except LuminousError as exc:  # no room of this type supports the task, or none fits physically
         return {"type": task_type, "k": k, "room": room, "scene_seed": seed, "success": None, "no_task": 1,
-                "why": str(exc)}
+                "why": str(exc), "raw": {"sampled": False, "why": "no scene"}}
+    raw = raw_episode(scene, task_type, k)
     ok_subgoals = [h["planner_action"]["action"] for h in traj.high_pddl if h["planner_action"]["action"] != "End"]
     return {"type": task_type, "k": k, "room": room, "scene_seed": seed, "task_driven": bool(scene.source),
             "goal": r.goal, "success": r.success,
             "goal_conditions": list(r.goal_conditions), "low_actions": r.low_actions,
             "planning_seconds": r.planning_seconds, "episode_seconds": time.perf_counter() - t0,
             "subgoals_ok": ok_subgoals, "subgoals_failed": traj.failed_subgoals, "failures": traj.failures,
-            "replans": traj.replans, "no_task": 0}
+            "replans": traj.replans, "no_task": 0, "raw": raw}
 
 
 def _median(records: list[dict], key: str) -> float:
     return statistics.median(r[key] for r in records) if records else float("nan")
 
 
+def _rate(ok: int, n: int) -> str:
+    return f"{ok}/{n} ({100 * ok / n:.0f}%)" if n else "n/a"
+
+
+def filter_table(by_type: dict[str, list[dict]], types: list[str]) -> None:
+    """Success as sampled (before the filter) beside success after it, and what the filter removed."""
+    print(f"{'task type':36}{'as sampled':>16}{'removed':>9}{'kept: ok':>15}{'removed: ok':>14}"
+          f"{'after filter':>16}{'no task':>9}")
+    tot = Counter()
+    for t in types:
+        rs = by_type[t]
+        raw = [r["raw"] for r in rs if r["raw"]["sampled"]]
+        removed = [x for x in raw if x["removed"]]
+        kept = [x for x in raw if not x["removed"]]
+        after = [r for r in rs if r["success"] is not None]
+        row = Counter(raw=len(raw), raw_ok=sum(x["success"] for x in raw), removed=len(removed),
+                      removed_ok=sum(x["success"] for x in removed), kept=len(kept),
+                      kept_ok=sum(x["success"] for x in kept), after=len(after),
+                      after_ok=sum(r["success"] for r in after), unsampled=len(rs) - len(raw))
+        tot.update(row)
+        print(f"{t:36}{_rate(row['raw_ok'], row['raw']):>16}{row['removed']:>9}"
+              f"{_rate(row['kept_ok'], row['kept']):>15}{_rate(row['removed_ok'], row['removed']):>14}"
+              f"{_rate(row['after_ok'], row['after']):>16}{row['unsampled']:>9}")
+    print(f"{'all':36}{_rate(tot['raw_ok'], tot['raw']):>16}{tot['removed']:>9}"
+          f"{_rate(tot['kept_ok'], tot['kept']):>15}{_rate(tot['removed_ok'], tot['removed']):>14}"
+          f"{_rate(tot['after_ok'], tot['after']):>16}{tot['unsampled']:>9}")
+    causes = Counter(r["raw"]["removed"] for t in types for r in by_type[t]
+                     if r["raw"]["sampled"] and r["raw"]["removed"])
+    if causes:
+        print("\nwhy the filter removed a raw draw:")
+        for why, n in causes.most_common():
+            print(f"  {n:4d}  {why}")
+    failed = [(r, r["raw"]) for t in types for r in by_type[t] if r["raw"]["sampled"] and not r["raw"]["success"]]
+    if failed:
+        print("\nraw draws the oracle failed (type, slot, goal: first cause):")
+        for r, x in failed:
+            print(f"  {r['type']} k={r['k']} {x['goal'][:80]}: {(x['failure'] or '')[:140]}")
+
+
 def summarise(records: list[dict], types: list[str]) -> None:
     by_type = defaultdict(list)
     for r in records:
         by_type[r["type"]].append(r)
+    print("success per task type, before and after the feasibility filter (slots as sampled):")
+    filter_table(by_type, types)
+    print("\nafter the filter (run_episode), in the layout of the paper's Table 2:")
     subgoal_ok, subgoal_all = Counter(), Counter()
     print(f"{'task type':36}{'success':>16}{'goal-cond.':>12}{'no task':>9}{'for task':>9}{'plan (med)':>12}"
           f"{'low actions':>13}{'ALFRED':>8}{'episode':>10}")
@@ -114,6 +215,7 @@ def main() -> None:
         args.out.unlink()
     records = [json.loads(line) for line in args.out.read_text().splitlines() if line.strip()] \
         if args.out.exists() else []
+    records = [r for r in records if "raw" in r]  # older records lack the raw draw: run those again
     have = {(r["type"], r["k"]) for r in records}
     todo = [(t, k) for k in range(args.n) for t in args.types if (t, k) not in have]
     with args.out.open("a") as sink, ProcessPoolExecutor(max_workers=args.jobs) as pool:

@@ -5,7 +5,7 @@ held-out seeds, and the learning curve.
     python benchmarks/bench_ppo.py --budget-minutes 55 --eval-episodes 100 --out out/bench_ppo
 
 Trains SB3's PPO (`MultiInputPolicy`: a CNN over the 64x64 `rgb` and the instruction's tokens) with the example's
-settings (`examples/train_ppo.py`) on `Luminous-NavToObject-64-v0` until the wall-clock budget is spent (or
+settings (`examples/train_ppo.py`) on `Luminous-NavToObject-64-v1` until the wall-clock budget is spent (or
 `--max-steps`), in `--n-envs` worker processes (2: the issue's two cores). Why that id: its goal (walk until a
 named object is in view and within reach) is met by navigation alone, so a reward arrives within tens of
 steps, while the pick-up ids need a target under one of 9 grid points as well; 64 px keeps a step cheap.
@@ -44,7 +44,7 @@ import train_ppo  # noqa: E402  (examples/train_ppo.py)
 
 from luminous_sim.assets.objio import write_atomic  # noqa: E402
 
-ENV_ID = "Luminous-NavToObject-64-v0"
+ENV_ID = "Luminous-NavToObject-64-v1"
 NAVIGATION = 5
 """The first five discrete actions are MoveAhead, RotateLeft, RotateRight, LookUp, LookDown."""
 

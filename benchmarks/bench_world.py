@@ -10,9 +10,12 @@ Prints the machine load at the start, then each figure as the median over repeat
 - per frame size (300, 128, 64 px), before and after the render optimisations, in the same run on the
   same views, interleaved: "before" is a World with `lod_max_size=0, cull=False, structure_last=False`
   (full-detail visuals, every body drawn, floor and walls painted first, as before them), "after" the
-  default World (the level-of-detail visuals at <= 128 px, frustum culling, structure painted last).
+  default World (the level-of-detail visuals at <= 128 px, frustum culling of objects, portal culling of the
+  outdoors, structure painted last).
   Each as steps/s of wall-clock time and of this process's CPU time (the machine is shared: CPU time
-  is what one core does, and moves less with the load);
+  is what one core does, and moves less with the load); with `--ablation`, each optimisation alone (the
+  frustum culling of objects, that and the portal culling of the outdoors, the structure painted last, the
+  level of detail) on the same views;
 - environment vs raw renderer on the SAME views: the World's navigation cycle is run once to record
   the camera pose of every frame it renders; the raw loop renders exactly those views with
   `getCameraImage` (same size, renderer, flags, light) in the same World, the environment loop replays
@@ -140,7 +143,8 @@ def ablation(seed: int, size: int, steps: int, repeats: int) -> None:
     from luminous_sim.world.world import World
 
     scene = _scene(seed)
-    variants = {"before": BEFORE, "culling only": {**BEFORE, "cull": True},
+    variants = {"before": BEFORE, "frustum culling of objects only": {**BEFORE, "cull": True, "cull_outdoors": False},
+                "culling of objects and outdoors only": {**BEFORE, "cull": True},
                 "structure last only": {**BEFORE, "structure_last": True}}
     if size <= WorldConfig().lod_max_size:
         variants["LOD only"] = {**BEFORE, "lod_max_size": WorldConfig().lod_max_size}
@@ -185,7 +189,7 @@ def frame_figures(seed: int, size: int, steps: int, repeats: int) -> None:
             ratio.append(r_wall / (steps / env_a[-1]))
         lod = "level-of-detail visuals" if after.config.use_lod else "full detail"
         print(f"{size}x{size} RGB+depth+segmentation, {steps} navigation steps ({failed} failed, {len(views)} distinct "
-              f"views), after: {lod}, culling, structure last:")
+              f"views), after: {lod}, culling of objects and outdoors, structure last:")
         print(f"  before: {spread(env_b)} steps/s wall clock, {spread(cpu_b)} steps/s of CPU time")
         print(f"  after:  {spread(env_a)} steps/s wall clock, {spread(cpu_a)} steps/s of CPU time")
         gain = [a / b for a, b in zip(cpu_a, cpu_b, strict=True)]

@@ -2,7 +2,7 @@
 evaluate the trained policy and a random one on the same held-out seeds.
 
     pip install -e '.[learn]'
-    python examples/train_ppo.py --env Luminous-NavToObject-64-v0 --steps 20000 --out out/ppo
+    python examples/train_ppo.py --env Luminous-NavToObject-64-v1 --steps 20000 --out out/ppo
     python examples/train_ppo.py --out out/ppo --steps 40000 --resume      # go on from the last save
 
 It writes to `--out`: `model.zip` (`PPO.load` reads it back), `curve.csv` (one row per finished training
@@ -46,7 +46,7 @@ import luminous_sim  # noqa: F401  (registers the ids)
 from luminous_sim.assets.objio import write_atomic
 from luminous_sim.env import InstructionTokens
 
-DEFAULT_ENV = "Luminous-NavToObject-64-v0"
+DEFAULT_ENV = "Luminous-NavToObject-64-v1"
 TRAIN_KWARGS: dict[str, Any] = {"verify_expert": False, "max_failures": 1_000_000}
 """Env options for training by default (see the module docstring)."""
 PPO_DEFAULTS: dict[str, Any] = {"n_steps": 128, "batch_size": 64, "n_epochs": 4, "learning_rate": 5e-4,

@@ -110,8 +110,11 @@ def prepared_world(scene: Scene, task_type: str, catalog: Catalog | None = None)
 
 def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = None,
                 record_frames: bool = True, return_trajectory: bool = False, return_record: bool = False,
-                extra_annotations: int = 2):
+                extra_annotations: int = 2, cross_room: bool = False):
     """Sample a `task_type` task in `scene`, solve it with the oracle, evaluate it, and write the files.
+
+    With `cross_room` (a house only), the task's object and its receptacle (or lamp) are in different rooms
+    (`tasks.rooms_apart`).
 
     Returns the `EpisodeResult`; with `return_trajectory`, `(result, trajectory)`; with `return_record`,
     `(result, EpisodeRecord)` holding the task, the trajectory and `1 + extra_annotations` instructions.
@@ -123,8 +126,13 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
     world = prepared_world(scene, task_type)
     unreachable: set[str] = set()
     full: set[str] = set()
+    keep = None
+    if cross_room:
+        from luminous_sim.tasks import rooms_apart
+
+        keep = rooms_apart(scene, world.view().state)
     try:
-        task = draw_task(scene, world.view(), task_type, rng)
+        task = draw_task(scene, world.view(), task_type, rng, keep=keep)
         start, start_state = world.agent, world.view().state
         traj = Oracle(world, record_frames=record_frames).run(task.goal)
         for _ in range(TASK_REDRAWS):  # ALFRED's generator also drops tasks its expert cannot do
@@ -134,7 +142,7 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
             full.update(traj.full)
             fresh = prepared_world(scene, task_type)
             try:
-                redrawn = draw_task(scene, fresh.view(), task_type, rng, excluded=unreachable, full=full)
+                redrawn = draw_task(scene, fresh.view(), task_type, rng, excluded=unreachable, full=full, keep=keep)
             except TaskSamplingError:  # nothing else to draw: the failed episode stands
                 fresh.close()
                 break

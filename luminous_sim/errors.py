@@ -109,7 +109,17 @@ class CDFError(LuminousError):
 
 
 class InfeasibleSceneError(LuminousError):
-    """CSSG could not satisfy a CDF within its sampling budget."""
+    """CSSG could not satisfy a CDF within its sampling budget.
+
+    Args:
+        message: what failed how often, for people.
+        unplaced: the CDF's object names that some sample could not place, for programs (a caller may
+            ask for the scene without them).
+    """
+
+    def __init__(self, message: str, unplaced: tuple[str, ...] = ()):
+        super().__init__(message)
+        self.unplaced = unplaced
 
 
 class PlanningError(LuminousError):

@@ -9,11 +9,12 @@ from pathlib import Path
 import numpy as np
 
 from luminous_sim.assets.objio import png_bytes, write_atomic
-from luminous_sim.cssg import Generated
+from luminous_sim.cssg import Generated, HouseGenerated
 
 
-def write_scene_outputs(generated: Generated, out_dir: Path, physics: bool = True) -> dict:
-    """Write the files for one generated scene into `out_dir`; returns the combined report."""
+def write_scene_outputs(generated: Generated | HouseGenerated, out_dir: Path, physics: bool = True) -> dict:
+    """Write the files for one generated scene (a room or a house) into `out_dir`; returns the combined report
+    (a house's `layout` holds each room's CSSG report and which rooms its connected floor reaches)."""
     from luminous_sim.world import build_scene, check_physics, egocentric, top_down
 
     out_dir = Path(out_dir)
@@ -43,11 +44,16 @@ def _reachable(scene) -> np.ndarray:
 
 
 def _view_from(scene, grid: np.ndarray) -> tuple[float, float, float]:
-    """A standing point near the room's middle, facing the direction with the most room."""
+    """A standing point near the room's middle (a house's largest room's), facing the direction with the most
+    room (in a house, up to its interior walls)."""
     from shapely.geometry import Point
 
     poly = scene.room.polygon()
     c = np.array(poly.centroid.coords[0])
+    if scene.room.house is not None:
+        biggest = max(scene.room.house.rooms, key=lambda r: (r.polygon().area, r.name))
+        c = np.array(biggest.polygon().centroid.coords[0])
+        poly = scene.room.free_floor()
     x, y = grid[int(np.argmin(np.linalg.norm(grid - c, axis=1)))]
 
     def depth(a: float) -> float:

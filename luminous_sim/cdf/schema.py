@@ -259,11 +259,74 @@ _ROOM_TYPE_SCHEMA = {
 }
 
 
+MIN_ROOM_SIDE = 2.0
+"""Shortest side (m) a house's room may have: room for the agent, a door and one piece of furniture."""
+MIN_ROOM_AREA = 4.0
+"""Smallest floor (m^2) a house's room may have."""
+MAX_HOUSE_SIDE = 30.0
+"""Longest side (m) of a house outline."""
+
+
+class HouseRoomSpec(_Model):
+    """One room of a house: its name (used by `adjacency`), its type and optional floor-area bounds."""
+
+    model_config = ConfigDict(title="HouseRoom")
+
+    name: Name
+    type: Annotated[RoomType, BeforeValidator(lambda v: _ROOM_TYPE_ALIASES.get(v.lower(), v) if isinstance(v, str)
+                                               else v)]
+    min_area: Annotated[float, Field(ge=MIN_ROOM_AREA, le=MAX_HOUSE_SIDE ** 2, allow_inf_nan=False)] | None = \
+        Field(None, description="m^2")
+    max_area: Annotated[float, Field(ge=MIN_ROOM_AREA, le=MAX_HOUSE_SIDE ** 2, allow_inf_nan=False)] | None = \
+        Field(None, description="m^2")
+
+
+class HouseSize(_Model):
+    """A rectangular house outline, metres along x (`width`) and y (`depth`)."""
+
+    width: Annotated[float, Field(ge=MIN_ROOM_SIDE, le=MAX_HOUSE_SIDE, allow_inf_nan=False)]
+    depth: Annotated[float, Field(ge=MIN_ROOM_SIDE, le=MAX_HOUSE_SIDE, allow_inf_nan=False)]
+
+
+class HouseSpec(_Model):
+    """A multi-room house: rooms, the pairs of rooms that must share a door, and optionally the outline.
+
+    The floor-plan generator partitions the outline into the rooms (recursive subdivision); every room is
+    reachable through doors; CSSG furnishes each room by its room type's rules. Cross-field checks (names,
+    sizes) are in `cdf/house.py`.
+    """
+
+    model_config = ConfigDict(title="House")
+
+    rooms: Annotated[tuple[HouseRoomSpec, ...], Field(min_length=2, max_length=12)]
+    adjacency: tuple[tuple[Name, Name], ...] = Field(
+        (), description="pairs of room names joined by a door (so they share a wall)")
+    size: HouseSize | None = Field(None, description="the outline; default: from the rooms' areas")
+
+
+def _house_room_types(data: Any) -> Any:
+    """A house's room_type defaults to its rooms' types, in order of first appearance."""
+    if isinstance(data, dict) and "room_type" not in data and isinstance(data.get("house"), dict):
+        rooms = data["house"].get("rooms")
+        if isinstance(rooms, (list, tuple)):
+            types: list[str] = [r["type"] for r in rooms if isinstance(r, dict) and isinstance(r.get("type"), str)]
+            derived = [t for t in dict.fromkeys(_ROOM_TYPE_ALIASES.get(t.lower(), t) for t in types) if t in ROOM_TYPES]
+            if derived:
+                return {**data, "room_type": derived}
+    return data
+
+
+def _scene_schema(schema: dict[str, Any]) -> None:
+    """room_type may be left out when a house is given (it defaults to the house's room types)."""
+    schema["required"] = [k for k in schema.get("required", []) if k != "room_type"]
+    schema["anyOf"] = [{"required": ["room_type"]}, {"required": ["house"]}]
+
+
 class SceneSpec(_Model):
-    """The indoor-layout section."""
+    """The indoor-layout section: one room, or a house of several rooms (`house`)."""
 
     # What a generated `scene.Scene` must satisfy; the JSON Schema keeps the document's name.
-    model_config = ConfigDict(title="Scene")
+    model_config = ConfigDict(title="Scene", json_schema_extra=_scene_schema)
 
     room_type: Annotated[
         tuple[RoomType, ...],
@@ -274,6 +337,12 @@ class SceneSpec(_Model):
     room: RoomSpec | None = None
     objects: tuple[ObjectSpec, ...] = ()
     relations: tuple[Relation, ...] = ()
+    house: HouseSpec | None = None
+
+    @model_validator(mode="before")
+    @classmethod
+    def _derive_room_type(cls, data: Any) -> Any:
+        return _house_room_types(data)
 
     @field_serializer("room_type")
     def _one_room_type(self, value: tuple[str, ...]) -> str | list[str]:

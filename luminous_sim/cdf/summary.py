@@ -8,7 +8,7 @@ from luminous_sim.cdf.schema import ChallengeDefinition, HighLevelStep
 
 
 def summarize(cdf: ChallengeDefinition, limit: int = 80) -> str:
-    """One line per aspect: room, objects and relations, task, execution, placement order."""
+    """One line per aspect: room (or house), objects and relations, task, execution, placement order."""
     scene = cdf.scene
     room = scene.room if isinstance(scene.room, str) else ("constraints" if scene.room else "any")
     instances = sum(o.count for o in scene.objects)
@@ -16,6 +16,11 @@ def summarize(cdf: ChallengeDefinition, limit: int = 80) -> str:
         f"room: {'/'.join(scene.room_type)} ({room}); {len(scene.objects)} objects "
         f"({instances} instances), {len(scene.relations)} relations",
     ]
+    if scene.house is not None:
+        rooms = ", ".join(f"{r.name} ({r.type})" for r in scene.house.rooms)
+        size = (f"{scene.house.size.width:g} x {scene.house.size.depth:g} m" if scene.house.size
+                else "size from the rooms")
+        lines = [f"house: {len(scene.house.rooms)} rooms: {rooms}; {len(scene.house.adjacency)} doorways asked; {size}"]
     if cdf.task is not None:
         goal = to_sexpr(cdf.task.goal)
         goal = goal if len(goal) <= limit else goal[: limit - 3] + "..."

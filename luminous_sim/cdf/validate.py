@@ -19,6 +19,7 @@ from luminous_sim.cdf.affordances import (
 )
 from luminous_sim.cdf.contradictions import find_conflicts
 from luminous_sim.cdf.graph import find_axis_contradiction, find_fixed_cycle
+from luminous_sim.cdf.house import check_house
 from luminous_sim.cdf.issues import CDFValidationError, Issue
 from luminous_sim.cdf.predicates import (
     PREDICATES,
@@ -89,6 +90,7 @@ def check(cdf: ChallengeDefinition) -> list[Issue]:
     """Every cross-field problem of a structurally valid document (empty when it is consistent)."""
     names, issues = _check_objects(cdf.scene.objects)
     issues += _check_room(cdf)
+    issues += check_house(cdf)
     issues += _check_relations(cdf, names)
     issues += _check_cycles(cdf)
     if cdf.task is not None:

@@ -1,5 +1,6 @@
-"""`luminous dataset`: oracle demonstrations at scale. `build`: an S+/U+/U+test split in ALFRED's layout
-(see luminous_sim.data.build); `minari`: a registered env's oracle episodes as a Minari dataset for offline RL
+"""`luminous dataset`: oracle demonstrations at scale. `build`: an S+/U+/U+test split (method (a)) or the
+designs of an ALFRED split folder (method (b)) in ALFRED's layout (see luminous_sim.data.build and
+.alfred_build); `minari`: a registered env's oracle episodes as a Minari dataset for offline RL
 (`luminous_sim.data.minari_export`; the `minari` package is imported only when that action runs).
 """
 
@@ -14,8 +15,8 @@ from luminous_sim.cli.args import int_range, non_negative_int, output_dir, posit
 from luminous_sim.data.backends import BACKENDS
 from luminous_sim.splits import PLUS_SPLITS
 
-EPILOG = ("example: luminous dataset minari --env Luminous-NavToObject-64-v0 --episodes 100 --out out/minari   "
-          "(read back: minari.MinariDataset('out/minari/luminous/NavToObject-64-v0/oracle-v0/data'))")
+EPILOG = ("example: luminous dataset minari --env Luminous-NavToObject-64-v1 --episodes 100 --out out/minari   "
+          "(read back: minari.MinariDataset('out/minari/luminous/NavToObject-64-v1/oracle-v0/data'))")
 
 
 def env_option(text: str) -> tuple[str, Any]:
@@ -33,14 +34,23 @@ def register(sub: argparse._SubParsersAction) -> None:
     parser = sub.add_parser("dataset", help="expert demonstrations: ALFRED's format (build), Minari (minari)")
     actions = parser.add_subparsers(dest="action", required=True, metavar="ACTION")
     b = actions.add_parser(
-        "build", help="build episodes 0..N-1 of a split (resumable: rerun the same command after a stop)",
-        description="Episode i of the split: its room structure's shared layout, a task of the episode's type "
-                    "drawn with its seed and solved by the oracle, written under OUT/<split>/ in ALFRED's "
-                    "json_2.1.0 layout; OUT/manifest.jsonl records each episode (built, or failed and why), "
-                    "OUT/splits.json lists the trials in ALFRED's oct21.json layout. A stopped or killed build "
-                    "resumes where it stopped when run again with the same options.")
-    b.add_argument("--split", required=True, choices=list(PLUS_SPLITS), help="which split")
-    b.add_argument("--count", required=True, type=non_negative_int, help="episodes 0..COUNT-1 of the split")
+        "build", help="build episodes 0..N-1 of a split, or re-solve the designs of an ALFRED split folder "
+                      "(resumable: rerun the same command after a stop)",
+        description="--split: episode i of the split: its room structure's shared layout, a task of the episode's "
+                    "type drawn with its seed and solved by the oracle (method (a)). --from-alfred: each task "
+                    "design (traj_data.json) of your own copy of an ALFRED split, solved in a scene generated in "
+                    "its own floor plan's room shell (method (b)). Trials are written under OUT/<split>/ in "
+                    "ALFRED's json_2.1.0 layout; OUT/manifest.jsonl records each episode (built, or failed and "
+                    "why), OUT/splits.json lists the trials in ALFRED's oct21.json layout. A stopped or killed "
+                    "build resumes where it stopped when run again with the same options.")
+    source = b.add_mutually_exclusive_group(required=True)
+    source.add_argument("--split", choices=list(PLUS_SPLITS), help="which split (method (a))")
+    source.add_argument("--from-alfred", type=Path, default=None, metavar="ALFRED_SPLIT_DIR",
+                        help="an ALFRED split folder of <task>/<trial>/traj_data.json, e.g. valid_seen (method "
+                             "(b)); its trials are written under OUT/<its folder name>/")
+    b.add_argument("--count", type=non_negative_int, default=None,
+                   help="episodes 0..COUNT-1 of the split (required with --split); with --from-alfred, the first "
+                        "COUNT designs in path order (default all)")
     b.add_argument("--out", required=True, type=output_dir, help="build folder (new, empty, or an earlier build)")
     b.add_argument("--workers", type=positive_int, default=1, help="worker processes (default 1)")
     b.add_argument("--backend", choices=BACKENDS, default="local",
@@ -52,10 +62,10 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="no raw_images/ and no video (ALFRED's loaders need raw_images; for quick checks)")
     b.add_argument("--no-video", action="store_true", help="no video.mp4 beside the raw images")
     b.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
-    b.set_defaults(func=_build)
+    b.set_defaults(func=_build, build_parser=b)
     p = actions.add_parser("minari", help="roll out the oracle in a registered env and write a Minari dataset",
                        epilog=EPILOG)
-    p.add_argument("--env", required=True, help="a registered id, e.g. Luminous-NavToObject-64-v0")
+    p.add_argument("--env", required=True, help="a registered id, e.g. Luminous-NavToObject-64-v1")
     p.add_argument("--episodes", type=positive_int, required=True, help="episodes to write")
     p.add_argument("--out", type=output_dir, required=True,
                    help="a new folder: the Minari datasets root the dataset is written under")
@@ -72,14 +82,24 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def _build(args: argparse.Namespace) -> int:
-    from luminous_sim.data import BuildOptions, build_split, make_backend
+    from luminous_sim.data import BuildOptions, build_from_alfred, build_split, make_backend
 
+    if args.split is not None and args.count is None:
+        args.build_parser.error("--count is required with --split")
     options = BuildOptions(frames=not args.no_frames, video=not args.no_video)
     with make_backend(args.backend, args.workers, args.address) as backend:
-        report = build_split(Path(args.out), args.split, args.count, backend, options,
-                             progress=not args.no_progress)
-    print(f"{args.split}: episodes 0..{args.count - 1} in {report.out}/ ({report.built} built, "
-          f"{report.failed} failed; {report.ran} run now)")
+        if args.split is not None:
+            report = build_split(Path(args.out), args.split, args.count, backend, options,
+                                 progress=not args.no_progress)
+        else:
+            report = build_from_alfred(Path(args.out), args.from_alfred, args.count, backend, options,
+                                       progress=not args.no_progress)
+    if args.split is not None:
+        print(f"{args.split}: episodes 0..{args.count - 1} in {report.out}/ ({report.built} built, "
+              f"{report.failed} failed; {report.ran} run now)")
+    else:
+        print(f"{args.from_alfred}: {len(report.records)} designs in {report.out}/ ({report.built} built, "
+              f"{report.failed} failed; {report.ran} run now)")
     print(report.summary())
     print(f"trials listed in {report.out / 'splits.json'}; every episode's record in {report.out / 'manifest.jsonl'}")
     return 0

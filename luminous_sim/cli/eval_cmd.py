@@ -9,6 +9,7 @@ import sys
 from pathlib import Path
 
 from luminous_sim.cli.args import output_dir, positive_int, seed
+from luminous_sim.data.backends import BACKENDS
 
 SPLITS: tuple[str, ...] = ("S+", "U+", "U+test")
 """The split names (`luminous_sim.splits.PLUS_SPLITS`; a test keeps the two in step)."""
@@ -26,7 +27,14 @@ def register(sub: argparse._SubParsersAction) -> None:
     parser.add_argument("--episodes", type=positive_int, required=True, metavar="N",
                         help="evaluate the split's episodes 0 .. N-1")
     parser.add_argument("--out", type=output_dir, required=True, help="output folder")
-    parser.add_argument("--workers", type=positive_int, default=1, help="local worker processes (default 1)")
+    parser.add_argument("--workers", type=positive_int, default=1,
+                        help="worker processes, or Ray CPUs of a local cluster (default 1)")
+    parser.add_argument("--backend", choices=BACKENDS, default="local",
+                        help="local processes, or Ray tasks (needs luminous-sim[cluster]); the same outcomes "
+                             "either way (default local)")
+    parser.add_argument("--address", default=None,
+                        help="a running Ray cluster's address (ray backend; default: start a local cluster of "
+                             "WORKERS CPUs). Every node needs luminous_sim and your agent's module installed")
     parser.add_argument("--seed", type=seed, default=0, help="seed of the agents' randomness (default 0)")
     parser.add_argument("--env", type=env_option, action="append", default=[], metavar="KEY=VALUE",
                         help="an env option over ALFRED's (EnvConfig's fields; VALUE as JSON, else a string), "
@@ -46,11 +54,15 @@ def env_option(text: str) -> tuple[str, object]:
 
 
 def _run(args: argparse.Namespace) -> int:
-    from luminous_sim.eval import EpisodeOutcome, check_policy, evaluate, markdown_table, write_reports
+    from luminous_sim.data import Backend, make_backend
+    from luminous_sim.errors import LuminousError
+    from luminous_sim.eval import EpisodeOutcome, EvalReport, check_policy, evaluate, markdown_table, write_reports
 
     if os.getcwd() not in sys.path:  # MODULE may be a file in the current folder, as with `python -m`
         sys.path.insert(0, os.getcwd())
     check_policy(args.policy)  # a bad spec fails here, before any episode
+    if args.backend == "local" and args.address:
+        raise LuminousError(f"--address {args.address} is for the ray backend, not local")
 
     def show(o: EpisodeOutcome) -> None:
         what = o.end if o.drawn else f"unavailable ({o.cause})"
@@ -58,8 +70,16 @@ def _run(args: argparse.Namespace) -> int:
         print(f"{o.split} {o.index:4d} {o.task_type:<34} {what:<22} gc {gc:<5} steps {o.steps:4d} "
               f"expert {o.expert_length:4d}", file=sys.stderr)
 
-    report = evaluate(args.policy, args.split, args.episodes, seed=args.seed, workers=args.workers,
-                      out_dir=Path(args.out), progress=show, env_kwargs=dict(args.env))
+    def run(backend: Backend | None) -> EvalReport:
+        return evaluate(args.policy, args.split, args.episodes, seed=args.seed, workers=args.workers,
+                        out_dir=Path(args.out), progress=show, env_kwargs=dict(args.env), backend=backend)
+
+    if args.backend == "local":
+        report = run(None)
+    else:  # a local Ray cluster's workers inherit PYTHONPATH: the current folder's agent module too
+        os.environ["PYTHONPATH"] = os.pathsep.join(p for p in (os.getcwd(), os.environ.get("PYTHONPATH")) if p)
+        with make_backend(args.backend, args.workers, args.address) as backend:
+            report = run(backend)
     paths = write_reports(report, Path(args.out))
     print(markdown_table([report]), end="")
     print(f"wrote {paths['json']}, {paths['table']}, {paths['plot']}")

@@ -34,7 +34,15 @@ def register(sub: argparse._SubParsersAction) -> None:
     parser.add_argument("--model", type=Path, help="with --method learned: a checkpoint of `luminous train-layouts` "
                         "(default: the shipped model)")
     parser.add_argument("--no-physics", action="store_true", help="skip the PyBullet settling check")
+    parser.add_argument("--house", type=Path, nargs="?", const=DEFAULT_HOUSE, metavar="HOUSE.yaml",
+                        help="generate a multi-room house from a CDF with a scene.house section (alone: the "
+                        f"default house, {DEFAULT_HOUSE.relative_to(DEFAULT_HOUSE.parents[3])}); not with --cdf, "
+                        "--room or --method")
     parser.set_defaults(func=_run)
+
+
+DEFAULT_HOUSE = Path(__file__).resolve().parents[2] / "cdf" / "examples" / "houses" / "default_house.yaml"
+"""The house `--house` generates when given no file."""
 
 
 def check_room_type(room_type: str, allowed: tuple[str, ...] | list[str], room: str, cdf: Path | None) -> None:
@@ -62,6 +70,8 @@ def _check_sizes(doc, source: Path | None) -> None:
 
 
 def _run(args: argparse.Namespace) -> int:
+    if args.house is not None:
+        return _run_house(args)
     import numpy as np
     from tqdm import tqdm
 
@@ -70,6 +80,9 @@ def _run(args: argparse.Namespace) -> int:
     from luminous_sim.scene_outputs import write_scene_outputs
 
     doc = cdf_mod.load(args.cdf) if args.cdf else empty_cdf(args.room_type)
+    if doc.scene.house is not None:  # a house CDF given as --cdf: the same as --house
+        args.house, args.cdf = args.cdf, None
+        return _run_house(args)
     _check_sizes(doc, args.cdf)
     shell = None
     if args.room:
@@ -128,3 +141,36 @@ def _learned(doc, shell, seed: int, model: Path | None):
     for problem in realized.problems():
         print(f"note: seed {seed}: learned layout: {problem}")
     return realized.given.generated
+
+
+def _run_house(args: argparse.Namespace) -> int:
+    """`generate --house`: one house per seed, with the same files as a room."""
+    from tqdm import tqdm
+
+    from luminous_sim import cdf as cdf_mod
+    from luminous_sim.cssg import generate_house
+    from luminous_sim.scene_outputs import write_scene_outputs
+
+    clashes = [flag for flag, given in (("--cdf", args.cdf), ("--room", args.room),
+                                        ("--method", args.method != "cssg" or args.baseline)) if given]
+    if clashes:
+        raise CDFError(f"--house takes no {', '.join(clashes)}: a house's CDF gives its rooms, and CSSG furnishes them")
+    doc = cdf_mod.load(args.house)
+    if doc.scene.house is None:
+        raise CDFError(f"{args.house}: scene.house is not set; expected a house (scene.house.rooms, ...), e.g. "
+                       f"{DEFAULT_HOUSE.name}")
+    failures = 0
+    for k in tqdm(range(args.count), desc="houses", unit="house", disable=args.count == 1):
+        seed = args.seed + k
+        generated = generate_house(doc, seed=seed)
+        sub = args.out if args.count == 1 else args.out / f"scene_{seed:05d}"
+        report = write_scene_outputs(generated, sub, physics=not args.no_physics)
+        ok = report["layout"]["ok"] and report.get("physics", {}).get("ok", True)
+        failures += not ok
+        if args.count == 1:
+            rooms = ", ".join(f"{r.name} ({r.room_type})" for r in generated.plan.shell.house.rooms)  # type: ignore[union-attr]
+            print(f"wrote {sub}/scene.json ({len(generated.scene.objects)} objects, house {generated.scene.room.name}: "
+                  f"{rooms}), report.json (valid: {ok}), top_down.png, egocentric.png")
+    if args.count > 1:
+        print(f"wrote {args.count} houses under {args.out} ({args.count - failures} fully valid)")
+    return 0

@@ -12,6 +12,7 @@ Typical use::
 
 from luminous_sim.cssg.baseline import empty_cdf, generate_uniform, sample_uniform
 from luminous_sim.cssg.given import GivenScene, Placement, Repair, place_given
+from luminous_sim.cssg.house import HouseGenerated, HouseReport, generate_house
 from luminous_sim.cssg.pipeline import ATTEMPTS, Generated, choose_room, generate, sample_layout, start_outside
 from luminous_sim.cssg.structure import structure_scene
 from luminous_sim.cssg.validate import LayoutReport, RelationCheck, check_layout
@@ -20,6 +21,8 @@ __all__ = [
     "ATTEMPTS",
     "Generated",
     "GivenScene",
+    "HouseGenerated",
+    "HouseReport",
     "LayoutReport",
     "Placement",
     "RelationCheck",
@@ -28,6 +31,7 @@ __all__ = [
     "choose_room",
     "empty_cdf",
     "generate",
+    "generate_house",
     "generate_uniform",
     "place_given",
     "sample_layout",

@@ -5,6 +5,7 @@ shelf)."""
 
 from __future__ import annotations
 
+import zlib
 from functools import partial
 
 import numpy as np
@@ -19,11 +20,14 @@ from luminous_sim.scene import (
     Shade,
     View,
     blocks_agent,
+    edge_slides,
     fits,
     hang_pose,
+    hanger_back,
     region_spots,
     rotate,
     sample_in_region,
+    scan_region,
     shades,
 )
 from luminous_sim.vocab import HANGERS, abilities
@@ -164,9 +168,7 @@ def place_object(draft: SceneDraft, req: Request, by_name: dict[str, str],
         hanging = spot.host.type in HANGERS
         if hanging:
             host = next(p for p in draft.placed if p.obj.id == spot.host.id)
-            region = next(r for r in host.entry.regions if r["name"] == spot.name)
-            back = region["center"][1] + host.entry.link_origins[region["link"]][1] - host.entry.bbox_min[1]
-            got = None if occupied[key] else hang_pose(entry, spot, host_back=back)
+            got = None if occupied[key] else hang_pose(entry, spot, host_back=hanger_back(host.entry, spot.name))
             if got is not None and clashes(draft, entry, got[0], got[1], got[3], got[2] + entry.bbox_min[2],
                                            ignore=spot.host.id):
                 got = None  # a towel hanging down into what stands below its holder
@@ -183,3 +185,68 @@ def place_object(draft: SceneDraft, req: Request, by_name: dict[str, str],
         by_name[req.name] = obj.id
         return True
     return False
+
+
+def _held_entry(draft: SceneDraft, object_type: str, by_name: dict[str, str], requests: list[Request]):
+    """The asset a put will bring of `object_type`: the CDF's own object of that type where it is placed
+    already, else the variant with the largest footprint (so that whichever is drawn fits)."""
+    ids = {by_name[r.name] for r in requests if r.type == object_type and r.name in by_name}
+    placed = next((p.entry for p in draft.placed if p.obj.id in ids), None)
+    if placed is not None:
+        return placed
+    variants = draft.catalog.of_type(object_type)
+    return max(variants, key=lambda e: e.dims[0] * e.dims[1]) if variants else None
+
+
+def reserve_for_goal(draft: SceneDraft, requests: list[Request], by_name: dict[str, str],
+                     occupied: dict[tuple[str, str], list[Polygon]]) -> list[tuple[str, str]]:
+    """Keep room in each receptacle the CDF's goal puts things in (`Request.goal_puts`) before the room's
+    default objects fill it: the footprints of as many of the put things as the goal puts there, side by
+    side in one region where the agent sees them (hung, on a hanger), are marked taken. A receptacle with
+    no such room is left as it is. Draws come from a stream of their own (the sample's is not touched).
+    Returns the (host id, region) pairs reserved."""
+    done = []
+    for req in requests:
+        if not req.goal_puts or req.name not in by_name:
+            continue
+        hosts = draft.referents(by_name[req.name])
+        for object_type, count in sorted(req.goal_puts.items()):
+            entry = _held_entry(draft, object_type, by_name, requests)
+            if entry is None:
+                continue
+            rng = np.random.default_rng(zlib.crc32(f"{req.name}:{object_type}".encode()))
+            spots = _eligible(draft, entry, hosts, None)
+            for i in rng.permutation(len(spots)):
+                spot = spots[int(i)]
+                key = (spot.host.id, spot.name)
+                taken = occupied.get(key)
+                if taken is None:
+                    taken = [p.footprint for p in draft.placed if p.obj.parent == spot.host.id]
+                kept = _reserve_in(draft, entry, spot, taken, count, rng)
+                if kept:
+                    occupied[key] = taken + kept
+                    done.append(key)
+                    break
+    return done
+
+
+def _reserve_in(draft: SceneDraft, entry, spot: RegionSpot, taken: list[Polygon], count: int,
+                rng: np.random.Generator) -> list[Polygon]:
+    """Footprints for `count` of `entry` in the spot beside what is `taken` (one, hung, on a free hanger);
+    [] when they do not all fit."""
+    if spot.host.type in HANGERS:
+        host = next(p for p in draft.placed if p.obj.id == spot.host.id)
+        return [] if taken else [hang_pose(entry, spot, host_back=hanger_back(host.entry, spot.name))[4]]
+    kept: list[Polygon] = []
+    accept = partial(_sees, _view(draft, spot), _heights(spot, entry.dims[2]))
+    for _ in range(count):
+        got = sample_in_region(entry, spot, rng, taken + kept, tries=40, accept=accept)
+        if got is None:
+            got = next(scan_region(entry, spot, taken + kept, accept=accept), None)
+        if got is None:
+            return []
+        if count > 1:  # against an edge, leaving room beside it for the next
+            got = next((c for c in edge_slides(got, spot) if not any(c[4].intersects(o) for o in taken + kept)
+                        and accept(np.array(c[4].centroid.coords[0]))), got)
+        kept.append(got[4])
+    return kept

@@ -18,13 +18,13 @@ from luminous_sim.cssg.attributes import check_sizes
 from luminous_sim.cssg.draft import SceneDraft
 from luminous_sim.cssg.floor_objects import may_lie_on_floor, place_on_floor, wants_floor
 from luminous_sim.cssg.furniture import FloorContext, hard_relations_met, place_piece, register
-from luminous_sim.cssg.objects import place_object
+from luminous_sim.cssg.objects import place_object, reserve_for_goal
 from luminous_sim.cssg.requests import Request, requests_from_cdf
 from luminous_sim.cssg.structure import fixture_types, place_fixtures
 from luminous_sim.cssg.tables import generation_layer
 from luminous_sim.cssg.validate import LayoutReport, check_layout, named, relation_checks
 from luminous_sim.cssg.walls import place_wall_piece
-from luminous_sim.errors import InfeasibleSceneError
+from luminous_sim.errors import CDFError, InfeasibleSceneError
 from luminous_sim.rooms.shell import RoomShell
 from luminous_sim.scene import Scene
 
@@ -222,9 +222,13 @@ def sample_layout(cdf: ChallengeDefinition, shell: RoomShell, rng: np.random.Gen
     bound: set[str] = set()
     backtracks = 0
     undo_floor = _undo_floors(requests)
+    reserved: int | None = None  # where room was kept for the goal's puts (before the room's own objects)
     i = 0
     while i < len(requests):
         req = requests[i]
+        if req.layer == "object" and not req.explicit and reserved is None:
+            reserve_for_goal(draft, requests, by_name, occupied)
+            reserved = i
         if req.layer in ("furniture", "fixture"):
             checkpoints[req.name] = _save(i, draft, ctx, bound, by_name, occupied, unplaced)
         ok = _place(draft, ctx, req, by_name, occupied, bound)
@@ -235,6 +239,8 @@ def sample_layout(cdf: ChallengeDefinition, shell: RoomShell, rng: np.random.Gen
             if anchors:
                 cp = checkpoints[anchors[0]]
                 _restore(cp, draft, ctx, bound, by_name, occupied, unplaced)
+                if reserved is not None and cp.index <= reserved:
+                    reserved = None
                 backtracks += 1
                 i = cp.index
                 continue
@@ -282,9 +288,13 @@ def _fails_for_good(req: Request, draft: SceneDraft, ctx: FloorContext, unplaced
 def generate(cdf: ChallengeDefinition, seed: int = 0, room: RoomShell | None = None,
              catalog: Catalog | None = None, attempts: int = ATTEMPTS) -> Generated:
     """Sample layouts until one passes validation; the same inputs give the same scene, byte for byte."""
+    if cdf.scene.house is not None:
+        raise CDFError(f"CDF {cdf.name or ''}: scene.house describes a house of several rooms; expected "
+                       "cssg.generate_house for it (generate makes one room)")
     catalog = catalog or default_catalog()
     check_sizes(cdf, catalog)
     failures: Counter[str] = Counter()
+    unplaced: set[str] = set()
     shell = room
     for attempt in range(attempts):
         rng = np.random.default_rng(np.random.SeedSequence([seed, attempt]))
@@ -301,7 +311,9 @@ def generate(cdf: ChallengeDefinition, seed: int = 0, room: RoomShell | None = N
             return Generated(scene, report)
         failures.update(report.failed_relations())
         failures.update(f"{n} could not be placed" for n in report.unplaced if n in report.required)
+        unplaced.update(n for n in report.unplaced if n in report.required)
         failures.update(f"{o} is out of the agent's reach" for o in report.unreachable)
         failures.update(f"{a} overlaps {b}" for a, b in report.overlaps)
     worst = "; ".join(f"{k} ({v}/{attempts})" for k, v in failures.most_common(6)) or "no valid sample"
-    raise InfeasibleSceneError(f"CDF {cdf.name or ''!s}: no valid layout in {attempts} samples: {worst}")
+    raise InfeasibleSceneError(f"CDF {cdf.name or ''!s}: no valid layout in {attempts} samples: {worst}",
+                               unplaced=tuple(sorted(unplaced)))

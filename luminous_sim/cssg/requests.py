@@ -12,10 +12,12 @@ import networkx as nx
 import numpy as np
 
 from luminous_sim.cdf.graph import oriented_relations, resolve_order
+from luminous_sim.cdf.predicates import atoms, is_variable
 from luminous_sim.cdf.relations import STRUCTURE_ELEMENTS
 from luminous_sim.cdf.schema import ChallengeDefinition
 from luminous_sim.cssg.tables import generation_layer, needs, object_hosts, placement, room_defaults, supports_for
-from luminous_sim.vocab import room_objects
+from luminous_sim.scene import can_hold
+from luminous_sim.vocab import HANGERS, room_objects
 
 
 @cache
@@ -52,10 +54,18 @@ class Request:
     """Half-width (m) of a wall piece the CDF hangs above this one (0: none): no window behind it there."""
     tag: str | None = None
     """The variant tag a rule asks for (a chair at a counter: "bar_stool"); None: only untagged-by-rule variants."""
+    holds: dict[str, int] = field(default_factory=dict)
+    """Object type -> how many the CDF puts in or on this receptacle at once (`put_holds`)."""
+    goal_puts: dict[str, int] = field(default_factory=dict)
+    """Object type -> how many the CDF's goal puts in or on this receptacle at once (`goal_holds`): room
+    kept for them before the room's default objects are placed."""
 
     def variants(self, catalog) -> list:
         """The asset variants this request may use, filtered and scaled by its attributes: those with the rule's
-        variant tag it asks for, else those without any rule's tag (no bar stool at a dining table)."""
+        variant tag it asks for, else those without any rule's tag (no bar stool at a dining table); and, of a
+        receptacle the goal puts things in, those that can hold them (`can_hold`): every variant of each
+        thing where some such host variant exists, else some variant of it, else any host variant (the
+        feasibility checks after generation then say no)."""
         from luminous_sim.cssg.attributes import candidates
 
         pool = catalog.of_type(self.type)
@@ -65,7 +75,16 @@ class Request:
             pool = [e for e in pool if self.tag in e.tags] or pool
         else:
             pool = [e for e in pool if not set(e.tags) & rule_tags()] or pool
-        return candidates(pool, self.attributes)
+        pool = candidates(pool, self.attributes)
+        if not self.holds or self.type in HANGERS:
+            return pool
+        things = {t: catalog.of_type(t) for t in self.holds}
+        for every in (all, any):
+            kept = [e for e in pool if all(every(can_hold(e, v, n) for v in things[t])
+                                           for t, n in self.holds.items() if things[t])]
+            if kept:
+                return kept
+        return pool
 
     def colour(self, where: str = "") -> tuple[float, float, float] | None:
         from luminous_sim.cssg.attributes import parse_colour
@@ -130,10 +149,62 @@ def requests_from_cdf(cdf: ChallengeDefinition, room_type: str, rng: np.random.G
         for rel in r.rels:
             if rel.relation == "above" and rel.anchor in reqs:
                 reqs[rel.anchor].clear_above = max(reqs[rel.anchor].clear_above, width / 2)
+    for name, holds in put_holds(cdf).items():
+        for iname in inst[name]:
+            reqs[iname].holds = dict(holds)
+    for name, holds in goal_holds(cdf).items():
+        for iname in inst[name]:
+            reqs[iname].goal_puts = dict(holds)
     if defaults:
         _add_defaults(reqs, room_type, rng, area, fixtures)
     _add_implicit(reqs, room_type, fixtures)
     return _ordered(reqs)
+
+
+PUT_PREDICATES = ("inReceptacle",)
+"""Goal predicates that put their first argument in or on their second (a receptacle of the room)."""
+
+
+def goal_holds(cdf: ChallengeDefinition) -> dict[str, dict[str, int]]:
+    """CDF object name -> {object type: count} that the CDF's task goal puts in or on it at once: the
+    receptacle must leave room for the task's put. A goal variable of a receptacle type stands for every
+    CDF object of that type; two distinct variables put in one receptacle count two (ALFRED's
+    pick_two_obj_and_place)."""
+    if cdf.task is None:
+        return {}
+    specs = {o.name: o for o in cdf.scene.objects}
+    puts: dict[str, dict[str, set[str]]] = {}
+    for atom, scope in atoms(cdf.task.goal):
+        if atom.pred not in PUT_PREDICATES or len(atom.args) != 2:
+            continue
+        what, where = atom.args
+        thing = scope.get(what) if is_variable(what) else (specs[what].type if what in specs else None)
+        if not thing:
+            continue
+        if is_variable(where):
+            hosts = [o.name for o in cdf.scene.objects if o.type == scope.get(where)]
+        else:
+            hosts = [where] if where in specs else []
+        for host in hosts:
+            puts.setdefault(host, {}).setdefault(thing, set()).add(what)
+    return {host: {t: len(args) for t, args in things.items()} for host, things in puts.items()}
+
+
+def put_holds(cdf: ChallengeDefinition) -> dict[str, dict[str, int]]:
+    """CDF object name -> {object type: count} that must fit in or on it at once: what the CDF's `on`
+    and `in` relations put there (two boxes on one table), or what its goal puts there (`goal_holds`),
+    whichever is more."""
+    specs = {o.name: o for o in cdf.scene.objects}
+    out: dict[str, dict[str, int]] = {}
+    for r in cdf.scene.relations:
+        if r.relation in ("on", "in") and r.subject in specs and r.target in specs:
+            held = out.setdefault(r.target, {})
+            held[specs[r.subject].type] = held.get(specs[r.subject].type, 0) + specs[r.subject].count
+    for host, things in goal_holds(cdf).items():
+        held = out.setdefault(host, {})
+        for t, n in things.items():
+            held[t] = max(held.get(t, 0), n)
+    return out
 
 
 def _layer(object_type: str, declared: str | None, room_type: str) -> str:

@@ -1,8 +1,9 @@
 """Layer L5: data production on top of the generator and the task layer: task-driven generation (a room
 generated so that a task of a given type is feasible in it and fits physically), export of a solved episode
 in ALFRED's json_2.1.0 layout, the ALFRED task parser (traj_data.json -> CDF) with the per-floor-plan
-merge and its coverage report, and dataset builds (S+/U+ splits, method (a)) that resume after a kill and
-run on local worker processes or a Ray cluster through a small reusable backend interface,
+merge and its coverage report, and dataset builds (S+/U+ splits, method (a); a user's ALFRED split
+re-solved design by design, method (b)) that resume after a kill and run on local worker processes or a
+Ray cluster through a small reusable backend interface,
 and oracle demonstrations of a registered env as a Minari dataset (offline RL; needs the `minari` extra,
 imported only when `export_minari` runs).
 
@@ -19,9 +20,11 @@ Typical use::
     from luminous_sim.data import build_split, make_backend
     with make_backend("local", workers=2) as backend:
         report = build_split(Path("out/splus"), "S+", 100, backend)
+        report_b = build_from_alfred(Path("out/valid_seen"), Path("alfred/valid_seen"), backend=backend)
     print(report.summary())
 """
 
+from luminous_sim.data.alfred_build import DesignJob, build_from_alfred, design_jobs
 from luminous_sim.data.alfred_designs import (
     AlfredDesign,
     DesignError,
@@ -75,6 +78,7 @@ __all__ = [
     "BuildReport",
     "CoverageReport",
     "DesignError",
+    "DesignJob",
     "DesignResult",
     "ExportError",
     "Job",
@@ -94,9 +98,11 @@ __all__ = [
     "Structure",
     "alfred_traj_data",
     "build",
+    "build_from_alfred",
     "build_split",
     "clear_for_put",
     "default_minari_id",
+    "design_jobs",
     "design_scene",
     "design_task",
     "export_alfred",

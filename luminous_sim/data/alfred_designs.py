@@ -17,6 +17,7 @@ from typing import Any
 import numpy as np
 
 from luminous_sim.assets.catalog import Catalog
+from luminous_sim.cdf import ChallengeDefinition
 from luminous_sim.errors import InfeasibleSceneError, LuminousError
 from luminous_sim.scene import Scene
 from luminous_sim.tasks import (
@@ -89,6 +90,10 @@ def read_design(path: str | Path) -> AlfredDesign:
         raise DesignError(f"{path}: {exc}") from exc
     if not isinstance(scene_num, int) or floor_plan != f"FloorPlan{scene_num}":
         raise DesignError(f"{path}: scene.floor_plan {floor_plan!r} does not match scene.scene_num {scene_num!r}")
+    from luminous_sim.vocab import ALFRED_TASK_TYPES
+
+    if task_type not in ALFRED_TASK_TYPES:
+        raise DesignError(f"{path}: task_type {task_type!r} is not one of ALFRED's: {', '.join(ALFRED_TASK_TYPES)}")
     return AlfredDesign(str(task_type), params, floor_plan, scene_num, path)
 
 
@@ -96,9 +101,14 @@ def read_designs(split_dir: str | Path) -> list[AlfredDesign]:
     """Every design of an ALFRED split folder (`<task dir>/<trial>/traj_data.json`), in path order.
 
     Raises:
-        DesignError: the folder holds no traj_data.json, or one is malformed.
+        DesignError: the folder is missing or holds no traj_data.json, or one is malformed.
     """
-    paths = sorted(Path(split_dir).glob("*/*/traj_data.json"))
+    split_dir = Path(split_dir)
+    if not split_dir.exists():
+        raise DesignError(f"{split_dir}: no such ALFRED split folder")
+    if not split_dir.is_dir():
+        raise DesignError(f"{split_dir}: not a folder (an ALFRED split is a folder of <task>/<trial>/traj_data.json)")
+    paths = sorted(split_dir.glob("*/*/traj_data.json"))
     if not paths:
         raise DesignError(f"{split_dir}: no <task>/<trial>/traj_data.json files")
     return [read_design(p) for p in paths]
@@ -118,8 +128,10 @@ def scene_misfit(scene: Scene, design: AlfredDesign, catalog: Catalog | None = N
     """(cause, message) when the design's task is not a fair task in `scene`, else None.
 
     Causes: `goal_at_start` (the goal already holds), `infeasible` (an object or receptacle missing or
-    seen from no reachable pose), `no_room` (no free, stable spot for the put within reach). The world
-    is built as an episode builds it (for cleaning, everything dirtyable is dirty).
+    seen from no reachable pose), `no_room` (no free, stable spot for the put within reach), `no_pose`
+    (too few of a type the task needs are in the agent's picture from any pose the oracle would walk to:
+    a potato a sight line grazes past the coffee machine in front of it). The world is built as an
+    episode builds it (for cleaning, everything dirtyable is dirty).
     """
     from luminous_sim.episode import prepared_world
     from luminous_sim.planning import physically_feasible, unseeable
@@ -143,9 +155,33 @@ def scene_misfit(scene: Scene, design: AlfredDesign, catalog: Catalog | None = N
         two = design.task_type == "pick_two_obj_and_place"
         if not physically_feasible(view, design.params, hidden, two=two):
             return "no_room", f"{design.name}: no free, stable spot for the put within reach"
+        unposed = _unposed(view, design, hidden)
+        if unposed:
+            return "no_pose", f"{design.name}: no pose from which enough of {unposed} are seen within reach"
         return None
     finally:
         world.close()
+
+
+def _unposed(view, design: AlfredDesign, hidden: Collection[str]) -> str | None:
+    """The first object type the task needs of which fewer than it needs have an interaction pose (the
+    oracle's own test: seen in the rendered picture from a pose on the grid; for a thing in a closed
+    container, the container), or None."""
+    from luminous_sim.states import enclosing_closed
+    from luminous_sim.tasks import required_objects
+
+    state = view.state
+    for object_type, count in required_objects(design.task_type, design.params):
+        ids = [i for i in state.of_type(object_type) if i not in hidden]
+        posed = 0
+        for i in ids:
+            if view.interaction_pose(enclosing_closed(state, i) or i) is not None:
+                posed += 1
+                if posed >= count:
+                    break
+        if posed < count:
+            return object_type
+    return None
 
 
 def clear_for_put(scene: Scene, params: PddlParams, declared: Collection[str]) -> Scene | None:
@@ -191,11 +227,13 @@ def design_scene(design: AlfredDesign, seed: int, catalog: Catalog | None = None
         raise NoDesignScene(f"{design.name}: {exc}", "no_cdf") from exc
     room = load_room(design.floor_plan)
     causes: list[tuple[str, str]] = []
+    avoid: set[str] = set()
     for layout_seed in _layout_seeds(seed, tries):
         try:
             scene = generate(cdf, seed=layout_seed, room=room, catalog=catalog).scene
         except InfeasibleSceneError as exc:
             causes.append(("no_layout", str(exc)))
+            cdf, avoid = _without_surfaces(cdf, design, avoid, exc.unplaced)
             continue
         why = scene_misfit(scene, design, catalog)
         if why is not None and why[0] == "no_room":
@@ -207,6 +245,25 @@ def design_scene(design: AlfredDesign, seed: int, catalog: Catalog | None = None
         causes.append(why)
     shown = "; ".join(f"[{c}] {m}" for c, m in causes[:3])
     raise NoDesignScene(f"{design.name} (seed {seed}): no scene in {len(causes)} layouts: {shown}", causes[-1][0])
+
+
+def _without_surfaces(cdf: ChallengeDefinition, design: AlfredDesign, avoid: set[str],
+                      unplaced: Collection[str]) -> tuple[ChallengeDefinition, set[str]]:
+    """The design's CDF with its things starting elsewhere than on the surfaces that could not be placed
+    (a dining table in a small U-shaped kitchen) or that what stands on them could not be placed on (a
+    microwave on counters full of burners and sink), and the surface types now avoided; the same CDF when
+    there is no such surface."""
+    names = {n.split("#")[0] for n in unplaced}
+    types = {o.name: o.type for o in cdf.scene.objects}
+    surfaces = {types[r.target] for r in cdf.scene.relations
+                if r.relation == "on" and r.target in types and (r.target in names or r.subject in names)}
+    surfaces -= {design.params.parent_target, design.params.mrecep_target, design.params.toggle_target}
+    if not surfaces - avoid:
+        return cdf, avoid
+    try:
+        return cdf_for_task(design.task_type, design.params, design.room_type, avoid | surfaces), avoid | surfaces
+    except TaskError:
+        return cdf, avoid
 
 
 @dataclass(frozen=True)

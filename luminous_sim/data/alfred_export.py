@@ -17,12 +17,14 @@ import io
 import json
 import math
 import re
+from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
 from luminous_sim.assets.objio import write_atomic
 from luminous_sim.episode import EpisodeRecord, write_video
 from luminous_sim.errors import LuminousError
+from luminous_sim.planning import Trajectory
 from luminous_sim.scene import Scene
 from luminous_sim.scene.ids import type_of_id
 from luminous_sim.vocab import abilities
@@ -175,12 +177,21 @@ def _task_id(seed: int) -> str:
     return f"trial_T20000101_{(seed // 1_000_000) % 1_000_000:06d}_{seed % 1_000_000:06d}"
 
 
+def first_cause(traj: Trajectory) -> str:
+    """Why a trajectory failed: its first failed attempt's message (later ones often only echo it after a
+    replan), or that the goal was left unmet when no attempt failed."""
+    if traj.failures:
+        return traj.failures[0]
+    done, total = traj.goal_conditions
+    return f"the goal is not met at the end: {done} of {total} goal conditions hold"
+
+
 def alfred_traj_data(scene: Scene, record: EpisodeRecord, seed: int,
                      task_id: str | None = None) -> tuple[dict[str, Any], list[int]]:
     """The traj_data.json content of a solved episode, and the map from our high_idx to ALFRED's."""
     traj, task = record.trajectory, record.task
     if not traj.success:
-        raise ExportError(f"only solved episodes are exported (this one failed: {traj.failure})")
+        raise ExportError(f"only solved episodes are exported (this one failed: {first_cause(traj)})")
     coords = _Coordinates(scene)
     ours = [h for h in traj.high_pddl if h["planner_action"]["action"] != "End"]
     fold = fold_subgoals([h["planner_action"]["action"] for h in ours])
@@ -247,9 +258,10 @@ def _jpeg(frame) -> bytes:
 
 
 def export_alfred(out_root: Path, scene: Scene, record: EpisodeRecord, seed: int, task_id: str | None = None,
-                  video: bool = False) -> Path:
+                  video: bool = False, sidecar: Mapping[str, Any] | None = None) -> Path:
     """Write a solved episode (`run_episode(scene, task_type, seed, return_record=True)`) under `out_root`
-    in ALFRED's layout and return its trial folder.
+    in ALFRED's layout and return its trial folder. `sidecar` adds keys to (or replaces keys of) the
+    sidecar file, e.g. how to regenerate an episode that `run_episode` did not make.
 
     Raises:
         ExportError: the episode failed, or its plan has no ALFRED subgoal.
@@ -277,6 +289,7 @@ def export_alfred(out_root: Path, scene: Scene, record: EpisodeRecord, seed: int
         "regenerate": "luminous_sim.episode.run_episode(Scene.from_json(json.dumps(scene)), "
                       "task['task_type'], seed, return_record=True)",
         "scene": json.loads(scene.to_json()),
+        **(sidecar or {}),
     }
     write_atomic(trial / SIDECAR, json.dumps(sidecar, sort_keys=True, indent=1) + "\n")
     return trial

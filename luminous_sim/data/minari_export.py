@@ -57,7 +57,7 @@ class MinariExport:
 
 
 def default_minari_id(env_id: str) -> str:
-    """`luminous/<env id without "Luminous-">/oracle-v0`, e.g. `luminous/NavToObject-64-v0/oracle-v0`."""
+    """`luminous/<env id without "Luminous-">/oracle-v0`, e.g. `luminous/NavToObject-64-v1/oracle-v0`."""
     return f"luminous/{env_id.removeprefix('Luminous-')}/oracle-v0"
 
 

@@ -10,7 +10,7 @@ what a wheel holds). A test keeps the two byte-identical. A spec file looks like
     [family.kwargs]          # defaults for every id of the file
     width = 300
     [[env]]
-    id = "Luminous-ALFRED-PickHeat-v0"
+    id = "Luminous-ALFRED-PickHeat-v1"
     description = "..."
     kwargs.task_types = ["pick_heat_then_place_in_recep"]
 

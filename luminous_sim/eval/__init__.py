@@ -8,6 +8,8 @@ Typical use::
 
     from luminous_sim.eval import evaluate, write_reports
     report = evaluate("oracle", "U+", 14, workers=2)
+    with make_backend("ray", workers=2) as backend:          # from luminous_sim.data: Ray workers
+        report = evaluate("oracle", "U+", 14, backend=backend)
     print(report.overall.sr, report.per_type["pick_and_place_simple"].gc)
     write_reports(report, Path("out/eval"))
 """
@@ -24,7 +26,7 @@ from luminous_sim.eval.policies import (
     resolve_factory,
 )
 from luminous_sim.eval.report import TABLE4_ROWS, markdown_table, plot, write_reports
-from luminous_sim.eval.workers import map_local
+from luminous_sim.eval.workers import map_local, map_ordered
 
 __all__ = [
     "BUILT_IN",
@@ -41,6 +43,7 @@ __all__ = [
     "evaluate",
     "make_agent",
     "map_local",
+    "map_ordered",
     "markdown_table",
     "metrics",
     "metrics_by_type",

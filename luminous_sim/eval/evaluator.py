@@ -1,4 +1,5 @@
-"""Running a policy over episodes of a split with ALFRED's limits (1000 steps, 10 failed actions).
+"""Running a policy over episodes of a split with ALFRED's limits (1000 steps, 10 failed actions), in
+this process, local worker processes or on a Ray cluster (`data.make_backend`).
 
 Each episode is one job: the split's entry played in a `LuminousEnv` at ALFRED's camera and limits, from
 `reset(options={"split": ..., "index": ...})` until the goal holds (the env ends the episode there), the
@@ -20,11 +21,12 @@ from typing import Any
 import numpy as np
 
 from luminous_sim.assets.objio import write_atomic
+from luminous_sim.data.backends import Backend
 from luminous_sim.env import EnvConfig, EpisodeUnavailable, LuminousEnv
 from luminous_sim.errors import LuminousError
 from luminous_sim.eval.metrics import EpisodeOutcome, Metrics, metrics, metrics_by_type
 from luminous_sim.eval.policies import Agent, PolicyError, check_policy, make_agent
-from luminous_sim.eval.workers import map_local
+from luminous_sim.eval.workers import map_local, map_ordered
 from luminous_sim.splits import plus_split, split_entry
 
 EVAL_ENV: dict[str, Any] = {"width": 300, "height": 300, "max_steps": 1000, "max_failures": 10,
@@ -167,7 +169,8 @@ def _claim(out_dir: Path, run: dict[str, Any]) -> None:
 
 def evaluate(policy: str, split: str, episodes: int | Iterable[int], *, seed: int = 0, workers: int = 1,
              out_dir: Path | None = None, env_kwargs: dict[str, Any] | None = None,
-             progress: Callable[[EpisodeOutcome], None] | None = None) -> EvalReport:
+             progress: Callable[[EpisodeOutcome], None] | None = None,
+             backend: Backend | None = None) -> EvalReport:
     """Run `policy` (`oracle`, `random` or `MODULE:CALLABLE`) on episodes of `split`.
 
     Args:
@@ -175,10 +178,13 @@ def evaluate(policy: str, split: str, episodes: int | Iterable[int], *, seed: in
         split: S+, U+ or U+test.
         episodes: a count N (entries 0 .. N-1) or the entry indices.
         seed: the agents' randomness (the episodes themselves are fixed by the split).
-        workers: local processes.
+        workers: local processes (when no `backend` is given).
         out_dir: where each outcome is written as it finishes (an interrupted run resumes there).
         env_kwargs: env options over ALFRED's (`EVAL_ENV`), e.g. `targets="objects"`.
         progress: called with each outcome, in order.
+        backend: where the episodes run instead (`data.make_backend("ray", workers, address)` for a Ray
+            cluster); the outcomes are the same whatever the backend. With Ray, a user's agent module must
+            be importable by the workers (on `PYTHONPATH`, or installed on every node).
 
     Raises:
         PolicyError, SplitError, LuminousError: a bad policy spec, split, index or env option (before any work).
@@ -199,7 +205,8 @@ def evaluate(policy: str, split: str, episodes: int | Iterable[int], *, seed: in
         _claim(out_dir, {"policy": policy, "split": split, "seed": seed, "env": config.to_kwargs()})
     jobs = [EpisodeJob(policy, split, i, seed, env_json, None if out_dir is None else str(out_dir)) for i in indices]
     outcomes = []
-    for outcome in map_local(run_job, jobs, workers):
+    runs = map_local(run_job, jobs, workers) if backend is None else map_ordered(run_job, jobs, backend)
+    for outcome in runs:
         outcomes.append(outcome)
         if progress is not None:
             progress(outcome)

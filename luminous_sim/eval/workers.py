@@ -1,8 +1,8 @@
-"""Where an evaluation's episodes run: this process, or a pool of local worker processes.
+"""Where an evaluation's episodes run: this process, a pool of local worker processes, or any backend of
+the data layer (`data.make_backend`: local processes or a Ray cluster).
 
-`map_local(fn, items, workers)` is the evaluator's one call into a backend; swapping it for another
-backend's map (e.g. Ray) with the same contract changes that one call: `fn` a picklable top-level
-function, results in the order of `items`.
+`map_local(fn, items, workers)` and `map_ordered(fn, items, backend)` have one contract: `fn` a picklable
+top-level function, results in the order of `items`, whichever worker finished first.
 """
 
 from __future__ import annotations
@@ -12,6 +12,7 @@ from collections.abc import Callable, Iterator, Sequence
 from concurrent.futures import ProcessPoolExecutor
 from typing import TypeVar
 
+from luminous_sim.data.backends import Backend
 from luminous_sim.errors import LuminousError
 
 T = TypeVar("T")
@@ -31,3 +32,22 @@ def map_local(fn: Callable[[T], R], items: Sequence[T], workers: int = 1) -> Ite
     context = multiprocessing.get_context("spawn")
     with ProcessPoolExecutor(max_workers=min(workers, len(items)), mp_context=context) as pool:
         yield from pool.map(fn, items)
+
+
+def map_ordered(fn: Callable[[T], R], items: Sequence[T], backend: Backend) -> Iterator[R]:
+    """`fn` over `items` on `backend`, yielding results in the order of `items` (each as soon as it and every
+    earlier one have finished; later results wait in memory)."""
+    waiting: dict[int, R] = {}
+    following = 0
+    for (i, _, _), result in backend.imap_unordered(_apply, [(i, fn, item) for i, item in enumerate(items)]):
+        waiting[i] = result
+        while following in waiting:
+            yield waiting.pop(following)
+            following += 1
+
+
+def _apply(job: tuple[int, Callable[[T], R], T]) -> R:
+    """`fn(item)` for an `(index, fn, item)` job (a module-level function: Ray remotes only functions, and
+    `fn`, itself top-level, travels by name)."""
+    _, fn, item = job
+    return fn(item)

@@ -7,7 +7,7 @@ already covered. ALFRED's generator drops tasks its expert fails; we rule most o
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 
 import numpy as np
 
@@ -15,7 +15,7 @@ from luminous_sim.errors import Failure
 from luminous_sim.scene import Scene
 from luminous_sim.tasks.model import PddlParams, TaskInstance
 from luminous_sim.tasks.sample import sample_task
-from luminous_sim.vocab import HANGERS, parent_type
+from luminous_sim.vocab import parent_type
 from luminous_sim.world import WorldView
 
 SPOT_SEED = 2024
@@ -40,7 +40,7 @@ def has_room(view: WorldView, object_type: str, receptacle_type: str, excluded: 
     hosts = _hosts(state, receptacle_type, full)
     if hosts is None:
         return False
-    if receptacle_type in HANGERS or not objs or not hosts:
+    if not objs or not hosts:
         return True
     rng = np.random.default_rng(SPOT_SEED)
     return any(not isinstance(view.free_spot(o, h, rng, assume_open=True), Failure)
@@ -57,7 +57,7 @@ def has_room_for_two(view: WorldView, object_type: str, receptacle_type: str, ex
     hosts = _hosts(state, receptacle_type, full)
     if hosts is None:
         return False
-    if receptacle_type in HANGERS or not hosts:
+    if not hosts:
         return True
     if not objs and state.of_type(parent_type(object_type) or ""):
         return has_room(view, object_type, receptacle_type, excluded, full)
@@ -79,13 +79,40 @@ def physically_feasible(view: WorldView, params: PddlParams, excluded: Iterable[
     """The task's object (or its movable receptacle) has room in the target receptacle (`two` of them,
     for pick_two_obj_and_place), and the object has room in its movable receptacle; receptacles a put
     already found `full` do not count."""
-    obj = params.object_target + ("Sliced" if params.object_sliced else "")
-    inner = params.mrecep_target or obj
-    if params.parent_target and not has_room(view, inner, params.parent_target, excluded, full):
-        return False
-    if two and params.parent_target and not has_room_for_two(view, inner, params.parent_target, excluded, full):
-        return False
-    return not (params.mrecep_target and not has_room(view, obj, params.mrecep_target, excluded, full))
+    return _RoomChecks(view, excluded, full).feasible(params, two)
+
+
+class _RoomChecks:
+    """`has_room` and `has_room_for_two` in one world state, each answer computed once: each check draws
+    from its own fresh stream (`SPOT_SEED`) and moves nothing, so an answer depends on its arguments alone,
+    and many candidate tasks ask the same (object type, receptacle type) question."""
+
+    def __init__(self, view: WorldView, excluded: Iterable[str], full: Iterable[str]):
+        self.view, self.excluded, self.full = view, frozenset(excluded), frozenset(full)
+        self._one: dict[tuple[str, str], bool] = {}
+        self._two: dict[tuple[str, str], bool] = {}
+
+    def room(self, object_type: str, receptacle_type: str) -> bool:
+        key = (object_type, receptacle_type)
+        if key not in self._one:
+            self._one[key] = has_room(self.view, object_type, receptacle_type, self.excluded, self.full)
+        return self._one[key]
+
+    def room_for_two(self, object_type: str, receptacle_type: str) -> bool:
+        key = (object_type, receptacle_type)
+        if key not in self._two:
+            self._two[key] = has_room_for_two(self.view, object_type, receptacle_type, self.excluded, self.full)
+        return self._two[key]
+
+    def feasible(self, params: PddlParams, two: bool) -> bool:
+        """`physically_feasible(view, params, excluded, two, full)`."""
+        obj = params.object_target + ("Sliced" if params.object_sliced else "")
+        inner = params.mrecep_target or obj
+        if params.parent_target and not self.room(inner, params.parent_target):
+            return False
+        if two and params.parent_target and not self.room_for_two(inner, params.parent_target):
+            return False
+        return not (params.mrecep_target and not self.room(obj, params.mrecep_target))
 
 
 def unseeable(view: WorldView) -> set[str]:
@@ -96,18 +123,18 @@ def unseeable(view: WorldView) -> set[str]:
 
 
 def draw_task(scene: Scene, view: WorldView, task_type: str, rng: np.random.Generator,
-              excluded: Iterable[str] = (), full: Iterable[str] = ()) -> TaskInstance:
+              excluded: Iterable[str] = (), full: Iterable[str] = (),
+              keep: Callable[[PddlParams], bool] | None = None) -> TaskInstance:
     """A feasible task of `task_type` that the world can physically support, leaving out objects no
     one can see and `excluded` ones (the oracle found no pose to see them), and putting nothing in the
-    `full` receptacles (a put found no room there). Raises TaskSamplingError when there is none."""
+    `full` receptacles (a put found no room there); `keep` filters the parameters further (e.g.
+    `tasks.rooms_apart`: object and receptacle in different rooms of a house). Raises TaskSamplingError
+    when there is none."""
     excluded = set(excluded) | unseeable(view)
-    verdict: dict[tuple, bool] = {}
+    checks = _RoomChecks(view, excluded, full)
+    two = task_type == "pick_two_obj_and_place"
 
     def fits(p: PddlParams) -> bool:
-        key = (p.object_target, p.object_sliced, p.mrecep_target, p.parent_target)
-        if key not in verdict:
-            verdict[key] = physically_feasible(view, p, excluded, two=task_type == "pick_two_obj_and_place",
-                                               full=full)
-        return verdict[key]
+        return (keep is None or keep(p)) and checks.feasible(p, two)
 
     return sample_task(scene, view.state.without(excluded), task_type, rng, keep=fits)

@@ -9,7 +9,7 @@ given, so the same seed gives the same shell, byte for byte. Sizes and probabili
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 from dataclasses import dataclass
 
 import numpy as np
@@ -226,7 +226,10 @@ def _doors(
     return doors
 
 
-def _windows(shell: RoomShell, rng: np.random.Generator, spec: RoomSpec) -> list[Window]:
+def _windows(shell: RoomShell, rng: np.random.Generator, spec: RoomSpec,
+             outside: Collection[str] | None = None) -> list[Window]:
+    """Windows drawn by the spec's counts and sizes; only on the walls in `outside` when it is given (a
+    house's room has windows on its outside walls only)."""
     count = int(rng.choice(len(spec.window_count_p), p=spec.window_count_p))
     heights = {c.id: c.height for c in shell.fixtures.counters}
     heights.update({s.id: s.height for s in shell.fixtures.slots})
@@ -248,6 +251,8 @@ def _windows(shell: RoomShell, rng: np.random.Generator, spec: RoomSpec) -> list
             continue
         opts: list[tuple[Wall, float]] = []
         for w in shell.walls:
+            if outside is not None and w.id not in outside:
+                continue
             lo, hi = margin, w.length - margin - width
             if hi < lo:
                 continue

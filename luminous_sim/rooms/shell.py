@@ -21,7 +21,16 @@ from typing import Annotated, Any, Literal
 
 import numpy as np
 import shapely
-from pydantic import AfterValidator, BaseModel, ConfigDict, Field, ValidationError, model_validator
+from pydantic import (
+    AfterValidator,
+    BaseModel,
+    ConfigDict,
+    Field,
+    SerializerFunctionWrapHandler,
+    ValidationError,
+    model_serializer,
+    model_validator,
+)
 from shapely.geometry import Polygon
 from shapely.geometry.base import BaseGeometry
 
@@ -209,8 +218,68 @@ def walls_from_outline(outline: Any) -> tuple[Wall, ...]:
     return tuple(walls)
 
 
+class HouseRoom(_Model):
+    """One room of a house: its name, type and floor outline (inside its walls, counter-clockwise)."""
+
+    name: str = Field(pattern=NAME_PATTERN)
+    room_type: RoomType
+    outline: tuple[Vec2, ...]
+
+    def polygon(self) -> Polygon:
+        return Polygon(self.outline)
+
+
+class InteriorWall(_Model):
+    """A wall inside a house, `thickness` thick about the centre line from `start` to `end`."""
+
+    id: str
+    start: Vec2
+    end: Vec2
+
+    @cached_property
+    def wall(self) -> Wall:
+        """The centre line as a Wall (its `point(u, v)` and `rect` are in metres along and across it)."""
+        n = math.dist(self.start, self.end)
+        d = ((self.end[0] - self.start[0]) / n, (self.end[1] - self.start[1]) / n)
+        return Wall(id=self.id, start=self.start, end=self.end, normal=(-d[1], d[0]))
+
+
+class HouseDoor(_Model):
+    """A doorway in an interior wall, joining two rooms; open down to the floor."""
+
+    id: str
+    wall: str
+    offset: R4 = Field(ge=0, description="start of the opening along the wall")
+    width: R4 = Field(gt=0.5, le=2.0)
+    height: R4 = Field(gt=1.5, le=3.0)
+    rooms: tuple[str, str]
+
+    @property
+    def span(self) -> tuple[float, float]:
+        return (self.offset, self.offset + self.width)
+
+
+class HousePlan(_Model):
+    """The rooms of a house, the interior walls between them and the doorways in those walls."""
+
+    rooms: tuple[HouseRoom, ...]
+    walls: tuple[InteriorWall, ...] = ()
+    doors: tuple[HouseDoor, ...] = ()
+
+    def room(self, name: str) -> HouseRoom:
+        """The room with this name."""
+        for r in self.rooms:
+            if r.name == name:
+                return r
+        raise RoomError(f"house: no room {name!r}")
+
+
 class RoomShell(_Model):
-    """A room's structure. Build it with `generate_shell`, the ALFRED converter, or a JSON file."""
+    """A room's structure. Build it with `generate_shell`, the ALFRED converter, or a JSON file.
+
+    A house is a shell too: its outline is the house's, and `house` lists its rooms, the interior walls
+    between them and their doorways (the walls and doorways are built, and kept out of the agent's grid).
+    """
 
     format: Literal["luminous-room/1"] = FORMAT
     name: str = Field(pattern=NAME_PATTERN)
@@ -225,6 +294,15 @@ class RoomShell(_Model):
     windows: tuple[Window, ...] = ()
     zones: tuple[Zone, ...] = ()
     fixtures: FixturePlan = FixturePlan()
+    house: HousePlan | None = None
+
+    @model_serializer(mode="wrap")
+    def _without_house(self, handler: SerializerFunctionWrapHandler) -> dict[str, Any]:
+        # a single room's JSON has no `house` key, so that it stays byte for byte what it was
+        data = handler(self)
+        if data.get("house", 0) is None:
+            del data["house"]
+        return data
 
     @model_validator(mode="after")
     def _check_structure(self) -> RoomShell:
@@ -282,7 +360,30 @@ class RoomShell(_Model):
         for z in self.zones:
             if len(z.polygon) < 3 or not z.shape().is_valid:
                 raise ValueError(f"zone {z.name!r} is not a simple polygon")
+        if self.house is not None:
+            self._check_house(self.house, poly)
         return self
+
+    @staticmethod
+    def _check_house(house: HousePlan, poly: Polygon) -> None:
+        names = [r.name for r in house.rooms]
+        if len(set(names)) != len(names):
+            raise ValueError("house room names must be unique")
+        for r in house.rooms:
+            shape = r.polygon()
+            if len(r.outline) < 3 or not shape.is_valid or signed_area(list(r.outline)) <= 0:
+                raise ValueError(f"house room {r.name!r}: outline is not a counter-clockwise simple polygon")
+            if not poly.buffer(1e-4).contains(shape):
+                raise ValueError(f"house room {r.name!r} reaches outside the house outline")
+        walls = {w.id: w for w in house.walls}
+        for d in house.doors:
+            if d.wall not in walls:
+                raise ValueError(f"house door {d.id!r}: unknown wall {d.wall!r}")
+            if d.offset + d.width > walls[d.wall].wall.length + 1e-4:
+                raise ValueError(f"house door {d.id!r}: span beyond the end of wall {d.wall}")
+            for name in d.rooms:
+                if name not in names:
+                    raise ValueError(f"house door {d.id!r}: unknown room {name!r}")
 
     # ----------------------------------------------------------------- geometry
 
@@ -328,12 +429,57 @@ class RoomShell(_Model):
         items = list(self.fixtures.counters) + list(self.fixtures.slots)
         return {i.id: self.footprint(i) for i in items}
 
+    @cached_property
+    def _open_floor(self) -> BaseGeometry:
+        walls = self.interior_footprints()
+        return self._polygon.difference(shapely.union_all(walls)) if walls else self._polygon
+
     def free_floor(self) -> BaseGeometry:
-        """The floor minus every fixture footprint (Polygon or MultiPolygon)."""
+        """The floor minus every fixture footprint and interior wall (Polygon or MultiPolygon)."""
         feet = list(self.fixture_footprints().values())
         if not feet:
-            return self._polygon
-        return self._polygon.difference(shapely.union_all(feet))
+            return self._open_floor
+        return self._open_floor.difference(shapely.union_all(feet))
+
+    def interior_pieces(self) -> list[tuple[InteriorWall, float, float]]:
+        """A house's interior walls as solid pieces (wall, from, to along it), doorways left out."""
+        if self.house is None:
+            return []
+        out = []
+        edge = self._polygon.exterior
+        half = self.wall_thickness / 2
+        for w in self.house.walls:
+            # an end on another interior wall stops at that wall's face, so that the two do not overlap
+            u = 0.0 if edge.distance(shapely.Point(w.start)) < 1e-6 else half
+            end = w.wall.length - (0.0 if edge.distance(shapely.Point(w.end)) < 1e-6 else half)
+            for a, b in sorted(d.span for d in self.house.doors if d.wall == w.id):
+                if a > u:
+                    out.append((w, u, a))
+                u = max(u, b)
+            if end > u:
+                out.append((w, u, end))
+        return out
+
+    def interior_footprints(self) -> list[Polygon]:
+        """Floor footprints of a house's interior walls (doorways left open); empty for a single room."""
+        t = self.wall_thickness
+        return [w.wall.rect(a, b, -t / 2, t / 2) for w, a, b in self.interior_pieces()]
+
+    @property
+    def room_types(self) -> tuple[str, ...]:
+        """The room types the shell holds: a house's rooms' types (in order, no repeats), else its own."""
+        if self.house is None:
+            return (self.room_type,)
+        return tuple(dict.fromkeys(r.room_type for r in self.house.rooms))
+
+    def room_at(self, x: float, y: float) -> str | None:
+        """The name of the house room whose floor holds (x, y) (the nearest room within 0.5 m, for a point
+        in a doorway); None for a single room or a point outside every room."""
+        if self.house is None:
+            return None
+        p = shapely.Point(x, y)
+        best = min(self.house.rooms, key=lambda r: (r.polygon().distance(p), r.name))
+        return best.name if best.polygon().distance(p) <= 0.5 else None
 
     def door_clearance_zones(self) -> list[Polygon]:
         """For each door (in order), the rectangle in front of it that must stay free."""
@@ -355,7 +501,7 @@ class RoomShell(_Model):
         Returns:
             Array of shape (N, 2), sorted by x then y.
         """
-        area = self.free_floor() if avoid_fixtures else self._polygon
+        area = self.free_floor() if avoid_fixtures else self._open_floor
         inner = area.buffer(-(clearance - 1e-6))
         if inner.is_empty:
             return np.zeros((0, 2))
@@ -419,6 +565,25 @@ class RoomShell(_Model):
                         yaw=wall.yaw,
                     )
                 )
+        return boxes + self._interior_boxes()
+
+    def _interior_boxes(self) -> list[WallBox]:
+        """A house's interior walls: solid pieces full height, a lintel over each doorway."""
+        if self.house is None:
+            return []
+        t, h = self.wall_thickness, self.wall_height
+        pieces: list[tuple[InteriorWall, str, float, float, float, float]] = [
+            (w, "solid", a, b, 0.0, h) for w, a, b in self.interior_pieces()]
+        walls = {w.id: w for w in self.house.walls}
+        pieces += [(walls[d.wall], "lintel", d.offset, d.offset + d.width, d.height, h) for d in self.house.doors]
+        boxes = []
+        for w, kind, a, b, z0, z1 in pieces:
+            if b - a < 1e-6 or z1 - z0 < 1e-6:
+                continue
+            cx, cy = w.wall.point((a + b) / 2, 0.0)
+            boxes.append(WallBox(wall=w.id, kind=kind,  # type: ignore[arg-type]
+                                 center=(round(cx, 6), round(cy, 6), round((z0 + z1) / 2, 6)),
+                                 size=(round(b - a, 6), round(t, 6), round(z1 - z0, 6)), yaw=w.wall.yaw))
         return boxes
 
     # ----------------------------------------------------------------- JSON

@@ -9,11 +9,13 @@ from itertools import pairwise
 
 import numpy as np
 import shapely
+from shapely import affinity
 from shapely.geometry import Polygon
 
 from luminous_sim.assets.catalog import AssetEntry
 from luminous_sim.scene.model import SceneObject
 from luminous_sim.scene.pose import rotate
+from luminous_sim.scene.sight import shades
 
 EDGE_INSET = 0.04
 
@@ -54,6 +56,59 @@ def fits(entry: AssetEntry, spot: RegionSpot) -> bool:
     """Whether the object could stand in the region at all (size and height)."""
     w, d, h = entry.dims
     return h <= spot.clearance + 1e-6 and min(w, d) <= min(spot.size) and max(w, d) <= max(spot.size)
+
+
+def open_tops(entry: AssetEntry) -> set[str]:
+    """Names of the vessel regions open at the top (a pan, bowl, pot, basin or garbage can: a volume with
+    no door and nothing over it): what goes in may stand out over the rim, as an apple does from a pan in
+    AI2-THOR, so their height does not limit what they take."""
+    roofs = shades(entry)
+    return {r["name"] for r in entry.regions if r["kind"] == "volume" and not r.get("requires_open")
+            and roofs[r["name"]].roof is None}
+
+
+PACK_GAP = 0.01
+"""Metres a put slid against a region's edge keeps off it."""
+
+
+def edge_slides(got: tuple, spot) -> list[tuple]:
+    """`got` (x, y, z, yaw, footprint) moved within the region to its nearest corner, then to the nearest edge
+    across the footprint's short side, then along its long side: candidates that leave the most room beside."""
+    x, y, z, yaw, fp = got
+    c, s_ = math.cos(spot.yaw), math.sin(spot.yaw)
+    pts = np.array(fp.exterior.coords) - np.array(spot.center)
+    local = np.column_stack([pts[:, 0] * c + pts[:, 1] * s_, -pts[:, 0] * s_ + pts[:, 1] * c])
+    lo, hi = local.min(axis=0), local.max(axis=0)
+    half = np.array(spot.size) / 2 - PACK_GAP
+    # per local axis, the shift to the nearer edge (0 where the footprint fills the region)
+    shift = [(half[k] - hi[k]) if abs(half[k] - hi[k]) <= abs(lo[k] + half[k]) else -(lo[k] + half[k])
+             for k in (0, 1)]
+    short = int(np.argmin(hi - lo))
+    moves = [(shift[0], shift[1]), (shift[0], 0.0) if short == 0 else (0.0, shift[1]),
+             (0.0, shift[1]) if short == 0 else (shift[0], 0.0)]
+    out = []
+    for du, dv in moves:
+        if abs(du) < 1e-4 and abs(dv) < 1e-4:
+            continue
+        dx, dy = du * c - dv * s_, du * s_ + dv * c
+        out.append((x + dx, y + dy, z, yaw, affinity.translate(fp, dx, dy)))
+    return out
+
+
+def can_hold(host: AssetEntry, thing: AssetEntry, count: int = 1) -> bool:
+    """Whether `count` of `thing` fit upright side by side in one region of `host` (a row along either
+    side, each turned either way): as tall as the region's clearance at most, unless it is open at the
+    top. A static test of sizes: what else stands there is not counted."""
+    w, d, h = thing.dims
+    tops = open_tops(host) if any(r["kind"] == "volume" for r in host.regions) else set()
+    for r in host.regions:
+        sx, sy, sz = r["size"]
+        if h > sz + 1e-6 and r["name"] not in tops:
+            continue
+        if any(count * a <= long + 1e-6 and b <= short + 1e-6
+               for a, b in ((w, d), (d, w)) for long, short in ((sx, sy), (sy, sx))):
+            return True
+    return False
 
 
 def sample_in_region(
@@ -128,8 +183,9 @@ def scan_region(entry: AssetEntry, spot: RegionSpot, occupied: list[Polygon], st
         room_x, room_y = spot.size[0] / 2 - ex, spot.size[1] / 2 - ey
         if room_x < 0 or room_y < 0:
             continue
-        us = np.arange(-math.floor(room_x / step), math.floor(room_x / step) + 1) * step
-        vs = np.arange(-math.floor(room_y / step), math.floor(room_y / step) + 1) * step
+        # the lattice, and flush against each edge (the one gap left beside a pan pushed to the other side)
+        us = np.union1d(np.arange(-math.floor(room_x / step), math.floor(room_x / step) + 1) * step, [-room_x, room_x])
+        vs = np.union1d(np.arange(-math.floor(room_y / step), math.floor(room_y / step) + 1) * step, [-room_y, room_y])
         for u in us:
             for v in vs:
                 cands.append((u * u + v * v, k, float(u), float(v)))
@@ -177,6 +233,13 @@ def _square(ring: list) -> bool:
 
 
 """Receptacles that things hang on (a bar, a ring, a spindle) rather than stand in."""
+
+
+def hanger_back(host: AssetEntry, region_name: str) -> float:
+    """How far (m) behind the centre of a hanger's region its own back (the wall it is fixed to) is: what
+    `hang_pose` clears."""
+    region = next(r for r in host.regions if r["name"] == region_name)
+    return region["center"][1] + host.link_origins[region["link"]][1] - host.bbox_min[1]
 
 
 def hang_pose(entry: AssetEntry, spot: RegionSpot, host_back: float | None = None) -> tuple[float, float, float,

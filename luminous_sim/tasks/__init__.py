@@ -40,7 +40,9 @@ from luminous_sim.tasks.evaluate import (
 from luminous_sim.tasks.initial import STATE_LITERALS, check_initial, initial_literals, scene_with_initial
 from luminous_sim.tasks.meanings import MEANINGS, PredicateMeaning
 from luminous_sim.tasks.model import PddlParams, TaskInstance
+from luminous_sim.tasks.rooms import object_rooms, rooms_apart
 from luminous_sim.tasks.sample import (
+    draw_kept,
     draw_params,
     feasible_params,
     feasible_task_types,
@@ -75,6 +77,7 @@ __all__ = [
     "closed_receptacles_goal",
     "compile_goal",
     "conjunct_progress",
+    "draw_kept",
     "draw_params",
     "feasible_params",
     "feasible_task_types",
@@ -85,10 +88,12 @@ __all__ = [
     "initial_literals",
     "matching",
     "names_from_scene",
+    "object_rooms",
     "params_from_goal",
     "params_problems",
     "parents",
     "required_objects",
+    "rooms_apart",
     "sample_task",
     "scene_with_initial",
     "state_from_scene",

@@ -4,7 +4,7 @@ a scene in which a given ALFRED task is feasible.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Collection, Mapping
 from dataclasses import replace
 from typing import Any
 
@@ -205,21 +205,17 @@ class _Doc:
 
 
 def fits_on(surface: str, object_type: str, count: int = 1) -> bool:
-    """Whether `count` of the smallest asset of `object_type` fit side by side on one region of the
-    largest asset of `surface` (True where the catalog has neither: generation will say)."""
+    """Whether `count` of some asset of `object_type` fit side by side in one region of some asset of
+    `surface` (`scene.can_hold`: in a row, upright; True where the catalog has neither: generation will
+    say). Two boxes do not fit on a side table."""
     from luminous_sim.assets.catalog import default_catalog
+    from luminous_sim.scene import can_hold
 
     catalog = default_catalog()
     things, hosts = catalog.of_type(object_type), catalog.of_type(surface)
     if not things or not hosts:
         return True
-    short, long = min((sorted(e.dims[:2]) for e in things), key=lambda d: (d[1], d[0]))
-    for host in hosts:
-        for r in host.regions:
-            w, d = sorted(r["size"][:2])
-            if short <= w and long <= d and count * short * long <= w * d:
-                return True
-    return False
+    return any(can_hold(host, thing, count) for host in hosts for thing in things)
 
 
 def _cdf_goal(goal: Expr) -> Expr:
@@ -245,14 +241,16 @@ def _strip(expr: Expr, sliced: set[str]) -> Expr:
     return _cdf_goal(expr) if not isinstance(expr, Not) else expr
 
 
-def cdf_for_task(task_type: str, params: PddlParams, room_type: str) -> ChallengeDefinition:
+def cdf_for_task(task_type: str, params: PddlParams, room_type: str,
+                 avoid: Collection[str] = ()) -> ChallengeDefinition:
     """A CDF that asks CSSG for a room of `room_type` in which the task is feasible.
 
     It declares `required_objects` under role names (`target`, `receptacle`, `mrecep`, `lamp`,
     `knife`, and the device: `microwave`, `fridge`, `basin` + `faucet`), puts the small ones on a
-    surface of the room that is not the final receptacle (so that the goal does not already hold),
-    the lamp on a side table, switched off, and, for a cleaning task, makes the object dirty where
-    it can be. The task section carries the type and ALFRED's goal.
+    surface of the room that is not the final receptacle (so that the goal does not already hold)
+    nor one of the `avoid` types (a dining table that a small kitchen has no room for), the lamp on
+    a side table, switched off, and, for a cleaning task, makes the object dirty where it can be.
+    The task section carries the type and ALFRED's goal.
 
     Raises:
         TaskError: bad parameters, or a room type ALFRED does not generate the task in.
@@ -289,11 +287,11 @@ def cdf_for_task(task_type: str, params: PddlParams, room_type: str) -> Challeng
             state["isDirty"] = True
         name = doc.add(roles.get(t, _snake(t)), t, required[t], state)
         if t == "DeskLamp":
-            doc.put_on(name, t, LAMP_TABLES)
+            doc.put_on(name, t, tuple(s for s in LAMP_TABLES if s not in avoid))
         elif abilities(t).pickupable or t in STANDS_ON:
             # the object and its movable receptacle must not start in the final receptacle
-            avoid = p.parent_target if t in (p.object_target, p.mrecep_target) else ""
-            doc.put_on(name, t, SURFACES[room_type], avoid, required[t])
+            final = p.parent_target if t in (p.object_target, p.mrecep_target) else ""
+            doc.put_on(name, t, tuple(s for s in SURFACES[room_type] if s not in avoid), final, required[t])
     goal = _cdf_goal(goal_for(params, task_type))
     obj_type = params.object_type
     data = {

@@ -32,6 +32,7 @@ from luminous_sim.tasks.types import (
 __all__ = [
     "DRAW_ORDER",
     "cdf_for_task",
+    "draw_kept",
     "draw_params",
     "feasible_params",
     "feasible_task_types",
@@ -88,11 +89,11 @@ def feasible_params(
     """
     info = task_info(task_type)
     where = f"no {task_type} task in {_where(scene)}"
-    room = scene.room.room_type
-    if room not in info.rooms:
+    rooms = scene.room.room_types
+    if not info.rooms.intersection(rooms):
         raise TaskSamplingError(
             f"{where}: ALFRED generates it only in {', '.join(sorted(info.rooms))}, "
-            f"and this is a {room}"
+            f"and this is a {' and '.join(rooms)}"
         )
     cands, why = candidates(state, task_type, sliced)
     if not cands:
@@ -128,6 +129,38 @@ def draw_params(cands: list[PddlParams], rng: np.random.Generator) -> PddlParams
     return cands[0]
 
 
+def draw_kept(cands: list[PddlParams], rng: np.random.Generator, keep: Callable[[PddlParams], bool]) -> PddlParams:
+    """`draw_params([p for p in cands if keep(p)], rng)`, asking `keep` only what the draw needs to know.
+
+    At each level of `DRAW_ORDER` the draw needs the values that some kept candidate still has; a value's
+    candidates are asked in order until one is kept, so an expensive `keep` (a physical check in a built
+    world) runs on a fraction of the candidates. `keep` must be a pure function of its argument: then the
+    draw, and `rng`'s state after it, are those of filtering everything first.
+
+    Raises:
+        TaskSamplingError: no candidate is kept; the message counts the candidates.
+    """
+    verdict: dict[int, bool] = {}
+
+    def kept(i: int) -> bool:
+        if i not in verdict:
+            verdict[i] = bool(keep(cands[i]))
+        return verdict[i]
+
+    pool = list(range(len(cands)))
+    for key in DRAW_ORDER:
+        groups: dict[object, list[int]] = {}
+        for i in pool:
+            groups.setdefault(getattr(cands[i], key), []).append(i)
+        values = sorted(v for v, members in groups.items() if any(kept(i) for i in members))  # type: ignore[type-var]
+        if not values:
+            raise TaskSamplingError(f"none of the {len(cands)} candidates passes the filter "
+                                    "(e.g. no free spot in the receptacle)")
+        pick = values[int(rng.integers(len(values)))]
+        pool = groups[pick]
+    return cands[next(i for i in pool if kept(i))]
+
+
 def sample_task(
     scene: Scene,
     state: WorldState,
@@ -147,19 +180,20 @@ def sample_task(
         rng: every draw comes from it (same seed, same task).
         sliced: force the sliced (True) or unsliced (False) variant; None lets the draw decide.
         closed_receptacles: add ALFRED's "every receptacle closed" conjunct to the goal.
-        keep: a further filter on the candidates (e.g. what the physical world can support).
+        keep: a further filter on the candidates (e.g. what the physical world can support); a pure
+            function, asked only about the candidates the draw needs (`draw_kept`).
 
     Raises:
         TaskSamplingError: no task of the type is feasible; the message says why.
     """
     cands = feasible_params(scene, state, task_type, sliced)
-    if keep is not None:
-        kept = [p for p in cands if keep(p)]
-        if not kept:
-            raise TaskSamplingError(f"no {task_type} task in {_where(scene)}: none of the {len(cands)} "
-                                    "candidates passes the filter (e.g. no free spot in the receptacle)")
-        cands = kept
-    params = draw_params(cands, rng)
+    if keep is None:
+        params = draw_params(cands, rng)
+    else:
+        try:
+            params = draw_kept(cands, rng, keep)
+        except TaskSamplingError as exc:
+            raise TaskSamplingError(f"no {task_type} task in {_where(scene)}: {exc}") from None
     task = TaskInstance(
         task_type, params, goal_for(params, task_type, closed_receptacles), scene.seed
     )

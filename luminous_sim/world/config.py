@@ -26,8 +26,11 @@ class WorldConfig:
     cull: bool = True
     """Leave object links wholly outside the camera's view out of each render (the frame is the same pixel
     for pixel; see `world.culling`)."""
+    cull_outdoors: bool = True
+    """With `cull`, also leave the outdoors (ground, sky) out of each render where no doorway or window of the
+    room shows it (see `world.portals`)."""
     structure_last: bool = True
-    """Paint the floor and walls after the objects (the same frame, less shading; see
+    """Paint the floor, walls, ceiling and outdoors after the objects (the same frame, less shading; see
     `scene_builder.paint_structure_last`)."""
 
     @property

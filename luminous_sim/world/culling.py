@@ -6,13 +6,14 @@ alpha 0 renders as fast as an empty world). So before a render each object link 
 lies wholly outside one plane of the view frustum (with a margin of `MARGIN_PX` pixels) has its visuals
 set to alpha 0, and they get their colour back right after. A culled link has no pixel in the frame, so
 the frame is the same, pixel for pixel (tests/world/test_culling.py checks RGB, depth and segmentation).
-The floor and walls are never culled. Only TinyRenderer is culled: the EGL path draws on the GPU.
+The floor, walls and ceiling are never culled; the outdoors is, when no doorway or window can show it
+(`world.portals`). Only TinyRenderer is culled: the EGL path draws on the GPU.
 """
 
 from __future__ import annotations
 
 import re
-from collections.abc import Iterator, Mapping
+from collections.abc import Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from functools import lru_cache
 from pathlib import Path
@@ -21,6 +22,7 @@ import numpy as np
 
 from luminous_sim.world.asset_loader import LoadedAsset
 from luminous_sim.world.client import BulletClient
+from luminous_sim.world.portals import OutdoorCuller, outside_view
 
 MARGIN_PX = 2.0
 """A link is culled only if its box is at least this many pixels beyond the picture's edge."""
@@ -123,13 +125,33 @@ class _BodyBoxes:
         return out
 
 
+def _view_proj(view: list[float], proj: list[float]) -> np.ndarray:
+    return np.asarray(proj, dtype=float).reshape(4, 4).T @ np.asarray(view, dtype=float).reshape(4, 4).T
+
+
+def _margin(width: int, height: int) -> tuple[float, float]:
+    return 1.0 + 2.0 * MARGIN_PX / width, 1.0 + 2.0 * MARGIN_PX / height
+
+
 class FrustumCuller:
     """Hides, for the length of one render, the object links that cannot appear in it."""
 
-    def __init__(self, client: BulletClient, objects: Mapping[str, LoadedAsset]):
+    def __init__(self, client: BulletClient, objects: Mapping[str, LoadedAsset], room: object | None = None,
+                 outdoors: Sequence[int] = ()):
+        """`objects` are culled by the view frustum; `outdoors` (bodies of axis-aligned boxes with one visual,
+        seen only through the openings of `room`, a `rooms.RoomShell`) by the view and the openings."""
         self._client = client
         self._objects = objects
         self._boxes_of: dict[int, _BodyBoxes] = {}
+        self._outdoor_bodies: list[tuple[int, list[float]]] = []
+        boxes = []
+        for body in outdoors if room is not None else ():
+            shape = client.getVisualShapeData(body)[0]
+            pos = np.array(client.getBasePositionAndOrientation(body)[0])
+            half = np.array(shape[3]) / 2
+            boxes.append((pos - half, pos + half))
+            self._outdoor_bodies.append((body, list(shape[7])))
+        self._outdoors = OutdoorCuller(room, boxes) if boxes else None
 
     def _body(self, loaded: LoadedAsset) -> _BodyBoxes:
         boxes = self._boxes_of.get(loaded.body)
@@ -162,14 +184,17 @@ class FrustumCuller:
         keys, corners = self._boxes()
         if not keys:
             return []
-        vp = np.asarray(proj, dtype=float).reshape(4, 4).T @ np.asarray(view, dtype=float).reshape(4, 4).T
-        homo = np.concatenate([corners, np.ones(corners.shape[:2] + (1,))], axis=2)
-        clip = homo @ vp.T  # (n, 8, 4)
-        x, y, z, w = clip[..., 0], clip[..., 1], clip[..., 2], clip[..., 3]
-        mx, my = 1.0 + 2.0 * MARGIN_PX / width, 1.0 + 2.0 * MARGIN_PX / height
-        out = ((x < -mx * w).all(axis=1) | (x > mx * w).all(axis=1) | (y < -my * w).all(axis=1)
-               | (y > my * w).all(axis=1) | (z < -w).all(axis=1) | (z > w).all(axis=1) | (w <= 0).all(axis=1))
+        out = outside_view(corners, _view_proj(view, proj), _margin(width, height))
         return [k for k, o in zip(keys, out, strict=True) if o]
+
+    def outdoors_hidden(self, view: list[float], proj: list[float], width: int, height: int) -> list[int]:
+        """The outdoor bodies that no doorway or window shows to this camera."""
+        if self._outdoors is None:
+            return []
+        v = np.asarray(view, dtype=float).reshape(4, 4).T
+        eye = -v[:3, :3].T @ v[:3, 3]
+        hidden = self._outdoors.hidden(eye, _view_proj(view, proj), _margin(width, height))
+        return [body for (body, _), h in zip(self._outdoor_bodies, hidden, strict=True) if h]
 
     @contextmanager
     def culled(self, view: list[float], proj: list[float], width: int, height: int) -> Iterator[int]:
@@ -179,16 +204,22 @@ class FrustumCuller:
         gets its own colour and alpha back afterwards (those already at alpha 0 stay so), the link's
         last-set visual last, as `getVisualShapeData` reports the last colour set on a link."""
         change = self._client.changeVisualShape
+        outdoors = dict(self._outdoor_bodies)
+        away = self.outdoors_hidden(view, proj, width, height)
         hidden = []
         for loaded, name in self.outside(view, proj, width, height):
             showing = [i for i in self._body(loaded).visuals.get(name, ()) if loaded.alphas[(name, i)] > 0]
             if showing:
                 hidden.append((loaded, name, showing))
         try:
+            for body in away:
+                change(body, -1, rgbaColor=[0.0, 0.0, 0.0, 0.0])
             for loaded, name, _ in hidden:
                 change(loaded.body, loaded.link_index[name], rgbaColor=[0.0, 0.0, 0.0, 0.0])
-            yield len(hidden)
+            yield len(hidden) + len(away)
         finally:
+            for body in away:
+                change(body, -1, rgbaColor=outdoors[body])
             for loaded, name, showing in hidden:
                 link = loaded.link_index[name]
                 last = loaded.last_set.get(name)  # set last again, so that PyBullet reports what it did before

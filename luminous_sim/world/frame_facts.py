@@ -22,9 +22,16 @@ def body_ids(seg: np.ndarray) -> np.ndarray:
     return np.where(seg >= 0, seg & ((1 << 24) - 1), -1)
 
 
+def body_counts(bodies: np.ndarray) -> dict[int, int]:
+    """Pixels of each body id that shows in `bodies` (background, -1, left out), in increasing id order."""
+    counts = np.bincount(bodies.ravel() + 1)[1:]
+    shown = np.flatnonzero(counts)
+    return dict(zip(shown.tolist(), counts[shown].tolist(), strict=True))
+
+
 def object_masks(bodies: np.ndarray, names: dict[int, str]) -> dict[str, np.ndarray]:
     """Boolean mask of every object (body id in `names`) that shows in `bodies`."""
-    return {names[b]: bodies == b for b in np.unique(bodies) if b in names}
+    return {names[b]: bodies == b for b in body_counts(bodies) if b in names}
 
 
 def _read_only(a: np.ndarray) -> np.ndarray:
@@ -38,6 +45,7 @@ class FrameFacts:
     def __init__(self, frame: Frame):
         self.frame = frame
         self._bodies: np.ndarray | None = None
+        self._counts: dict[int, int] | None = None
         self._masks: dict[str, np.ndarray] | None = None
         self._boxes: dict[str, list[int]] | None = None
         self._visible: dict[str, int] | None = None
@@ -49,10 +57,17 @@ class FrameFacts:
             self._bodies = _read_only(body_ids(self.frame.seg))
         return self._bodies
 
+    def counts(self) -> dict[int, int]:
+        """Pixels of each body id in this frame (a histogram: no per-object mask is made)."""
+        if self._counts is None:
+            self._counts = body_counts(self.bodies())
+        return self._counts
+
     def masks(self, names: Callable[[], dict[int, str]]) -> dict[str, np.ndarray]:
         """Object masks of this frame (read-only arrays); `names` maps body ids to object ids."""
         if self._masks is None:
-            self._masks = {oid: _read_only(m) for oid, m in object_masks(self.bodies(), names()).items()}
+            bodies, known = self.bodies(), names()
+            self._masks = {known[b]: _read_only(bodies == b) for b in self.counts() if b in known}
         return self._masks
 
     def boxes(self, names: Callable[[], dict[int, str]]) -> dict[str, list[int]]:
@@ -65,7 +80,8 @@ class FrameFacts:
                 distance: Callable[[str], float]) -> dict[str, int]:
         """Objects with at least `min_pixels` pixels and within `max_distance`, with their pixel counts."""
         if self._visible is None:
-            counts = {oid: int(m.sum()) for oid, m in self.masks(names).items()}
+            known = names()
+            counts = {known[b]: n for b, n in self.counts().items() if b in known}
             self._visible = {oid: n for oid, n in counts.items()
                              if n >= min_pixels and distance(oid) <= max_distance}
         return self._visible

@@ -11,10 +11,20 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from luminous_sim.errors import Failure, FailureCode
-from luminous_sim.scene import View, region_spots, sample_in_region, scan_region, shades
+from luminous_sim.scene import (
+    View,
+    edge_slides,
+    hang_pose,
+    hanger_back,
+    open_tops,
+    region_spots,
+    sample_in_region,
+    scan_region,
+    shades,
+)
 from luminous_sim.scene.model import SceneObject
 from luminous_sim.states.model import WorldState
-from luminous_sim.vocab import PILING_RECEPTACLES, abilities
+from luminous_sim.vocab import HANGERS, PILING_RECEPTACLES, abilities
 from luminous_sim.vocab.agent_body import CAMERA_HEIGHT
 from luminous_sim.world.asset_loader import base_link_pose
 from luminous_sim.world.client import body_aabb
@@ -42,6 +52,8 @@ def place(world: World, state: WorldState, oid: str, receptacle: str, rng: np.ra
     if isinstance(got, Failure):
         return got
     release(world, state, oid, got)
+    if type_of(state, receptacle) in HANGERS:  # it hangs there, held by the hanger, as scene generation hangs it
+        world.client.changeDynamics(world.built.objects[oid].body, -1, mass=0.0)
     return None
 
 
@@ -93,10 +105,15 @@ def find_spot(world: World, state: WorldState, oid: str, receptacle: str, rng: n
         x0, y0, x1, y1 = fp.bounds
         boxes.append(((x0, y0, z + e.bbox_min[2]), (x1, y1, z + e.bbox_max[2])))
         prints.append(fp)
-    open_top = _open_tops(loaded_r.entry)
+    if type_of(state, receptacle) in HANGERS:
+        return _hang_spot(world, entry, loaded_r.entry, spots, prints, rng) or Failure(
+            FailureCode.RECEPTACLE_FULL, f"{receptacle} is full: something already hangs on it")
+    open_top = open_tops(loaded_r.entry)
     order = _spot_order(world, spots, rng)
     # near the agent first (AI2-THOR puts things where the agent looks); then anywhere in a region it reaches:
     # the reach limit is on the receptacle, not on where in it the object lands (the bottom of a garbage can)
+    hidden = None  # a real put's first pose out of the agent's view: taken only when no region has one in view
+    last = None  # a real put's first pose in a region's back half out of reach of the eye: taken after that
     for anywhere in (False, True):
         for i in order:
             spot = spots[i]
@@ -105,17 +122,44 @@ def find_spot(world: World, state: WorldState, oid: str, receptacle: str, rng: n
             ceiling = spot.floor_z + spot.clearance
             occupied = [fp for (lo, hi), fp in zip(boxes, prints)  # only what is on this shelf
                         if lo[2] < ceiling and hi[2] > spot.floor_z - 0.01]
-            got = _sample_in_view(world, entry, spot, rng, occupied, eyes, real, host, top, anywhere,
-                                  framed=_in_frame(world) if not dry_run else None)
+            got, seen = _sample_in_view(world, entry, spot, rng, occupied, eyes, real, host, top, anywhere,
+                                        framed=_in_frame(world) if not dry_run else None)
+            if got is not None and not seen:
+                hidden = hidden or got  # a fridge's bottom shelf below the view: another shelf may be in it
+                continue
             if got is None and spot.gated and not anywhere:  # the back half too, rather than refusing
-                got = sample_in_region(entry, dc_replace(spot, gated=False), rng, occupied, tries=60)
+                whole = dc_replace(spot, gated=False)
+                got, seen = _sample_in_view(world, entry, whole, rng, occupied, eyes, real, host, top,
+                                            framed=_in_frame(world) if not dry_run else None)
+                if got is not None and not seen:
+                    hidden = hidden or got
+                    continue
+                if got is None:  # room at all: a drawer's region stays where it is closed, out of reach
+                    got = sample_in_region(entry, whole, rng, occupied, tries=60)
+                    if got is not None and real:  # a real put's last resort, after every pose within reach
+                        last = last or got
+                        continue
             if got is None and type_of(state, receptacle) in PILING_RECEPTACLES and not anywhere:
                 got = _stack_pose(entry, spot, boxes)
             if got is None and type_of(state, receptacle) in CENTRED_ON and not anywhere and not occupied:
                 got = _centred_pose(entry, spot, spot.floor_z)
             if got is not None:
                 return got[:4]
+    if hidden is not None or last is not None:
+        return (hidden or last)[:4]
     return Failure(FailureCode.RECEPTACLE_FULL, f"{receptacle} is full: no free, stable spot for {oid}")
+
+
+def _hang_spot(world: World, entry, host_entry, spots: list, prints: list, rng: np.random.Generator) -> Spot | None:
+    """A towel, a hand towel or a roll of toilet paper hangs centred on a free region of its hanger (a bar, a
+    ring, a spindle), as scene generation hangs it (`scene.hang_pose`), whatever its size: AI2-THOR snaps it
+    there. A region is free when nothing already hanging there overlaps that pose; near the agent first."""
+    for i in _spot_order(world, spots, rng):
+        spot = spots[i]
+        x, y, z, yaw, fp = hang_pose(entry, spot, host_back=hanger_back(host_entry, spot.name))
+        if not any(fp.intersects(other) and fp.intersection(other).area > 1e-6 for other in prints):
+            return x, y, z, yaw
+    return None
 
 
 def _host_now(world: World, state: WorldState, receptacle: str) -> SceneObject:
@@ -151,12 +195,14 @@ def _in_frame(world: World, margin: float = 0.9):
 
 
 def _sample_in_view(world: World, entry, spot, rng: np.random.Generator, occupied: list, eyes: np.ndarray,
-                    real: bool, host: SceneObject, top: float, anywhere: bool = False, framed=None):
+                    real: bool, host: SceneObject, top: float, anywhere: bool = False,
+                    framed=None) -> tuple[tuple | None, bool]:
     """A free pose in the region within reach of one of `eyes` ((N, 3)) and, among a few draws, one
     such an eye has a clear line to: AI2-THOR puts things where the agent can see them, not behind a
     basin's near rim where they could not be picked up again. A real put (one eye, the agent's) falls
     back on a pose out of clear view; a dry run does not. Under a shelf or table top, only where
-    scene generation's sight model sees it (its front), since the top hides the rest.
+    scene generation's sight model sees it (its front), since the top hides the rest. Returns the pose
+    (or None) and whether it is in clear view.
 
     `anywhere`: the pose need not be within reach of an eye, only the region (as AI2-THOR limits the
     distance to the receptacle, not to where the object lands in it); it must still be in sight of an
@@ -169,7 +215,7 @@ def _sample_in_view(world: World, entry, spot, rng: np.random.Generator, occupie
     if anywhere:
         eyes = eyes[_box_distances(spot, eyes, top) <= reach]
         if not len(eyes):
-            return None
+            return None, False
     shade = shades(world.built.objects[spot.host.id].entry).get(spot.name)
     view = (View(shade, host.position[:2], host.yaw, eyes[:, :2], reach=math.inf if anywhere else None)
             if shade and shade.roof else None)
@@ -190,22 +236,33 @@ def _sample_in_view(world: World, entry, spot, rng: np.random.Generator, occupie
         hits = world.client.rayTestBatch(near.tolist(), [centre.tolist()] * len(near))
         return any(h[0] == -1 for h in hits)
 
+    def packed(got):
+        """The pose slid to the nearest corner of the region, else the nearest edge across the object's short
+        side (so a second pan still fits beside the first), where that is free, reached and in clear view."""
+        for cand in edge_slides(got, spot):
+            fp = cand[4]
+            c = fp.centroid
+            if (not any(fp.intersects(o) for o in occupied) and in_reach(np.array([c.x, c.y]))
+                    and clear_view(cand)):
+                return cand
+        return got
+
     for _ in range(VIEW_TRIES):
         got = sample_in_region(entry, spot, rng, occupied, tries=60, accept=in_reach)
         if got is None:  # a tight fit (a box beside a remote) may take more draws
             continue
         first = first or (got if real else None)
         if clear_view(got):
-            return got
+            return packed(got), True
     # no random draw was in clear view (a basin's near rim hides most of it), or none found room (the gap left
     # on a crowded table): scan the region for the first few poses in clear view before settling for one that is not
     for i, got in enumerate(scan_region(entry, spot, occupied, accept=in_reach)):
         if clear_view(got):
-            return got
+            return got, True
         first = first or (got if real else None)
         if i + 1 >= SCAN_VIEW_CHECKS:
             break
-    return first
+    return first, False
 
 
 def _standing_eyes(world: World) -> np.ndarray:
@@ -270,14 +327,6 @@ def _box_distances(spot, eyes: np.ndarray, top: float) -> np.ndarray:
 def _region_distance(spot, eyes: np.ndarray, top: float) -> float:
     """Metres from the nearest of `eyes` to the region's volume (`_box_distances`)."""
     return float(np.min(_box_distances(spot, eyes, top))) if len(eyes) else math.inf
-
-
-def _open_tops(entry) -> set[str]:
-    """Names of the vessel regions open at the top (a pan, bowl, pot, basin or garbage can: a volume
-    with no door and nothing over it): what goes in may stand out over the rim, as an apple does from a
-    pan in AI2-THOR, so their height does not limit what they take."""
-    return {r["name"] for r in entry.regions if r["kind"] == "volume" and not r.get("requires_open")
-            and shades(entry)[r["name"]].roof is None}
 
 
 def _needs_open(entry, region_name: str) -> bool:

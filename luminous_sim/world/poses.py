@@ -14,7 +14,7 @@ from luminous_sim.world.client import body_aabb
 from luminous_sim.world.doors import hits_agent, swept_boxes
 
 if TYPE_CHECKING:
-    from luminous_sim.world.world import World
+    from luminous_sim.world.world import KeptFrame, World
 
 
 def candidate_poses(world: World, object_id: str, reach: float | None = None) -> list[AgentPose]:
@@ -71,7 +71,8 @@ def find_interaction_pose(world: World, object_id: str, limit: int = 80,
     held = world.interactions.held
     state = world.interactions.state.objects.get(object_id)
     sweep = swept_boxes(world, object_id) if state is not None and not state.isOpen else []
-    fallback = None
+    fallback = found = None
+    seen: dict[AgentPose, KeptFrame] = {}
     try:
         for pose in candidate_poses(world, object_id)[:limit]:
             if sweep and hits_agent(sweep, pose.x, pose.y):
@@ -83,12 +84,17 @@ def find_interaction_pose(world: World, object_id: str, limit: int = 80,
                 continue
             world.invalidate_frame()
             if object_id in world.visible_objects():
+                seen[pose] = world.frame_memo()
                 if prefer is None or prefer(pose):
-                    return pose
+                    found = pose
+                    break
                 fallback = fallback or pose
-        return fallback
+        found = found or fallback
+        return found
     finally:
         world.agent = saved
         if held is not None:
             world.interactions.carry(held)
         world.invalidate_frame()
+        if found is not None:
+            world.keep_frame(seen[found])  # the agent walks there next: its frame need not be rendered again

@@ -7,7 +7,9 @@ Used to keep objects no one can see out of sampled tasks, and to report them per
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
+import hashlib
+from collections import OrderedDict
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
@@ -22,10 +24,13 @@ if TYPE_CHECKING:
 
 OVERSHOOT = 0.3
 """Metres a sight line runs past its target point."""
-RAY_BATCH = 16384
-"""PyBullet's limit on rays per rayTestBatch call."""
+RAY_BATCH = 16383
+"""PyBullet's limit on rays per rayTestBatch call (with 16,384 it silently returns nothing)."""
 MAX_PITCH_DOWN = HORIZON_MAX + 30.0
 """Steepest downward sight line the camera can frame (the lowest horizon plus half the 60-degree fov)."""
+KEPT_ANSWERS = 16
+"""`world_unseen` answers remembered per process (a dataset build solves several tasks in one layout)."""
+_ANSWERS: OrderedDict[tuple[Any, ...], frozenset[str]] = OrderedDict()
 
 
 def sight_targets(state: WorldState) -> dict[str, str]:
@@ -44,6 +49,29 @@ def unseen(client, state: WorldState, bodies: dict[str, int], points: np.ndarray
     targets = sight_targets(state)
     seen = seeable_bodies(client, {t: bodies[t] for t in set(targets.values()) if t in bodies}, points, reach)
     return {oid for oid, t in targets.items() if not seen.get(t, False)}
+
+
+def world_unseen(world: World, state: WorldState) -> set[str]:
+    """`unseen` in a World, for the object states `state`. A world whose physics is as built (untouched,
+    see `world.restore`) has the same geometry as every world built from the same scene with the same
+    settings, so the answer is remembered by scene, settings, catalog and sight targets, and a new World
+    of that scene (the next task in the same layout) is not cast thousands of rays again."""
+    bodies = {oid: lo.body for oid, lo in world.built.objects.items()}
+    if world.client.touched:
+        return unseen(world.client, state, bodies, world.nav.points(), world.config.visibility_distance)
+    key = (world.scene_digest(), world.config, world.catalog, frozenset(sight_targets(state).items()))
+    if key not in _ANSWERS:
+        _ANSWERS[key] = frozenset(unseen(world.client, state, bodies, world.nav.points(),
+                                         world.config.visibility_distance))
+        while len(_ANSWERS) > KEPT_ANSWERS:
+            _ANSWERS.popitem(last=False)
+    _ANSWERS.move_to_end(key)
+    return set(_ANSWERS[key])
+
+
+def scene_digest(scene: Any) -> str:
+    """sha256 of a scene's JSON: equal for equal scenes."""
+    return hashlib.sha256(scene.to_json().encode()).hexdigest()
 
 
 def _targets(lo: np.ndarray, hi: np.ndarray) -> np.ndarray:

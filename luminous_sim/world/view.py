@@ -188,11 +188,9 @@ class LiveView:
         return open_container_in_view(self._world, self.state, object_id)
 
     def unseeable(self) -> set[str]:
-        from luminous_sim.world.sightlines import unseen
+        from luminous_sim.world.sightlines import world_unseen
 
-        w = self._world
-        bodies = {oid: lo.body for oid, lo in w.built.objects.items()}
-        return unseen(w.client, self.state, bodies, w.nav.points(), w.config.visibility_distance)
+        return world_unseen(self._world, self.state)
 
     def interaction_pose(self, object_id: str,
                          prefer: Callable[[AgentPose], bool] | None = None) -> AgentPose | None:

@@ -53,7 +53,24 @@ def top_down(built: BuiltScene, px_per_m: int = 90, labels: bool = True, grid: n
             draw.ellipse([x - 2, y - 2, x + 2, y + 2], fill=(40, 160, 255))
     if labels:
         _draw_labels(draw, built, view, proj, w, h)
+        _draw_room_labels(draw, built, view, proj, w, h)
     return img
+
+
+def _draw_room_labels(draw: ImageDraw.ImageDraw, built: BuiltScene, view: np.ndarray, proj: np.ndarray, w: int,
+                      h: int) -> None:
+    """A house's room names and types, on a white box near each room's lower-left corner."""
+    house = built.scene.room.house
+    if house is None:
+        return
+    font = ImageFont.load_default()
+    for room in house.rooms:
+        x0, y0, _, _ = room.polygon().bounds
+        x, y = _project(view, proj, np.array([[x0 + 0.15, y0 + 0.15, 0.0]]), w, h)[0]
+        text = f"{room.name} ({room.room_type})"
+        _, _, right, bottom = draw.textbbox((0, 0), text, font=font)
+        draw.rectangle([x, y - bottom - 4, x + right + 4, y], fill=(255, 255, 255), outline=(20, 40, 140))
+        draw.text((x + 2, y - bottom - 2), text, fill=(20, 40, 140), font=font)
 
 
 @contextmanager

@@ -8,6 +8,7 @@ it was (lastActionSuccess false, errorMessage set), as AI2-THOR does. Arguments 
 from __future__ import annotations
 
 from collections.abc import Iterable
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -27,6 +28,15 @@ from luminous_sim.world.navigation import NavGrid
 from luminous_sim.world.results import StepResult
 from luminous_sim.world.scene_builder import BuiltScene, build_scene
 from luminous_sim.world.view import LiveView, WorldView
+
+
+@dataclass(frozen=True)
+class KeptFrame:
+    """A frame with the agent pose it was rendered at and the poses of what the agent held (`World.keep_frame`)."""
+
+    pose: AgentPose
+    held: tuple[Any, ...]
+    facts: FrameFacts
 
 
 def _action_dict(action: str | dict[str, Any], kwargs: dict[str, Any]) -> dict[str, Any]:
@@ -54,9 +64,13 @@ class World:
         self.nav = NavGrid.from_scene(scene)
         self.agent = agent or self.default_start()
         self._facts: FrameFacts | None = None
+        self._kept: KeptFrame | None = None
+        self._scene_digest: str | None = None
         from luminous_sim.world.culling import FrustumCuller
 
-        self._culler = FrustumCuller(self.client, self.built.objects) if self.config.cull else None
+        room = scene.room if self.config.cull_outdoors else None
+        self._culler = FrustumCuller(self.client, self.built.objects, room, self.built.outdoors) \
+            if self.config.cull else None
         self.last = StepResult(True, "", {"action": "Initialize"})
         self.interactions = Interactions(self)
         self._view = LiveView(self)
@@ -65,6 +79,14 @@ class World:
 
         self._start = take_snapshot(self)
         self.client = WatchedClient(self.built.client)  # notes a touch of the physics (see `reset_to_start`)
+
+    def scene_digest(self) -> str:
+        """sha256 of the scene's JSON (computed once): worlds built from equal scenes share it."""
+        if self._scene_digest is None:
+            from luminous_sim.world.sightlines import scene_digest
+
+            self._scene_digest = scene_digest(self.scene)
+        return self._scene_digest
 
     def view(self) -> WorldView:
         """The world's read-only face: states, poses, visibility, reachable poses, dry-run puts."""
@@ -130,6 +152,8 @@ class World:
         act = _action_dict(action, kwargs)
         name = act["action"]
         self._started = True
+        if name not in AGENT_ACTIONS:
+            self._kept = None  # an interaction, even a failed one, may change what a kept frame shows
         before = self._facts
         try:
             known = name in AGENT_ACTIONS or name in INTERACTION_ACTIONS
@@ -149,7 +173,7 @@ class World:
             result = StepResult.fail(FailureCode.INVALID_ARGUMENT, f"invalid arguments for {name}: {shown(exc, 200)}",
                                      act)
         if result.success:
-            self.invalidate_frame()
+            self._facts = None  # not `invalidate_frame`: walking keeps a kept frame (see `keep_frame`)
         elif self._facts is not before:
             # A failed action leaves the world as it was, so the frame from before it is still the view;
             # one rendered during the action (a reach check) may show a half-done change: drop it.
@@ -185,10 +209,36 @@ class World:
     # ------------------------------------------------------------------ sensing
 
     def invalidate_frame(self) -> None:
-        """Forget the current frame and what it shows: the view may have changed (the next question renders)."""
+        """Forget the current frame and what it shows, and any kept one: the view may have changed (the next
+        question renders)."""
         self._facts = None
+        self._kept = None
+
+    def frame_memo(self) -> KeptFrame:
+        """The current frame (rendered now if need be), with the agent's pose and where what it holds is."""
+        return KeptFrame(self.agent, self._held_poses(), self._frame_facts())
+
+    def keep_frame(self, memo: KeptFrame) -> None:
+        """Keep a frame rendered at another pose, to serve when the agent gets there by walking (after a
+        search for a pose that sees an object, the agent walks to the pose it rendered). It is served only
+        while nothing but navigation happened since (`invalidate_frame` and every other action drop it)
+        and what the agent holds is exactly where it was then: the same scene from the same camera, so
+        the same frame, pixel for pixel."""
+        self._kept = memo
+
+    def _held_poses(self) -> tuple[Any, ...]:
+        held = self.interactions.held
+        if held is None:
+            return ()
+        from luminous_sim.world.hand import family
+
+        return tuple(self.client.getBasePositionAndOrientation(self.built.objects[o].body)
+                     for o in family(self, self.interactions.state, held))
 
     def _frame_facts(self) -> FrameFacts:
+        kept = self._kept
+        if self._facts is None and kept is not None and kept.pose == self.agent and kept.held == self._held_poses():
+            self._facts, self._kept = kept.facts, None
         if self._facts is None:
             pose = self.agent
             eye = np.array(pose.eye())

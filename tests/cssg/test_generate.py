@@ -62,8 +62,9 @@ def test_infeasible_cdf_names_what_failed():
         "  room: {max_area: 6}\n  objects:\n    - {name: bed, type: Bed, count: 4}\n",
         source="beds.yaml",
     )
-    with pytest.raises(InfeasibleSceneError, match=r"too_many_beds.*bed.* could not be placed"):
+    with pytest.raises(InfeasibleSceneError, match=r"too_many_beds.*bed.* could not be placed") as info:
         generate(doc, seed=0, attempts=3)
+    assert info.value.unplaced and all(n.split("#")[0] == "bed" for n in info.value.unplaced)
 
 
 def test_baseline_meets_fewer_relations_than_cssg():
@@ -286,3 +287,68 @@ def test_a_converted_bathrooms_tub_stays_clear_of_its_walls():
 
     g = generate(empty_cdf("Bathroom"), seed=4, room=load_room("FloorPlan405"))
     assert not check_physics(g.scene).interpenetrations
+
+
+def test_a_receptacle_the_goal_puts_things_in_is_a_variant_that_holds_them():
+    """The goal's puts, read off the CDF: a plunger in a cabinet (only one cabinet's shelves are tall enough),
+    two spray bottles in one garbage can (side by side). Without a goal nothing is filtered."""
+    from luminous_sim.assets.catalog import default_catalog
+    from luminous_sim.cssg.requests import goal_holds, requests_from_cdf
+    from luminous_sim.scene import can_hold
+    from luminous_sim.tasks import PddlParams, cdf_for_task
+
+    cat = default_catalog()
+    plunger = cdf_for_task("pick_and_place_simple", PddlParams("Plunger", "Cabinet"), "Bathroom")
+    assert goal_holds(plunger) == {"receptacle": {"Plunger": 1}}
+    two = cdf_for_task("pick_two_obj_and_place", PddlParams("SprayBottle", "GarbageCan"), "Bathroom")
+    assert goal_holds(two) == {"receptacle": {"SprayBottle": 2}}
+    for doc, thing, n in ((plunger, "Plunger", 1), (two, "SprayBottle", 2)):
+        (req,) = [r for r in requests_from_cdf(doc, "Bathroom", np.random.default_rng(0)) if r.name == "receptacle"]
+        kept = req.variants(cat)
+        assert kept and len(kept) < len(cat.of_type(req.type))
+        assert all(can_hold(e, v, n) for e in kept for v in cat.of_type(thing))
+    plain = cdf.loads("cdf_version: 2\nscene:\n  room_type: Bathroom\n  objects: [{name: can, type: GarbageCan}]\n")
+    assert goal_holds(plain) == {}
+    (req,) = [r for r in requests_from_cdf(plain, "Bathroom", np.random.default_rng(0), defaults=False)]
+    assert len(req.variants(cat)) == len(cat.of_type("GarbageCan"))
+
+
+def test_generation_keeps_room_for_the_goals_put_before_the_rooms_defaults():
+    """FloorPlan4's two short counters hold burners, a coffee machine, a microwave or a toaster and the room's
+    small things: a plate still has a free spot in sight on one of them (the task: a ladle on a plate on a
+    counter), where before every layout tried left none."""
+    from luminous_sim.assets.catalog import default_catalog
+    from luminous_sim.rooms import load_room
+    from luminous_sim.scene import footprint, region_spots, scan_region
+    from luminous_sim.tasks import PddlParams, cdf_for_task
+
+    doc = cdf_for_task("pick_and_place_with_movable_recep", PddlParams("Ladle", "CounterTop", mrecep_target="Plate"),
+                       "Kitchen")
+    cat = default_catalog()
+    for seed in (0, 1):
+        scene = generate(doc, seed=seed, room=load_room("FloorPlan4")).scene
+        plate = next(o for o in scene.objects if o.name == "mrecep")
+        entry = cat.for_object(plate)
+        free = 0
+        for counter in [o for o in scene.objects if o.type == "CounterTop"]:
+            on = [footprint(cat.for_object(o), o.position[0], o.position[1], o.yaw)
+                  for o in scene.objects if o.parent == counter.id]
+            free += sum(next(scan_region(entry, s, on), None) is not None
+                        for s in region_spots(counter, cat.for_object(counter)))
+        assert free, seed
+
+
+def test_the_cdfs_on_relations_choose_a_surface_variant_that_holds_what_they_put_there():
+    """Two boxes on one dining table: only dining tables with a row for two boxes are drawn."""
+    from luminous_sim.assets.catalog import default_catalog
+    from luminous_sim.cssg.requests import put_holds, requests_from_cdf
+    from luminous_sim.scene import can_hold
+
+    doc = cdf.loads("cdf_version: 2\nscene:\n  room_type: LivingRoom\n  objects:\n"
+                    "    - {name: table, type: DiningTable}\n    - {name: box, type: Box, count: 2}\n"
+                    "  relations:\n    - {subject: box, relation: on, target: table}\n")
+    assert put_holds(doc) == {"table": {"Box": 2}}
+    cat = default_catalog()
+    (table,) = [r for r in requests_from_cdf(doc, "LivingRoom", np.random.default_rng(0)) if r.name == "table"]
+    kept = table.variants(cat)
+    assert kept and all(any(can_hold(e, b, 2) for b in cat.of_type("Box")) for e in kept)

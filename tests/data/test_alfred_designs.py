@@ -30,9 +30,8 @@ SAMPLE = {  # one design per task type, quick to solve, each exercising one of t
 }
 """Each failed before its fix (reach measured to a region's floor, a pan's rim limiting what goes in it, a
 pan wider than its burner, a bat sent to a side table)."""
-FLOOR = 0.9
-"""The measured floor per task type over all of valid_seen (benchmarks/bench_alfred_designs.py, seed 0: lowest
-pick_two_obj_and_place 30/33 = 0.909; the goal of 0.95 is not reached by pick_and_place_simple and pick_two)."""
+FLOOR = 0.95
+"""The goal per task type over all of valid_seen (benchmarks/bench_alfred_designs.py, seed 0: 251/251 solved)."""
 
 
 def _design(root, task_dir: str):
@@ -114,3 +113,83 @@ def test_every_valid_seen_design_is_solved_at_the_measured_floor(shared_alfred):
     rates = {t: sum(ok) / len(ok) for t, ok in by_type.items()}
     assert len(rates) == 7
     assert all(r >= FLOOR for r in rates.values()), rates
+
+
+def test_a_plunger_goes_in_a_cabinet_whose_shelf_is_tall_enough(shared_alfred):
+    from luminous_sim.assets.catalog import default_catalog
+    from luminous_sim.scene import can_hold
+
+    design = _design(shared_alfred, "pick_and_place_simple-Plunger-None-Cabinet-406")
+    scene = design_scene(design, seed=0)
+    cat = default_catalog()
+    cabinet = next(o for o in scene.objects if o.name == "receptacle")
+    plunger = next(o for o in scene.objects if o.name == "target")
+    assert can_hold(cat.for_object(cabinet), cat.for_object(plunger))
+
+
+def test_a_roll_of_toilet_paper_is_hung_on_its_hanger_and_stays_there(shared_alfred):
+    """A put on a hanger hangs the roll on it, held there (it was refused: the roll is wider than the spindle)."""
+    import numpy as np
+
+    from luminous_sim.data.alfred_designs import design_task
+    from luminous_sim.planning import Oracle
+
+    design = _design(shared_alfred, "pick_and_place_simple-ToiletPaper-None-ToiletPaperHanger-406")
+    scene = design_scene(design, seed=0)
+    roll = next(o.id for o in scene.objects if o.name == "target")
+    hanger = next(o.id for o in scene.objects if o.name == "receptacle")
+    world = prepared_world(scene, design.task_type)
+    try:
+        traj = Oracle(world, record_frames=False).run(design_task(design).goal)
+        assert traj.success, traj.failures
+        view = world.view()
+        assert view.state.objects[roll].parent == hanger
+        before = view.pose(roll)[0]
+        for _ in range(240):
+            world.client.stepSimulation()
+        assert np.allclose(view.pose(roll)[0], before, atol=1e-3)
+    finally:
+        world.close()
+
+
+def test_a_start_surface_the_floor_plan_has_no_room_for_is_avoided(shared_alfred):
+    """FloorPlan25's U-shaped kitchen has no room for a dining table: the tomato starts elsewhere."""
+    design = _design(shared_alfred, "pick_clean_then_place_in_recep-Tomato-None-CounterTop-25")
+    scene = design_scene(design, seed=0)
+    tomato = next(o for o in scene.objects if o.name == "target")
+    assert scene.object(tomato.parent).type not in ("DiningTable", "CounterTop")
+
+
+def test_a_layout_whose_target_no_pose_sees_is_not_a_design_scene(shared_alfred):
+    """FloorPlan13, first layout: a sight line grazes the potato past the coffee machine in front of it, but
+    no pose the oracle would walk to shows it in the picture (the oracle failed there)."""
+    from luminous_sim.cssg import generate
+    from luminous_sim.data.alfred_designs import _layout_seeds
+    from luminous_sim.rooms import load_room
+    from luminous_sim.tasks import cdf_for_task
+
+    design = _design(shared_alfred, "pick_cool_then_place_in_recep-PotatoSliced-None-SinkBasin-13")
+    doc = cdf_for_task(design.task_type, design.params, design.room_type)
+    scene = generate(doc, seed=next(_layout_seeds(0, 1)), room=load_room(design.floor_plan)).scene
+    why = scene_misfit(scene, design)
+    assert why is not None and why[0] == "no_pose" and "Potato" in why[1]
+
+
+def test_a_pan_put_in_a_fridge_lands_where_it_can_be_taken_out_again(shared_alfred):
+    """The fridge's upper shelves are taken: the pan once went on its floor shelf, out of reach and view."""
+    result = solve_design(_design(shared_alfred, "pick_cool_then_place_in_recep-Pan-None-StoveBurner-23"), seed=0)
+    assert result.success, (result.cause, result.message)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("task_dir", [
+    "pick_and_place_with_movable_recep-Ladle-Plate-CounterTop-4",  # room kept on full counters
+    "pick_heat_then_place_in_recep-Mug-None-SideTable-21",  # the microwave off FloorPlan21's full counters
+    "pick_two_obj_and_place-Box-None-CoffeeTable-213",  # two boxes need a table with a row for both
+    "pick_two_obj_and_place-SprayBottle-None-GarbageCan-419",  # a can wide enough for two bottles
+    "pick_cool_then_place_in_recep-PotatoSliced-None-SinkBasin-13",
+    "pick_two_obj_and_place-Pan-None-CounterTop-14",  # the first pan put against an edge, the second beside it
+])
+def test_designs_that_failed_before_are_solved(shared_alfred, task_dir):
+    result = solve_design(_design(shared_alfred, task_dir), seed=0)
+    assert result.success, (result.cause, result.message)

@@ -134,3 +134,21 @@ def test_sidecar_alone_regenerates_the_same_files(tmp_path: Path, exported):
     again = export_alfred(tmp_path, scene, record, seed=side["seed"])
     for rel in ("traj_data.json", "luminous.json", "pddl_states/problem_0.pddl", "raw_images/000000005.jpg"):
         assert (again / rel).read_bytes() == (trial / rel).read_bytes(), rel
+
+
+def test_an_unsolved_episode_is_refused_with_its_first_cause():
+    """After a replan the last message often only echoes the first: the refusal quotes the first cause."""
+    from luminous_sim.data.alfred_export import ExportError, alfred_traj_data, first_cause
+    from luminous_sim.episode import EpisodeRecord
+    from luminous_sim.errors import Failure, FailureCode
+    from luminous_sim.planning import Trajectory
+
+    traj = Trajectory(init_action={})
+    traj.fail(Failure(FailureCode.RECEPTACLE_FULL, "PutObject failed: Hanger|1 is full"))
+    traj.fail(Failure(FailureCode.NO_PLAN, "the goal cannot be reached"))
+    assert traj.failure == "the goal cannot be reached" and first_cause(traj) == "PutObject failed: Hanger|1 is full"
+    record = EpisodeRecord(task=None, trajectory=traj, start_state=None, instructions=[])
+    with pytest.raises(ExportError, match=r"failed: PutObject failed: Hanger\|1 is full\)"):
+        alfred_traj_data(None, record, seed=0)  # type: ignore[arg-type]  # refused before the scene is read
+    unmet = Trajectory(init_action={}, goal_conditions=(1, 2))
+    assert first_cause(unmet) == "the goal is not met at the end: 1 of 2 goal conditions hold"

@@ -115,8 +115,9 @@ def _env() -> dict[str, str]:
     return {**os.environ, "PYTHONPATH": os.pathsep.join([str(REPO), os.environ.get("PYTHONPATH", "")])}
 
 
-def _kill_when(out: Path, ready, timeout: float = 300.0) -> None:
-    proc = subprocess.Popen(_cli(out), env=_env(), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+def _kill_when(out: Path, ready, timeout: float = 300.0, argv: list[str] | None = None) -> None:
+    """Start the build `argv` (default: the split build `_cli(out)`) and SIGKILL it once `ready()` holds."""
+    proc = subprocess.Popen(argv or _cli(out), env=_env(), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     deadline = time.monotonic() + timeout
     while not ready() and proc.poll() is None and time.monotonic() < deadline:
         time.sleep(0.02)
@@ -274,3 +275,26 @@ def test_a_task_type_that_does_not_fit_the_shared_layout_gets_a_room_generated_f
     traj = json.loads((outcome.trial / "traj_data.json").read_text())
     assert traj["task_type"] == "pick_two_obj_and_place"
     assert traj["scene"]["floor_plan"] == entry.floor_plan == "FloorPlan219"
+
+
+def test_a_trial_is_synced_once_by_syncfs_or_file_by_file_without_it(tmp_path, monkeypatch):
+    build_module = sys.modules["luminous_sim.data.build"]  # `luminous_sim.data.build` is also the function
+
+    trial = tmp_path / "t" / "trial_1"
+    (trial / "raw_images").mkdir(parents=True)
+    for name in ("traj_data.json", "raw_images/000000000.jpg", "raw_images/000000001.jpg"):
+        (trial / name).write_bytes(b"x")
+    fsyncs, syncs = [], []
+    real_fsync = os.fsync
+    monkeypatch.setattr(build_module.os, "fsync", lambda fd: (fsyncs.append(fd), real_fsync(fd))[1])
+    if sys.platform.startswith("linux"):
+        assert build_module._syncfs() is not None  # glibc and musl have it
+    monkeypatch.setattr(build_module, "_syncfs", lambda: lambda fd: (syncs.append(fd), 0)[1])
+    build_module._fsync_tree(trial)
+    assert len(syncs) == 1 and not fsyncs
+    monkeypatch.setattr(build_module, "_syncfs", lambda: lambda fd: -1)  # it failed: each file and folder then
+    build_module._fsync_tree(trial)
+    assert len(fsyncs) == 5
+    monkeypatch.setattr(build_module, "_syncfs", lambda: None)
+    build_module._fsync_tree(trial)
+    assert len(fsyncs) == 10

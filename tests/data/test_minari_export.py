@@ -14,7 +14,7 @@ from tests.cli.test_errors import one_line_error, run
 
 minari = pytest.importorskip("minari")
 
-NAV = "Luminous-NavToObject-64-v0"
+NAV = "Luminous-NavToObject-64-v1"
 KWARGS = {"max_steps": 60}
 
 
@@ -41,7 +41,7 @@ def test_the_cli_writes_a_dataset_minari_loads(tmp_path, capsys, monkeypatch):
                              "--env-kwarg", "max_steps=60"], capsys)
     assert code == 0, err
     dataset_id = default_minari_id(NAV)
-    assert dataset_id == "luminous/NavToObject-64-v0/oracle-v0" and "wrote 2 oracle episodes" in stdout
+    assert dataset_id == "luminous/NavToObject-64-v1/oracle-v0" and "wrote 2 oracle episodes" in stdout
     assert not out.with_name("minari.partial").exists()
 
     monkeypatch.setenv("MINARI_DATASETS_PATH", str(out))
@@ -98,10 +98,10 @@ def test_an_interrupted_export_resumes_to_the_same_dataset(tmp_path, monkeypatch
 
 def test_episodes_outside_the_discrete_space_are_left_out_and_counted(tmp_path):
     # PickUp-64, seed 0: the target of the oracle's PickupObject covers none of the 3 x 3 grid points
-    actions, _, _ = oracle_episode("Luminous-PickUp-64-v0", 0)
+    actions, _, _ = oracle_episode("Luminous-PickUp-64-v1", 0)
     assert any(isinstance(a, dict) for a in actions)  # ... so the oracle acts in ALFRED's dict form
     with pytest.raises(MinariExportError, match="targets=objects"):
-        export_minari("Luminous-PickUp-64-v0", 1, tmp_path / "ds", max_seeds=1)
+        export_minari("Luminous-PickUp-64-v1", 1, tmp_path / "ds", max_seeds=1)
 
 
 def test_bad_arguments_are_one_line_errors(tmp_path, capsys):

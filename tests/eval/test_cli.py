@@ -72,6 +72,8 @@ def test_a_users_module_in_the_current_folder(tmp_path, capsys, monkeypatch):
     (["--policy", "luminous_sim.eval.examples:nothing"], "has no 'nothing'"),
     (["--split", "U"], "argument --split: invalid choice: 'U'"),
     (["--episodes", "0"], "argument --episodes: expected a whole number from 1 to 2**63-1"),
+    (["--address", "10.0.0.1:6379"], "--address 10.0.0.1:6379 is for the ray backend, not local"),
+    (["--backend", "dask"], "argument --backend: invalid choice: 'dask'"),
 ])
 def test_bad_specs_are_one_line_errors_with_exit_2(argv, message, tmp_path, capsys):
     args = {"--policy": "random", "--split": "U+", "--episodes": "1", "--out": str(tmp_path / "o")}

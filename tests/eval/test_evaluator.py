@@ -11,7 +11,7 @@ import pytest
 
 from luminous_sim.env import EpisodeUnavailable
 from luminous_sim.errors import LuminousError
-from luminous_sim.eval import EpisodeJob, PolicyError, check_policy, evaluate, run_job, write_reports
+from luminous_sim.eval import EpisodeJob, PolicyError, check_policy, evaluate, map_ordered, run_job, write_reports
 from luminous_sim.splits import split_entry
 
 INDICES = [2, 0]
@@ -54,6 +54,29 @@ def test_random_fails_on_the_same_episodes(random_run, oracle):
 def test_same_split_index_and_seed_give_the_same_outcome(random_run):
     job = EpisodeJob("random", "U+", INDICES[0], 3, json.dumps(_eval_kwargs(), sort_keys=True))
     assert run_job(job) == random_run.outcomes[0]
+
+
+def test_ray_workers_give_the_same_outcomes_as_local_ones(random_run):
+    pytest.importorskip("ray", reason="Ray is not installed (pip install 'luminous-sim[cluster]')")
+    from luminous_sim.data import make_backend
+
+    with make_backend("ray", workers=2) as backend:
+        report = evaluate("random", "U+", INDICES, seed=3, backend=backend)
+    assert report.to_dict() == random_run.to_dict()
+
+
+class _Backwards:
+    """A backend whose jobs finish in the reverse of the order they were given."""
+
+    workers = 2
+
+    def imap_unordered(self, fn, items):
+        items = list(items)
+        return ((item, fn(item)) for item in reversed(items))
+
+
+def test_outcomes_come_back_in_the_order_of_the_episodes_whatever_finishes_first():
+    assert list(map_ordered(str.upper, ["a", "b", "c"], _Backwards())) == ["A", "B", "C"]
 
 
 def _eval_kwargs():

@@ -14,7 +14,7 @@ from tests.conftest import REPO
 
 pytest.importorskip("stable_baselines3")
 
-ENV = "Luminous-NavToObject-64-v0"
+ENV = "Luminous-NavToObject-64-v1"
 TINY = ["--env", ENV, "--ppo", "n_steps=64", "--ppo", "batch_size=32", "--ppo", "n_epochs=1",
         "--env-kwarg", "max_steps=40"]
 

@@ -85,3 +85,43 @@ def test_a_scan_finds_the_one_gap_that_random_draws_miss():
     assert got is not None and gap.buffer(1e-6).contains(got[4])
     assert misses > 10
     assert next(scan_region(cube, spot, occupied + [gap]), None) is None
+
+
+def test_can_hold_counts_height_unless_open_at_the_top_and_things_side_by_side():
+    """A plunger stands only on a cabinet shelf taller than it; two spray bottles stand side by side only in
+    a garbage can wide enough for both; an open can's rim does not limit what goes in it."""
+    from luminous_sim.scene import can_hold
+
+    cat = default_catalog()
+    by_id = {e.id: e for t in ("Cabinet", "Plunger", "GarbageCan", "SprayBottle", "Pan", "Apple")
+             for e in cat.of_type(t)}
+    plunger = by_id["Plunger_02"]  # 0.55 m tall
+    assert [e.id for e in cat.of_type("Cabinet") if can_hold(e, plunger)] == ["Cabinet_05"]  # 0.58 m shelves
+    spray = by_id["SprayBottle_02"]  # 9 x 11 cm
+    assert can_hold(by_id["GarbageCan_00"], spray) and not can_hold(by_id["GarbageCan_00"], spray, 2)
+    assert can_hold(by_id["GarbageCan_01"], spray, 2)  # 20.7 cm inside: 2 x 9 cm in a row
+    tall = by_id["GarbageCan_02"]
+    assert tall.regions[0]["size"][2] < 0.6 and can_hold(tall, plunger)  # open at the top: it may stand out
+    assert not can_hold(by_id["Pan_00"], by_id["Plunger_00"])  # 14 cm wide, the pan 12 cm inside
+
+
+@pytest.mark.parametrize("yaw", [0.0, 0.7])
+def test_edge_slides_move_a_pose_to_a_corner_then_across_its_short_side_leaving_room_beside_it(yaw):
+    """A 49 x 25 cm pan drawn in the middle of a 54 x 57 cm counter leaves no room for a second; slid to a
+    corner, or against the edge across its short side, it does."""
+    from luminous_sim.scene import edge_slides, scan_region
+
+    pan = next(e for e in default_catalog().of_type("Pan") if e.id == "Pan_01")
+    spot = RegionSpot(None, "top", "surface", (1.0, 2.0), (0.54, 0.573), 0.9, 0.5, yaw)  # type: ignore[arg-type]
+    got = sample_in_region(pan, spot, np.random.default_rng(3), [], tries=50)
+    assert got is not None
+    slides = edge_slides(got, spot)
+    assert len(slides) >= 2
+    region = Polygon(rotate(np.array([[-0.27, -0.2865], [0.27, -0.2865], [0.27, 0.2865], [-0.27, 0.2865]]), yaw)
+                     + np.array([1.0, 2.0]))
+    for _x, _y, z, turn, fp in slides[:2]:
+        assert region.buffer(1e-6).contains(fp) and (z, turn) == got[2:4]
+        assert next(scan_region(pan, spot, [fp]), None) is not None  # room for a second pan beside it
+    assert next(scan_region(pan, spot, [got[4]]), None) is None  # where it was drawn, none
+    corner = slides[0][4]
+    assert region.exterior.distance(corner) < 0.011  # against the edge, a centimetre off it

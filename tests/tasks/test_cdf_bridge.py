@@ -212,3 +212,20 @@ def test_params_from_goal_reads_movable_and_sliced_goals():
     )
     goal = goal_for(PddlParams("Apple", "Fridge"), "pick_cool_then_place_in_recep")
     assert params_from_goal(doc, goal) == PddlParams("Apple", "Fridge")
+
+
+def test_two_things_go_on_a_surface_with_a_row_for_both_and_avoided_surfaces_are_not_used():
+    """Two boxes in a row fit on no side table (their areas would): they start on the dining table; a
+    surface the room had no room for is avoided, the lamp's table too."""
+    assert fits_on("SideTable", "Box") and not fits_on("SideTable", "Box", 2) and fits_on("DiningTable", "Box", 2)
+    boxes = cdf_for_task("pick_two_obj_and_place", PddlParams("Box", "CoffeeTable"), "LivingRoom")
+    (rel,) = [r for r in boxes.scene.relations if r.subject == "target"]
+    assert boxes.object_named(rel.target).type == "DiningTable"
+    moved = cdf_for_task("pick_two_obj_and_place", PddlParams("Box", "CoffeeTable"), "LivingRoom",
+                         avoid={"DiningTable"})
+    (rel,) = [r for r in moved.scene.relations if r.subject == "target"]
+    assert moved.object_named(rel.target).type not in ("DiningTable", "CoffeeTable")
+    lamp = cdf_for_task("look_at_obj_in_light", PddlParams("Book", toggle_target="DeskLamp"), "Bedroom",
+                        avoid={"SideTable"})
+    (rel,) = [r for r in lamp.scene.relations if r.subject == "lamp"]
+    assert lamp.object_named(rel.target).type != "SideTable"

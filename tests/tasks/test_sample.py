@@ -423,3 +423,38 @@ def test_sliced_option_and_closed_receptacles():
         scene, state, "pick_cool_then_place_in_recep", np.random.default_rng(0), sliced=False
     )
     assert not task.params.object_sliced
+
+
+def test_draw_kept_is_the_draw_over_the_kept_candidates_asking_less():
+    """`draw_kept` draws what filtering every candidate first would, leaves the stream in the same state,
+    and asks the filter about fewer candidates (it is the expensive physical check in a world)."""
+    from luminous_sim.tasks import draw_kept
+
+    scene, state = scene_of(RICH), state_of(RICH)
+    for task_type in ("pick_and_place_simple", "pick_and_place_with_movable_recep", "pick_heat_then_place_in_recep"):
+        cands = feasible_params(scene, state, task_type)
+        for seed in range(40):
+            chosen = set(np.random.default_rng(1000 + seed).choice(len(cands), size=max(1, len(cands) // 3),
+                                                                   replace=False).tolist())
+            asked = []
+
+            def keep(p, chosen=chosen, asked=asked, cands=cands):
+                asked.append(p)
+                return cands.index(p) in chosen
+
+            a, b = np.random.default_rng(seed), np.random.default_rng(seed)
+            assert draw_kept(cands, a, keep) == draw_params([p for i, p in enumerate(cands) if i in chosen], b)
+            assert a.random() == b.random()
+            assert len(asked) == len(set(asked)) <= len(cands)
+        assert len(asked) < len(cands)
+    with pytest.raises(TaskSamplingError, match=f"none of the {len(cands)} candidates passes the filter"):
+        draw_kept(cands, np.random.default_rng(0), lambda p: False)
+
+
+def test_sample_task_with_a_filter_names_the_task_when_nothing_passes():
+    scene, state = scene_of(RICH), state_of(RICH)
+    with pytest.raises(TaskSamplingError, match="no pick_and_place_simple task in .*none of the .* candidates"):
+        sample_task(scene, state, "pick_and_place_simple", np.random.default_rng(0), keep=lambda p: False)
+    keep_mugs = lambda p: p.object_target == "Mug"  # noqa: E731
+    task = sample_task(scene, state, "pick_and_place_simple", np.random.default_rng(0), keep=keep_mugs)
+    assert task.params.object_target == "Mug"

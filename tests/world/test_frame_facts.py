@@ -19,13 +19,13 @@ LOOK = ["RotateRight", "LookDown", "RotateRight", "MoveAhead", "RotateLeft", "Lo
 @pytest.fixture()
 def mask_calls(monkeypatch):
     calls = []
-    real = frame_facts.object_masks
+    real = frame_facts.body_counts
 
-    def counted(bodies, names):
+    def counted(bodies):
         calls.append(1)
-        return real(bodies, names)
+        return real(bodies)
 
-    monkeypatch.setattr(frame_facts, "object_masks", counted)
+    monkeypatch.setattr(frame_facts, "body_counts", counted)
     return calls
 
 
@@ -39,6 +39,8 @@ def fresh_render(world):
 def test_one_step_computes_the_masks_once(world, mask_calls):
     assert world.step("RotateRight").success
     assert mask_calls == []  # nothing is computed until asked
+    world.visible_objects()
+    assert world._facts._masks is None, "visibility needs pixel counts, not a mask per object"
     world.boxes()
     world.visible_objects()
     world.instance_masks()

@@ -53,3 +53,32 @@ def test_physics_check_reports_unseeable_objects(kitchen_scene):
             if o.id == apple else o for o in kitchen_scene.objects]
     moved = check_physics(kitchen_scene.model_copy(update={"objects": away}), settle_steps=10)
     assert apple in moved.unseeable and "unseeable" in moved.to_dict()
+
+
+def test_worlds_of_one_scene_share_the_answer_while_their_physics_is_as_built(kitchen_scene, monkeypatch):
+    import luminous_sim.world.sightlines as sightlines
+    from luminous_sim.world.world import World, WorldConfig
+
+    config = WorldConfig(settle_steps=120)
+    calls = []
+    original = sightlines.unseen
+
+    def counted(*args, **kwargs):
+        calls.append(1)
+        return original(*args, **kwargs)
+
+    monkeypatch.setattr(sightlines, "_ANSWERS", type(sightlines._ANSWERS)())
+    monkeypatch.setattr(sightlines, "unseen", counted)
+    with World(kitchen_scene, config) as first:
+        bodies = {oid: lo.body for oid, lo in first.built.objects.items()}
+        truth = original(first.client, first.view().state, bodies, first.nav.points(), config.visibility_distance)
+        assert unseeable(first.view()) == truth and len(calls) == 1
+    with World(kitchen_scene, config) as second:
+        assert unseeable(second.view()) == truth and len(calls) == 1  # remembered
+        apple = obj(kitchen_scene, "apple")
+        lo, hi = map(np.array, second.client.getAABB(second.built.objects[obj(kitchen_scene, "fridge")].body, -1))
+        _move(second, apple, tuple((lo + hi) / 2))  # the physics is touched: asked anew
+        assert apple in unseeable(second.view()) and len(calls) == 2
+    with World(kitchen_scene, WorldConfig(settle_steps=100)) as other:
+        unseeable(other.view())  # other settings: another world, asked anew
+        assert len(calls) == 3
