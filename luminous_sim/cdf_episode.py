@@ -47,10 +47,24 @@ def run_cdf(path: Path | str, seed: int = 0, out_dir: Path | None = None, room: 
             or script naming objects the scene does not have, an initial state the scene does not meet.
         InfeasibleSceneError: no layout satisfies the CDF (the message names the file).
     """
+    return run_document(load(path), str(path), seed, out_dir, room, record_frames, follow_script)
+
+
+def run_document(doc: ChallengeDefinition, source: str, seed: int = 0, out_dir: Path | None = None,
+                 room: str | RoomShell | None = None, record_frames: bool = True,
+                 follow_script: bool = True) -> CdfEpisode:
+    """`run_cdf` for a CDF already in memory (e.g. one parsed from an ALFRED trajectory).
+
+    Args:
+        doc: the challenge definition, with a `task` section.
+        source: where it came from, named in error messages.
+        seed, out_dir, room, record_frames, follow_script: as for `run_cdf`.
+
+    Raises:
+        CDFError, InfeasibleSceneError: as for `run_cdf`.
+    """
     from luminous_sim.cssg import generate, start_outside
 
-    source = str(path)
-    doc = load(path)
     if doc.task is None:
         raise CDFValidationError(source, [Issue("task", "the CDF has no task section; expected task.goal "
                                                 "(and optionally task.initial, task.agent, execution)")])
