@@ -26,7 +26,7 @@ if TYPE_CHECKING:
     from luminous_sim.env.oracle_policy import OraclePolicy
     from luminous_sim.env.registration import EnvEntry, load_entries, register_envs
     from luminous_sim.env.rewards import RewardConfig
-    from luminous_sim.env.wrappers import InstructionTokens
+    from luminous_sim.env.wrappers import ActionFeedback, FailureLimitEnds, InstructionTokens, SceneRepeat
 
 _WHERE = {
     "ActionTable": "actions",
@@ -36,19 +36,23 @@ _WHERE = {
     "OraclePolicy": "oracle_policy",
     "EnvEntry": "registration", "load_entries": "registration", "register_envs": "registration",
     "RewardConfig": "rewards",
-    "InstructionTokens": "wrappers",
+    "InstructionTokens": "wrappers", "ActionFeedback": "wrappers", "FailureLimitEnds": "wrappers",
+    "SceneRepeat": "wrappers",
 }
 
 __all__ = [
     "UNAVAILABLE_CAUSES",
+    "ActionFeedback",
     "ActionTable",
     "EnvConfig",
     "EnvEntry",
     "EpisodeUnavailable",
+    "FailureLimitEnds",
     "InstructionTokens",
     "LuminousEnv",
     "OraclePolicy",
     "RewardConfig",
+    "SceneRepeat",
     "load_entries",
     "register_envs",
 ]

@@ -1,4 +1,5 @@
-"""Wrappers for learning libraries."""
+"""Wrappers for learning libraries: the instruction as token ids, the previous action's feedback, and for
+training, the failure limit as a termination and scenes repeated over several episodes."""
 
 from __future__ import annotations
 
@@ -39,3 +40,92 @@ class InstructionTokens(gymnasium.ObservationWrapper, gymnasium.utils.RecordCons
 
     def observation(self, observation: dict[str, Any]) -> dict[str, Any]:
         return {**observation, "instruction": np.array(encode(observation["instruction"], self.length), np.int64)}
+
+
+class ActionFeedback(gymnasium.Wrapper, gymnasium.utils.RecordConstructorArgs):
+    """Adds a `feedback` observation: the previous action's index and whether it failed, as ALFRED's agents
+    see `lastActionSuccess`. A policy without memory then knows that the step it just took hit a wall or a
+    look limit, and can choose otherwise.
+
+    `feedback` is a `MultiDiscrete([n + 1, 2])` (SB3 one-hot encodes it): `[action, failed]`, where `action`
+    is n (the action space's size) after a reset or after an action given in the dict form.
+
+    Args:
+        env: an env with a `Discrete` action space and a `Dict` observation (a `LuminousEnv`, wrapped or not).
+    """
+
+    def __init__(self, env: gymnasium.Env):
+        gymnasium.utils.RecordConstructorArgs.__init__(self)
+        gymnasium.Wrapper.__init__(self, env)
+        if not isinstance(env.action_space, spaces.Discrete) or not isinstance(env.observation_space, spaces.Dict):
+            raise TypeError("ActionFeedback needs a Discrete action space and a Dict observation space, got "
+                            f"{env.action_space} and {type(env.observation_space).__name__}")
+        self.none = int(env.action_space.n)
+        self.observation_space = spaces.Dict({**env.observation_space.spaces,
+                                              "feedback": spaces.MultiDiscrete(np.array([self.none + 1, 2]))})
+
+    def _with(self, observation: dict[str, Any], action: int, failed: bool) -> dict[str, Any]:
+        return {**observation, "feedback": np.array([action, int(failed)], np.int64)}
+
+    def reset(self, **kwargs: Any) -> tuple[dict[str, Any], dict[str, Any]]:
+        observation, info = self.env.reset(**kwargs)
+        return self._with(observation, self.none, False), info
+
+    def step(self, action: Any) -> tuple[dict[str, Any], Any, bool, bool, dict[str, Any]]:
+        observation, reward, terminated, truncated, info = self.env.step(action)
+        index = int(action) if isinstance(action, (int, np.integer, np.ndarray)) and np.ndim(action) == 0 else self.none
+        index = index if 0 <= index < self.none else self.none
+        return self._with(observation, index, info.get("failure_code") is not None), reward, terminated, truncated, info
+
+
+class FailureLimitEnds(gymnasium.Wrapper, gymnasium.utils.RecordConstructorArgs):
+    """For training: an episode cut off by the failure limit (`max_failures`) ends as `terminated`, not
+    `truncated`, and `info["failure_limit"]` says so.
+
+    Learners bootstrap a truncated episode's value as if it went on (a time limit is not the agent's doing);
+    an episode cut off by its own failed actions does not go on, and the reward it would have reached is lost.
+    Reporting it as a termination lets a learner see that cost, so it learns to avoid failing 10 times.
+    Evaluation should use the env unwrapped (success and lengths are the same either way).
+    """
+
+    def __init__(self, env: gymnasium.Env):
+        gymnasium.utils.RecordConstructorArgs.__init__(self)
+        gymnasium.Wrapper.__init__(self, env)
+        self.limit = int(env.unwrapped.config.max_failures)  # type: ignore[attr-defined]
+
+    def step(self, action: Any) -> tuple[Any, Any, bool, bool, dict[str, Any]]:
+        observation, reward, terminated, truncated, info = self.env.step(action)
+        hit = truncated and not terminated and info.get("failures", 0) >= self.limit
+        if hit:
+            terminated, truncated = True, False
+        return observation, reward, terminated, truncated, {**info, "failure_limit": hit}
+
+
+class SceneRepeat(gymnasium.Wrapper, gymnasium.utils.RecordConstructorArgs):
+    """For training: each scene serves `repeats` episodes in a row (new goals drawn in it, from the world's start
+    pose), so most resets reuse the built world (`WorldPool`) and cost about a third of a new scene's.
+
+    A reset given `options` (a scene, a split entry, a CDF) or a new `seed` passes through unchanged and starts
+    a new run of repeats. The scene distribution the agent trains on is the env's own, each scene `repeats`
+    times; evaluate without this wrapper.
+
+    Args:
+        env: a `LuminousEnv`, wrapped or not.
+        repeats: episodes per scene (1: the wrapper does nothing).
+    """
+
+    def __init__(self, env: gymnasium.Env, repeats: int = 4):
+        gymnasium.utils.RecordConstructorArgs.__init__(self, repeats=repeats)
+        gymnasium.Wrapper.__init__(self, env)
+        if isinstance(repeats, bool) or not isinstance(repeats, int) or repeats < 1:
+            raise ValueError(f"SceneRepeat repeats: expected a positive integer, got {repeats!r}")
+        self.repeats = repeats
+        self._left = 0
+
+    def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None) -> tuple[Any, dict[str, Any]]:
+        episode = getattr(self.env.unwrapped, "episode", None)
+        if seed is None and not options and self._left > 0 and episode is not None:
+            self._left -= 1
+            return self.env.reset(options={"scene": episode.scene})
+        self._left = self.repeats - 1
+        return self.env.reset(seed=seed, options=options)
