@@ -1,23 +1,28 @@
 """Train PPO (stable-baselines3) on a small Luminous-Sim id: save the model, the learning curve (CSV and PNG),
-evaluate the trained policy and a random one on the same held-out seeds.
+evaluate the trained policy, two random ones and the oracle on the same held-out seeds.
 
     pip install -e '.[learn]'
-    python examples/train_ppo.py --env Luminous-NavToObject-64-v0 --steps 20000 --out out/ppo
+    python examples/train_ppo.py --env Luminous-NavToObject-64-v1 --steps 20000 --out out/ppo
     python examples/train_ppo.py --out out/ppo --steps 40000 --resume      # go on from the last save
+    python examples/train_ppo.py --out out/ppo --steps 1000000 --cpu-minutes 60 --n-envs 2
 
 It writes to `--out`: `model.zip` (`PPO.load` reads it back), `curve.csv` (one row per finished training
-episode: timesteps, return, length, success), `curve.png`, `config.json` (what was run) and `eval.json`
-(success rate with a 95% Wilson interval, mean return and length, per policy). The model and the curve are
-saved together every `--save-every` steps, so an interrupted run resumes with `--resume`.
+episode: timesteps, return, length, success, the training's CPU seconds so far), `curve.png`, `config.json`
+(what was run), `progress.json` (timesteps and CPU seconds), `vecnormalize.pkl` (the reward scale) and
+`eval.json` (success rate with a 95% Wilson interval, mean return and length, how episodes ended, per
+policy). Everything is saved together every `--save-every` steps, so an interrupted run resumes with
+`--resume`; `--cpu-minutes` bounds the training's CPU time (trainer and env workers, resumed runs included).
 
-The policy is SB3's `MultiInputPolicy`: a CNN over `rgb` and a one-hot encoding of the instruction's token ids
-(`luminous_sim.env.InstructionTokens`), so the agent knows which object the episode asks for. Env options
-(`--env-kwarg name=value`, a TOML value) change the env for training; evaluation uses `--eval-kwarg` on top
-of the registered id. The defaults train without `verify_expert` (a reset costs about a third as much; some
-training episodes may then be unsolvable) and without the failure limit (`max_failures`: an untrained policy
-picks mostly interactions, which mostly fail, so with ALFRED's 10 its episodes end after about 10 steps and
-the budget goes to generating scenes: 319 resets in 2,818 steps in our first 25-minute run; failed actions
-still cost their reward), and evaluate on the id as registered, whose episodes the oracle solves.
+The policy is SB3's `MultiInputPolicy`: a CNN over `rgb`, a one-hot encoding of the instruction's token ids
+(`luminous_sim.env.InstructionTokens`), so the agent knows which object the episode asks for, and the previous
+action with whether it failed (`ActionFeedback`, as ALFRED's agents see `lastActionSuccess`; a policy without
+memory then knows it just hit a wall). Training envs are the id as registered (`--env-kwarg name=value`, a TOML
+value, changes them) with three training-side wrappers: the failure limit (10 failed actions) ends an
+episode as a termination (`FailureLimitEnds`: SB3 would otherwise bootstrap it as if the episode went on,
+and the agent would not learn that failing loses the goal's reward), each scene serves 4 episodes with new
+goals (`SceneRepeat`: a reset in a built world costs about a third of a new scene's), and rewards are
+normalised (`VecNormalize`). Evaluation uses the id as registered (`--eval-kwarg` on top), whose episodes
+the oracle solves.
 
 This is an example to read and change (policy, hyperparameters, wrappers) rather than a command of the
 `luminous` CLI: stable-baselines3 and torch are optional extras, and a fixed set of flags would hide what a

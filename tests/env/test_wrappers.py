@@ -1,4 +1,5 @@
-"""InstructionTokens: the Text instruction as fixed-length token ids over the fixed vocabulary."""
+"""The learning wrappers: InstructionTokens (the Text instruction as token ids over the fixed vocabulary),
+ActionFeedback, FailureLimitEnds and SceneRepeat."""
 
 from __future__ import annotations
 
@@ -9,7 +10,7 @@ import numpy as np
 import pytest
 
 import luminous_sim  # noqa: F401  (registers the ids)
-from luminous_sim.env import InstructionTokens
+from luminous_sim.env import ActionFeedback, FailureLimitEnds, InstructionTokens, SceneRepeat
 from luminous_sim.env.vocabulary import PAD, UNK, encode, vocabulary
 from luminous_sim.tasks import TEMPLATES
 
@@ -47,3 +48,76 @@ def test_sb3_multi_input_policy_takes_the_wrapped_env():
     action, _ = model.predict(env.reset(seed=0)[0])
     assert env.action_space.contains(np.int64(action))
     env.close()
+
+
+def _failing_action(env) -> int:
+    """An interaction on the top-left grid point with nothing held: PutObject fails."""
+    from luminous_sim.env.actions import ActionTable
+
+    table: ActionTable = env.unwrapped.actions
+    return table.index("PutObject", 0)
+
+
+def test_action_feedback_gives_the_previous_action_and_whether_it_failed():
+    env = ActionFeedback(InstructionTokens(gymnasium.make("Luminous-NavToObject-64-v1")))
+    n = env.unwrapped.action_space.n
+    assert env.observation_space["feedback"] == gymnasium.spaces.MultiDiscrete([n + 1, 2])
+    obs, _ = env.reset(seed=0)
+    assert obs["feedback"].tolist() == [n, 0] and env.observation_space.contains(obs)
+    put = _failing_action(env)
+    obs, _, terminated, truncated, info = env.step(put)
+    assert info["failure_code"] is not None and obs["feedback"].tolist() == [put, 1]
+    obs, _, _, _, info = env.step(2)  # RotateRight never fails
+    assert info["failure_code"] is None and obs["feedback"].tolist() == [2, 0]
+    obs, *_ = env.step({"action": "RotateLeft"})  # the dict form has no index
+    assert obs["feedback"].tolist() == [n, 0] and env.observation_space.contains(obs)
+    env.close()
+    with pytest.raises(TypeError, match="Discrete action space"):
+        ActionFeedback(gymnasium.make("CartPole-v1"))
+
+
+def test_failure_limit_ends_turns_that_truncation_into_a_termination():
+    wrapped = FailureLimitEnds(gymnasium.make("Luminous-NavToObject-64-v1", max_failures=3))
+    plain = gymnasium.make("Luminous-NavToObject-64-v1", max_failures=3)
+    for env in (wrapped, plain):
+        env.reset(seed=0)
+    put = _failing_action(wrapped)
+    for i in range(3):
+        a = wrapped.step(put)
+        b = plain.step(put)
+        assert a[1] == b[1] and a[4]["failures"] == b[4]["failures"] == i + 1
+    assert a[2:4] == (True, False) and a[4]["failure_limit"]
+    assert b[2:4] == (False, True)
+    wrapped.reset(seed=0)
+    assert wrapped.step(2)[4]["failure_limit"] is False
+    for env in (wrapped, plain):
+        env.close()
+
+
+def test_scene_repeat_keeps_the_scene_for_that_many_episodes_then_draws_a_new_one():
+    env = SceneRepeat(gymnasium.make("Luminous-NavToObject-64-v1"), repeats=3)
+    inner = env.unwrapped
+    scenes, goals = [], []
+    env.reset(seed=5)
+    for _ in range(4):
+        scenes.append(inner.episode.scene.seed)
+        goals.append(inner.episode.goal.instruction)
+        env.reset()
+    scenes.append(inner.episode.scene.seed)
+    assert scenes[0] == scenes[1] == scenes[2] != scenes[3]
+    assert inner.worlds.reuses > 0
+    again = SceneRepeat(gymnasium.make("Luminous-NavToObject-64-v1"), repeats=3)
+    again.reset(seed=5)
+    again_goals = [again.unwrapped.episode.goal.instruction]
+    for _ in range(3):
+        again.reset()
+        again_goals.append(again.unwrapped.episode.goal.instruction)
+    assert again_goals == goals  # deterministic from the seed
+    env.reset(seed=6)  # a seed starts a new run of repeats
+    first = inner.episode.scene.seed
+    env.reset()
+    assert inner.episode.scene.seed == first
+    for e in (env, again):
+        e.close()
+    with pytest.raises(ValueError, match="positive integer"):
+        SceneRepeat(gymnasium.make("Luminous-NavToObject-64-v1"), repeats=0)
