@@ -55,6 +55,7 @@ sys.path[:0] = [str(ROOT), str(ROOT / "examples")]
 import train_ppo  # noqa: E402  (examples/train_ppo.py)
 
 from luminous_sim.assets.objio import write_atomic  # noqa: E402
+from luminous_sim.env.actions import NAVIGATION  # noqa: E402
 
 ENV_ID = "Luminous-NavToObject-64-v1"
 POLICIES = ("random", "random-nav", "oracle", "ppo")
@@ -83,6 +84,8 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--resume", action="store_true", help="go on from the model in --out (the CPU budget counts "
                                                          "the earlier runs too)")
     p.add_argument("--no-train", action="store_true", help="evaluate the model in --out as it is")
+    p.add_argument("--actions", default="navigation", choices=("navigation", "all"),
+                   help="the agent's actions: the five navigation ones (default) or the env's whole space")
     args = p.parse_args(argv)
     policies = [x for x in args.policies.split(",") if x]
     bad = [x for x in policies if x not in POLICIES]
@@ -99,7 +102,7 @@ def main(argv: list[str] | None = None) -> int:
     else:
         model = train_ppo.train(args.env, args.out, args.max_steps, seed=args.seed, n_envs=args.n_envs,
                                 ppo_kwargs=train_ppo._kwargs(args.ppo), cpu_budget_s=args.cpu_minutes * 60,
-                                resume=args.resume)
+                                resume=args.resume, save_every=2000, actions=NAVIGATION if args.actions == "navigation" else None)
     wall = time.perf_counter() - t0
     progress = json.loads((args.out / "progress.json").read_text())
     config = json.loads((args.out / "config.json").read_text())
@@ -119,7 +122,8 @@ def main(argv: list[str] | None = None) -> int:
     for name in policies:
         t = time.process_time()
         outcomes = train_ppo.run_episodes(makers[name](), args.env, seeds,
-                                          feedback=name == "ppo" and config.get("feedback", False))
+                                          feedback=name == "ppo" and config.get("feedback", False),
+                                          actions=config.get("actions") if name == "ppo" else None)
         summary[name] = train_ppo.success_summary(outcomes)
         _print_summary(name, summary[name], time.process_time() - t)
     for name in POLICIES:
@@ -130,7 +134,7 @@ def main(argv: list[str] | None = None) -> int:
     first, last = rows[:quarter], rows[-quarter:]
     report = {"env_id": args.env, "cpu_minutes_budget": args.cpu_minutes, "cpu_minutes": round(cpu_min, 2),
               "timesteps": int(model.num_timesteps), "training_episodes": len(rows), "n_envs": config["n_envs"],
-              "ppo": config["ppo"], "eval_seeds": [seeds[0], seeds[-1]], "eval": summary,
+              "ppo": config["ppo"], "actions": config.get("actions"), "eval_seeds": [seeds[0], seeds[-1]], "eval": summary,
               "training_success_first_quarter": round(float(np.mean([r["success"] for r in first])), 4) if rows else None,
               "training_success_last_quarter": round(float(np.mean([r["success"] for r in last])), 4) if rows else None,
               "load_average_end": os.getloadavg()}

@@ -48,8 +48,9 @@ import gymnasium
 import numpy as np
 
 import luminous_sim  # noqa: F401  (registers the ids)
+from luminous_sim.env.actions import NAVIGATION
 from luminous_sim.assets.objio import write_atomic
-from luminous_sim.env import ActionFeedback, FailureLimitEnds, InstructionTokens, SceneRepeat
+from luminous_sim.env import ActionFeedback, ActionSubset, FailureLimitEnds, InstructionTokens, SceneRepeat
 
 DEFAULT_ENV = "Luminous-NavToObject-64-v1"
 TRAIN_KWARGS: dict[str, Any] = {}
@@ -66,33 +67,37 @@ Policy = Callable[[dict[str, Any]], Any]
 
 
 def make_env(env_id: str, env_kwargs: dict[str, Any] | None = None, *, feedback: bool = False,
-             training: bool = False, scene_repeats: int = 1) -> gymnasium.Env:
+             actions: Sequence[str] | None = None, training: bool = False, scene_repeats: int = 1) -> gymnasium.Env:
     """The registered id with its instruction as token ids (what SB3's `MultiInputPolicy` takes); with
-    `feedback`, the previous action and whether it failed as an observation (`ActionFeedback`); with `training`,
+    `feedback`, the previous action and whether it failed as an observation (`ActionFeedback`); with `actions`
+    (names), the agent acts over those actions only (`ActionSubset`); with `training`,
     the failure limit ends an episode as a termination (`FailureLimitEnds`) and each scene serves
     `scene_repeats` episodes (`SceneRepeat`)."""
     env: gymnasium.Env = gymnasium.make(env_id, **(env_kwargs or {}))
     if training:
         env = FailureLimitEnds(SceneRepeat(env, scene_repeats))
     env = InstructionTokens(env)
+    if actions:
+        env = ActionSubset(env, actions)
     return ActionFeedback(env) if feedback else env
 
 
-def _monitored(env_id: str, env_kwargs: dict[str, Any], feedback: bool, scene_repeats: int) -> gymnasium.Env:
+def _monitored(env_id: str, env_kwargs: dict[str, Any], feedback: bool, actions: Sequence[str] | None,
+               scene_repeats: int) -> gymnasium.Env:
     from stable_baselines3.common.monitor import Monitor
 
-    env = make_env(env_id, env_kwargs, feedback=feedback, training=True, scene_repeats=scene_repeats)
+    env = make_env(env_id, env_kwargs, feedback=feedback, actions=actions, training=True, scene_repeats=scene_repeats)
     return Monitor(env, info_keywords=("success",))
 
 
 def make_vec_env(env_id: str, env_kwargs: dict[str, Any], n_envs: int, seed: int, *, feedback: bool = False,
-                 scene_repeats: int = 1, processes: bool = True) -> Any:
+                 actions: Sequence[str] | None = None, scene_repeats: int = 1, processes: bool = True) -> Any:
     """`n_envs` monitored training envs, in worker processes (`processes` and more than one env) or in this one."""
     from functools import partial
 
     from stable_baselines3.common.vec_env import DummyVecEnv, SubprocVecEnv
 
-    makers = [partial(_monitored, env_id, env_kwargs, feedback, scene_repeats) for _ in range(n_envs)]
+    makers = [partial(_monitored, env_id, env_kwargs, feedback, actions, scene_repeats) for _ in range(n_envs)]
     vec = SubprocVecEnv(makers, start_method="fork") if processes and n_envs > 1 else DummyVecEnv(makers)
     vec.seed(seed)
     return vec
@@ -178,6 +183,7 @@ def save_model(model: Any, path: Path) -> None:
 def train(env_id: str, out: Path, steps: int, *, seed: int = 0, env_kwargs: dict[str, Any] | None = None,
           ppo_kwargs: dict[str, Any] | None = None, n_envs: int = 1, save_every: int = 5000, resume: bool = False,
           time_budget_s: float | None = None, cpu_budget_s: float | None = None, feedback: bool = True,
+          actions: Sequence[str] | None = None,
           normalize_reward: bool = True, scene_repeats: int = 4, processes: bool = True, torch_threads: int | None = 1,
           verbose: int = 0) -> Any:
     """Train (or go on training) PPO with `MultiInputPolicy` until `steps` timesteps in all, until
@@ -185,7 +191,8 @@ def train(env_id: str, out: Path, steps: int, *, seed: int = 0, env_kwargs: dict
     workers, every call on this `out` together) reaches `cpu_budget_s`; the model.
 
     `feedback` adds the previous action and whether it failed to the observation (`ActionFeedback`; evaluate
-    with `make_env(..., feedback=True)`); `normalize_reward` scales rewards by a running estimate of the
+    with `make_env(..., feedback=True)`); `actions` (names, e.g. `NAVIGATION`) restricts the agent to those
+    actions (`ActionSubset`; evaluate with the same); `normalize_reward` scales rewards by a running estimate of the
     return's spread (SB3's `VecNormalize`, rewards only; saved as `vecnormalize.pkl`). Training episodes end
     at the failure limit as terminations (`FailureLimitEnds`), and each training scene serves `scene_repeats`
     episodes with new goals (`SceneRepeat`: a reset in a built world costs about a third of a new scene's).
@@ -210,8 +217,8 @@ def train(env_id: str, out: Path, steps: int, *, seed: int = 0, env_kwargs: dict
     model_path, curve_path, norm_path = out / "model.zip", out / "curve.csv", out / "vecnormalize.pkl"
     progress_path = out / "progress.json"
     resuming = resume and model_path.exists()
-    vec = make_vec_env(env_id, env_kwargs, n_envs, seed, feedback=feedback, scene_repeats=scene_repeats,
-                       processes=processes)
+    vec = make_vec_env(env_id, env_kwargs, n_envs, seed, feedback=feedback, actions=actions,
+                       scene_repeats=scene_repeats, processes=processes)
     pids = worker_pids(vec)
     if normalize_reward:
         vec = (VecNormalize.load(str(norm_path), vec) if resuming and norm_path.exists()
@@ -224,7 +231,8 @@ def train(env_id: str, out: Path, steps: int, *, seed: int = 0, env_kwargs: dict
         model = PPO("MultiInputPolicy", vec, seed=seed, device="cpu", verbose=verbose, **ppo_kwargs)
         rows, cpu_before = [], 0.0
     config = {"env_id": env_id, "env_kwargs": env_kwargs, "ppo": ppo_kwargs, "policy": "MultiInputPolicy",
-              "feedback": feedback, "normalize_reward": normalize_reward, "failure_limit_ends": True,
+              "feedback": feedback, "actions": list(actions) if actions else None,
+              "normalize_reward": normalize_reward, "failure_limit_ends": True,
               "scene_repeats": scene_repeats,
               "steps": steps, "seed": seed, "n_envs": n_envs, "processes": bool(pids),
               "stable_baselines3": stable_baselines3.__version__, "torch": torch.__version__,
@@ -266,9 +274,11 @@ class Outcome:
 
 
 def run_episodes(policy_for: Callable[[gymnasium.Env], Policy], env_id: str, seeds: Sequence[int],
-                 env_kwargs: dict[str, Any] | None = None, *, feedback: bool = False) -> list[Outcome]:
-    """One episode per seed with the policy `policy_for(env)` gives (observations as `make_env` makes them)."""
-    env = make_env(env_id, env_kwargs, feedback=feedback)
+                 env_kwargs: dict[str, Any] | None = None, *, feedback: bool = False,
+                 actions: Sequence[str] | None = None) -> list[Outcome]:
+    """One episode per seed with the policy `policy_for(env)` gives (observations and actions as `make_env`
+    makes them)."""
+    env = make_env(env_id, env_kwargs, feedback=feedback, actions=actions)
     limit = env.unwrapped.config.max_failures  # type: ignore[attr-defined]
     policy = policy_for(env)
     out = []
@@ -397,6 +407,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     p.add_argument("--cpu-minutes", type=float, default=None,
                    help="stop training when it has used this much CPU time (all its processes, all resumed runs)")
     p.add_argument("--no-feedback", action="store_true", help="leave out the previous action's feedback observation")
+    p.add_argument("--actions", default="all", choices=("all", "navigation"),
+                   help="the agent's actions: the env's whole space, or its five navigation actions (default all)")
     p.add_argument("--no-normalize-reward", action="store_true", help="train on the raw rewards")
     args = p.parse_args(argv)
     if args.steps < 1 or args.eval_episodes < 0 or args.n_envs < 1 or args.save_every < 1:
@@ -406,10 +418,11 @@ def main(argv: Sequence[str] | None = None) -> int:
     eval_kwargs = _kwargs(args.eval_kwarg)
     started = time.perf_counter()
     feedback = not args.no_feedback
+    actions = NAVIGATION if args.actions == "navigation" else None
     model = train(args.env, args.out, args.steps, seed=args.seed, env_kwargs=env_kwargs,
                   ppo_kwargs=_kwargs(args.ppo), n_envs=args.n_envs, save_every=args.save_every, resume=args.resume,
                   cpu_budget_s=None if args.cpu_minutes is None else args.cpu_minutes * 60, feedback=feedback,
-                  normalize_reward=not args.no_normalize_reward)
+                  normalize_reward=not args.no_normalize_reward, actions=actions)
     train_s = time.perf_counter() - started
     report: dict[str, Any] = {"env_id": args.env, "eval_kwargs": eval_kwargs, "train_seconds": round(train_s, 1),
                               "timesteps": int(model.num_timesteps)}
@@ -417,7 +430,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         seeds = list(range(EVAL_SEED0, EVAL_SEED0 + args.eval_episodes))
         runs = {"random": run_episodes(random_policy(args.seed), args.env, seeds, eval_kwargs),
                 "random-nav": run_episodes(random_nav_policy(args.seed), args.env, seeds, eval_kwargs),
-                "ppo": run_episodes(model_policy(model, args.seed), args.env, seeds, eval_kwargs, feedback=feedback)}
+                "ppo": run_episodes(model_policy(model, args.seed), args.env, seeds, eval_kwargs, feedback=feedback,
+                                    actions=actions)}
         report["seeds"] = [seeds[0], seeds[-1]]
         report |= {name: success_summary(o) for name, o in runs.items()}
         report["episodes"] = {name: [asdict(x) for x in o] for name, o in runs.items()}

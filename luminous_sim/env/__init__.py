@@ -26,7 +26,7 @@ if TYPE_CHECKING:
     from luminous_sim.env.oracle_policy import OraclePolicy
     from luminous_sim.env.registration import EnvEntry, load_entries, register_envs
     from luminous_sim.env.rewards import RewardConfig
-    from luminous_sim.env.wrappers import ActionFeedback, FailureLimitEnds, InstructionTokens, SceneRepeat
+    from luminous_sim.env.wrappers import ActionFeedback, ActionSubset, FailureLimitEnds, InstructionTokens, SceneRepeat
 
 _WHERE = {
     "ActionTable": "actions",
@@ -36,13 +36,14 @@ _WHERE = {
     "OraclePolicy": "oracle_policy",
     "EnvEntry": "registration", "load_entries": "registration", "register_envs": "registration",
     "RewardConfig": "rewards",
-    "InstructionTokens": "wrappers", "ActionFeedback": "wrappers", "FailureLimitEnds": "wrappers",
+    "InstructionTokens": "wrappers", "ActionFeedback": "wrappers", "ActionSubset": "wrappers", "FailureLimitEnds": "wrappers",
     "SceneRepeat": "wrappers",
 }
 
 __all__ = [
     "UNAVAILABLE_CAUSES",
     "ActionFeedback",
+    "ActionSubset",
     "ActionTable",
     "EnvConfig",
     "EnvEntry",

@@ -1,8 +1,9 @@
-"""Wrappers for learning libraries: the instruction as token ids, the previous action's feedback, and for
-training, the failure limit as a termination and scenes repeated over several episodes."""
+"""Wrappers for learning libraries: the instruction as token ids, the previous action's feedback, a subset of
+the actions, and for training, the failure limit as a termination and scenes repeated over several episodes."""
 
 from __future__ import annotations
 
+from collections.abc import Sequence
 from typing import Any, Literal
 
 import gymnasium
@@ -129,3 +130,40 @@ class SceneRepeat(gymnasium.Wrapper, gymnasium.utils.RecordConstructorArgs):
             return self.env.reset(options={"scene": episode.scene})
         self._left = self.repeats - 1
         return self.env.reset(seed=seed, options=options)
+
+
+class ActionSubset(gymnasium.ActionWrapper, gymnasium.utils.RecordConstructorArgs):
+    """A `Discrete` space over some of the env's actions, by name (`ActionTable.labels`): action i is the
+    env's action named `names[i]`. For an agent that needs only some actions, e.g. the navigation ones in
+    `goto_object`, whose goal is met by walking and where Stop only ends an episode early.
+
+    The ALFRED dict form still passes through to the env unchanged.
+
+    Args:
+        env: a `LuminousEnv`, wrapped or not.
+        names: the actions kept, in order (`NAVIGATION` by default: MoveAhead, RotateLeft, RotateRight,
+            LookUp, LookDown).
+    """
+
+    def __init__(self, env: gymnasium.Env, names: Sequence[str] | None = None):
+        from luminous_sim.env.actions import NAVIGATION
+
+        names = list(NAVIGATION if names is None else names)
+        gymnasium.utils.RecordConstructorArgs.__init__(self, names=names)
+        gymnasium.ActionWrapper.__init__(self, env)
+        labels = env.unwrapped.actions.labels()  # type: ignore[attr-defined]
+        unknown = [n for n in names if n not in labels]
+        if not names or unknown or len(set(names)) != len(names):
+            raise ValueError(f"ActionSubset names: {unknown or names} are not distinct names of this env's actions "
+                             f"(e.g. {', '.join(labels[:7])}, ...)")
+        self.names = names
+        self.indices = [labels.index(n) for n in names]
+        self.action_space = spaces.Discrete(len(names))
+
+    def action(self, action: Any) -> Any:
+        if isinstance(action, dict):
+            return action
+        index = int(action)
+        if not 0 <= index < len(self.indices):  # outside the subset: an index outside the env's space, a failure
+            return int(self.env.action_space.n)  # type: ignore[attr-defined]
+        return self.indices[index]

@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 import luminous_sim  # noqa: F401  (registers the ids)
-from luminous_sim.env import ActionFeedback, FailureLimitEnds, InstructionTokens, SceneRepeat
+from luminous_sim.env import ActionFeedback, ActionSubset, FailureLimitEnds, InstructionTokens, SceneRepeat
 from luminous_sim.env.vocabulary import PAD, UNK, encode, vocabulary
 from luminous_sim.tasks import TEMPLATES
 
@@ -121,3 +121,27 @@ def test_scene_repeat_keeps_the_scene_for_that_many_episodes_then_draws_a_new_on
         e.close()
     with pytest.raises(ValueError, match="positive integer"):
         SceneRepeat(gymnasium.make("Luminous-NavToObject-64-v1"), repeats=0)
+
+
+def test_action_subset_maps_its_indices_to_the_named_actions():
+    from luminous_sim.env.actions import NAVIGATION
+
+    env = ActionSubset(gymnasium.make("Luminous-NavToObject-64-v1"), ["RotateRight", "PutObject@(0,0)"])
+    assert env.action_space == gymnasium.spaces.Discrete(2) and env.indices == [2, env.unwrapped.actions.index(
+        "PutObject", 0)]
+    env.reset(seed=0)
+    before = env.unwrapped.world.agent.rotation
+    *_, info = env.step(0)
+    assert info["failure_code"] is None and env.unwrapped.world.agent.rotation == (before + 90) % 360
+    *_, info = env.step(1)
+    assert info["failure_code"] is not None and env.unwrapped.history[-1].api["action"] == "PutObject"
+    *_, info = env.step(7)  # outside the subset: a failed action, never an exception
+    assert info["failure_code"] == "invalid_argument"
+    *_, info = env.step({"action": "RotateLeft"})  # the dict form passes through
+    assert info["failure_code"] is None
+    env.close()
+    nav = ActionSubset(gymnasium.make("Luminous-NavToObject-64-v1"))
+    assert nav.names == list(NAVIGATION) and nav.indices == [0, 1, 2, 3, 4]
+    nav.close()
+    with pytest.raises(ValueError, match="Jump"):
+        ActionSubset(gymnasium.make("Luminous-NavToObject-64-v1"), ["MoveAhead", "Jump"])

@@ -81,14 +81,21 @@ def test_train_save_evaluate_and_resume(tmp_path, train_ppo, capsys):
 def test_a_cpu_budget_stops_training(tmp_path, train_ppo):
     """The budget counts the trainer and its env workers; training stops at the first check past it."""
     out = tmp_path / "cpu"
+    from luminous_sim.env.actions import NAVIGATION
+
     model = train_ppo.train(ENV, out, 100_000, env_kwargs={"max_steps": 40}, n_envs=2, cpu_budget_s=3.0,
-                            ppo_kwargs={"n_steps": 32, "batch_size": 32, "n_epochs": 1})
+                            ppo_kwargs={"n_steps": 32, "batch_size": 32, "n_epochs": 1}, actions=NAVIGATION)
     progress = json.loads((out / "progress.json").read_text())
     assert 3.0 <= progress["cpu_seconds"] and model.num_timesteps < 100_000
-    assert json.loads((out / "config.json").read_text())["processes"]
+    config = json.loads((out / "config.json").read_text())
+    assert config["processes"] and config["actions"] == list(NAVIGATION) and model.action_space.n == len(NAVIGATION)
+    outcomes = train_ppo.run_episodes(train_ppo.model_policy(model), ENV, [5], {"max_steps": 20}, feedback=True,
+                                      actions=NAVIGATION)
+    assert outcomes[0].length <= 20 and outcomes[0].end in ("success", "failures", "steps")
     # resuming with the budget spent trains no further
     again = train_ppo.train(ENV, out, 100_000, env_kwargs={"max_steps": 40}, n_envs=2, cpu_budget_s=3.0,
-                            ppo_kwargs={"n_steps": 32, "batch_size": 32, "n_epochs": 1}, resume=True)
+                            ppo_kwargs={"n_steps": 32, "batch_size": 32, "n_epochs": 1}, actions=NAVIGATION,
+                            resume=True)
     assert again.num_timesteps == model.num_timesteps
 
 
