@@ -56,8 +56,11 @@ DEFAULT_ENV = "Luminous-NavToObject-64-v1"
 TRAIN_KWARGS: dict[str, Any] = {}
 """Env options for training by default: none, the id as registered (see the module docstring)."""
 PPO_DEFAULTS: dict[str, Any] = {"n_steps": 128, "batch_size": 64, "n_epochs": 4, "learning_rate": 3e-4,
-                                "gamma": 0.99, "gae_lambda": 0.95, "ent_coef": 0.01, "clip_range": 0.2}
+                                "gamma": 0.99, "gae_lambda": 0.95, "ent_coef": 0.02, "clip_range": 0.2}
 CURVE_FIELDS = ("timesteps", "episode_return", "episode_length", "success", "cpu_seconds")
+FEEDBACK_HISTORY = 8
+"""Past steps in the `feedback` observation (`ActionFeedback`): enough to see a full turn (4 rotations) and what
+came before it, a short memory for a policy that has none."""
 EVAL_SEED0 = 1_000_000
 """Evaluation seeds start here, far from the training env's seeds (the training env is reset with `--seed`,
 then draws its later episodes from its own generator)."""
@@ -79,7 +82,7 @@ def make_env(env_id: str, env_kwargs: dict[str, Any] | None = None, *, feedback:
     env = InstructionTokens(env)
     if actions:
         env = ActionSubset(env, actions)
-    return ActionFeedback(env) if feedback else env
+    return ActionFeedback(env, FEEDBACK_HISTORY) if feedback else env
 
 
 def _monitored(env_id: str, env_kwargs: dict[str, Any], feedback: bool, actions: Sequence[str] | None,
@@ -231,7 +234,8 @@ def train(env_id: str, out: Path, steps: int, *, seed: int = 0, env_kwargs: dict
         model = PPO("MultiInputPolicy", vec, seed=seed, device="cpu", verbose=verbose, **ppo_kwargs)
         rows, cpu_before = [], 0.0
     config = {"env_id": env_id, "env_kwargs": env_kwargs, "ppo": ppo_kwargs, "policy": "MultiInputPolicy",
-              "feedback": feedback, "actions": list(actions) if actions else None,
+              "feedback": feedback, "feedback_history": FEEDBACK_HISTORY if feedback else 0,
+              "actions": list(actions) if actions else None,
               "normalize_reward": normalize_reward, "failure_limit_ends": True,
               "scene_repeats": scene_repeats,
               "steps": steps, "seed": seed, "n_envs": n_envs, "processes": bool(pids),

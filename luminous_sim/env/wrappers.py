@@ -44,39 +44,47 @@ class InstructionTokens(gymnasium.ObservationWrapper, gymnasium.utils.RecordCons
 
 
 class ActionFeedback(gymnasium.Wrapper, gymnasium.utils.RecordConstructorArgs):
-    """Adds a `feedback` observation: the previous action's index and whether it failed, as ALFRED's agents
-    see `lastActionSuccess`. A policy without memory then knows that the step it just took hit a wall or a
-    look limit, and can choose otherwise.
+    """Adds a `feedback` observation: the last `history` actions' indices and whether each failed, as ALFRED's
+    agents see `lastActionSuccess`. A policy without memory then knows that the step it just took hit a wall or
+    a look limit, or that it has turned four times in a row, and can choose otherwise.
 
-    `feedback` is a `MultiDiscrete([n + 1, 2])` (SB3 one-hot encodes it): `[action, failed]`, where `action`
-    is n (the action space's size) after a reset or after an action given in the dict form.
+    `feedback` is a `MultiDiscrete([n + 1, 2] * history)` (SB3 one-hot encodes it): `[action, failed]` for the
+    last step, then the one before, ...; `action` is n (the action space's size) before the episode's first
+    steps and after an action given in the dict form.
 
     Args:
         env: an env with a `Discrete` action space and a `Dict` observation (a `LuminousEnv`, wrapped or not).
+        history: how many past steps to show.
     """
 
-    def __init__(self, env: gymnasium.Env):
-        gymnasium.utils.RecordConstructorArgs.__init__(self)
+    def __init__(self, env: gymnasium.Env, history: int = 1):
+        gymnasium.utils.RecordConstructorArgs.__init__(self, history=history)
         gymnasium.Wrapper.__init__(self, env)
         if not isinstance(env.action_space, spaces.Discrete) or not isinstance(env.observation_space, spaces.Dict):
             raise TypeError("ActionFeedback needs a Discrete action space and a Dict observation space, got "
                             f"{env.action_space} and {type(env.observation_space).__name__}")
+        if isinstance(history, bool) or not isinstance(history, int) or history < 1:
+            raise ValueError(f"ActionFeedback history: expected a positive integer, got {history!r}")
         self.none = int(env.action_space.n)
+        self.history = history
+        self._past = np.tile(np.array([self.none, 0], np.int64), history)
         self.observation_space = spaces.Dict({**env.observation_space.spaces,
-                                              "feedback": spaces.MultiDiscrete(np.array([self.none + 1, 2]))})
+                                              "feedback": spaces.MultiDiscrete(np.tile([self.none + 1, 2], history))})
 
-    def _with(self, observation: dict[str, Any], action: int, failed: bool) -> dict[str, Any]:
-        return {**observation, "feedback": np.array([action, int(failed)], np.int64)}
+    def _with(self, observation: dict[str, Any]) -> dict[str, Any]:
+        return {**observation, "feedback": self._past.copy()}
 
     def reset(self, **kwargs: Any) -> tuple[dict[str, Any], dict[str, Any]]:
         observation, info = self.env.reset(**kwargs)
-        return self._with(observation, self.none, False), info
+        self._past = np.tile(np.array([self.none, 0], np.int64), self.history)
+        return self._with(observation), info
 
     def step(self, action: Any) -> tuple[dict[str, Any], Any, bool, bool, dict[str, Any]]:
         observation, reward, terminated, truncated, info = self.env.step(action)
         index = int(action) if isinstance(action, (int, np.integer, np.ndarray)) and np.ndim(action) == 0 else self.none
         index = index if 0 <= index < self.none else self.none
-        return self._with(observation, index, info.get("failure_code") is not None), reward, terminated, truncated, info
+        self._past = np.concatenate([[index, int(info.get("failure_code") is not None)], self._past[:-2]])
+        return self._with(observation), reward, terminated, truncated, info
 
 
 class FailureLimitEnds(gymnasium.Wrapper, gymnasium.utils.RecordConstructorArgs):

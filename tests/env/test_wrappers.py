@@ -76,6 +76,25 @@ def test_action_feedback_gives_the_previous_action_and_whether_it_failed():
         ActionFeedback(gymnasium.make("CartPole-v1"))
 
 
+def test_action_feedback_with_a_history_shows_the_last_steps_newest_first():
+    env = ActionFeedback(InstructionTokens(gymnasium.make("Luminous-NavToObject-64-v1")), history=3)
+    n = env.unwrapped.action_space.n
+    assert env.observation_space["feedback"] == gymnasium.spaces.MultiDiscrete([n + 1, 2] * 3)
+    obs, _ = env.reset(seed=0)
+    assert obs["feedback"].tolist() == [n, 0] * 3
+    put = _failing_action(env)
+    for a in (1, put, 2):
+        obs, *_ = env.step(a)
+    assert obs["feedback"].tolist() == [2, 0, put, 1, 1, 0] and env.observation_space.contains(obs)
+    obs, *_ = env.step(1)
+    assert obs["feedback"].tolist() == [1, 0, 2, 0, put, 1]
+    obs, _ = env.reset(seed=1)  # a new episode forgets
+    assert obs["feedback"].tolist() == [n, 0] * 3
+    env.close()
+    with pytest.raises(ValueError, match="history"):
+        ActionFeedback(InstructionTokens(gymnasium.make("Luminous-NavToObject-64-v1")), history=0)
+
+
 def test_failure_limit_ends_turns_that_truncation_into_a_termination():
     wrapped = FailureLimitEnds(gymnasium.make("Luminous-NavToObject-64-v1", max_failures=3))
     plain = gymnasium.make("Luminous-NavToObject-64-v1", max_failures=3)
