@@ -75,7 +75,8 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--max-steps", type=int, default=2_000_000, help="stop training here if the budget lasts")
     p.add_argument("--n-envs", type=int, default=2, help="training env processes (default 2)")
     p.add_argument("--eval-episodes", type=int, default=100, help="held-out episodes per policy (default 100)")
-    p.add_argument("--policies", default=",".join(POLICIES), help=f"policies to evaluate (default {','.join(POLICIES)})")
+    p.add_argument("--policies", default=",".join(POLICIES),
+                   help=f"policies to evaluate (default {','.join(POLICIES)})")
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--ppo", action="append", default=[], metavar="NAME=VALUE",
                    help=f"PPO option ({train_ppo.PPO_DEFAULTS})")
@@ -102,7 +103,8 @@ def main(argv: list[str] | None = None) -> int:
     else:
         model = train_ppo.train(args.env, args.out, args.max_steps, seed=args.seed, n_envs=args.n_envs,
                                 ppo_kwargs=train_ppo._kwargs(args.ppo), cpu_budget_s=args.cpu_minutes * 60,
-                                resume=args.resume, save_every=2000, actions=NAVIGATION if args.actions == "navigation" else None)
+                                resume=args.resume, save_every=2000,
+                                actions=NAVIGATION if args.actions == "navigation" else None)
     wall = time.perf_counter() - t0
     progress = json.loads((args.out / "progress.json").read_text())
     config = json.loads((args.out / "config.json").read_text())
@@ -132,11 +134,13 @@ def main(argv: list[str] | None = None) -> int:
 
     quarter = max(1, len(rows) // 4)
     first, last = rows[:quarter], rows[-quarter:]
+    success = {name: [r["success"] for r in part] for name, part in (("first", first), ("last", last))}
     report = {"env_id": args.env, "cpu_minutes_budget": args.cpu_minutes, "cpu_minutes": round(cpu_min, 2),
               "timesteps": int(model.num_timesteps), "training_episodes": len(rows), "n_envs": config["n_envs"],
-              "ppo": config["ppo"], "actions": config.get("actions"), "eval_seeds": [seeds[0], seeds[-1]], "eval": summary,
-              "training_success_first_quarter": round(float(np.mean([r["success"] for r in first])), 4) if rows else None,
-              "training_success_last_quarter": round(float(np.mean([r["success"] for r in last])), 4) if rows else None,
+              "ppo": config["ppo"], "actions": config.get("actions"), "eval_seeds": [seeds[0], seeds[-1]],
+              "eval": summary,
+              "training_success_first_quarter": round(float(np.mean(success["first"])), 4) if rows else None,
+              "training_success_last_quarter": round(float(np.mean(success["last"])), 4) if rows else None,
               "load_average_end": os.getloadavg()}
     write_atomic(bench_path, json.dumps(report, indent=2) + "\n")
     png = args.png or args.out / "curve.png"

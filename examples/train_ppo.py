@@ -48,9 +48,9 @@ import gymnasium
 import numpy as np
 
 import luminous_sim  # noqa: F401  (registers the ids)
-from luminous_sim.env.actions import NAVIGATION
 from luminous_sim.assets.objio import write_atomic
 from luminous_sim.env import ActionFeedback, ActionSubset, FailureLimitEnds, InstructionTokens, SceneRepeat
+from luminous_sim.env.actions import NAVIGATION
 
 DEFAULT_ENV = "Luminous-NavToObject-64-v1"
 TRAIN_KWARGS: dict[str, Any] = {}
@@ -440,7 +440,8 @@ def main(argv: Sequence[str] | None = None) -> int:
         report |= {name: success_summary(o) for name, o in runs.items()}
         report["episodes"] = {name: [asdict(x) for x in o] for name, o in runs.items()}
     write_atomic(args.out / "eval.json", json.dumps(report, indent=2) + "\n")
-    refs = {f"{name} (eval)": report[name]["success_rate"] for name in ("random", "random-nav", "ppo") if name in report}
+    refs = {f"{name} (eval)": report[name]["success_rate"] for name in ("random", "random-nav", "ppo")
+            if name in report}
     plot_curve(read_curve(args.out / "curve.csv"), args.out / "curve.png", references=refs,
                title=f"PPO MultiInputPolicy on {args.env}")
     print(json.dumps({k: v for k, v in report.items() if k != "episodes"}, indent=2))

@@ -36,7 +36,8 @@ _WHERE = {
     "OraclePolicy": "oracle_policy",
     "EnvEntry": "registration", "load_entries": "registration", "register_envs": "registration",
     "RewardConfig": "rewards",
-    "InstructionTokens": "wrappers", "ActionFeedback": "wrappers", "ActionSubset": "wrappers", "FailureLimitEnds": "wrappers",
+    "InstructionTokens": "wrappers", "ActionFeedback": "wrappers", "ActionSubset": "wrappers",
+    "FailureLimitEnds": "wrappers",
     "SceneRepeat": "wrappers",
 }
 

@@ -65,7 +65,7 @@ def test_action_feedback_gives_the_previous_action_and_whether_it_failed():
     obs, _ = env.reset(seed=0)
     assert obs["feedback"].tolist() == [n, 0] and env.observation_space.contains(obs)
     put = _failing_action(env)
-    obs, _, terminated, truncated, info = env.step(put)
+    obs, _, _, _, info = env.step(put)
     assert info["failure_code"] is not None and obs["feedback"].tolist() == [put, 1]
     obs, _, _, _, info = env.step(2)  # RotateRight never fails
     assert info["failure_code"] is None and obs["feedback"].tolist() == [2, 0]
