@@ -14,15 +14,18 @@ policy). Everything is saved together every `--save-every` steps, so an interrup
 `--resume`; `--cpu-minutes` bounds the training's CPU time (trainer and env workers, resumed runs included).
 
 The policy is SB3's `MultiInputPolicy`: a CNN over `rgb`, a one-hot encoding of the instruction's token ids
-(`luminous_sim.env.InstructionTokens`), so the agent knows which object the episode asks for, and the previous
-action with whether it failed (`ActionFeedback`, as ALFRED's agents see `lastActionSuccess`; a policy without
-memory then knows it just hit a wall). Training envs are the id as registered (`--env-kwarg name=value`, a TOML
-value, changes them) with three training-side wrappers: the failure limit (10 failed actions) ends an
-episode as a termination (`FailureLimitEnds`: SB3 would otherwise bootstrap it as if the episode went on,
-and the agent would not learn that failing loses the goal's reward), each scene serves 4 episodes with new
-goals (`SceneRepeat`: a reset in a built world costs about a third of a new scene's), and rewards are
-normalised (`VecNormalize`). Evaluation uses the id as registered (`--eval-kwarg` on top), whose episodes
-the oracle solves.
+(`luminous_sim.env.InstructionTokens`), so the agent knows which object the episode asks for, and feedback
+(`ActionFeedback`): the last 8 actions with whether each failed, as ALFRED's agents see `lastActionSuccess`,
+and the episode's failed actions so far (a policy without memory then knows it just hit a wall, that it has
+turned a full circle, and how close the failure limit is). `--actions navigation` restricts the agent to the
+five navigation actions (`ActionSubset`), all that `goto_object` needs. Training envs are the id as
+registered but with a failed action costing 0.5 (`TRAIN_KWARGS`; ALFRED's 0.05 is far below what the 10th
+failure costs: the episode and the goal's reward), changed with `--env-kwarg name=value` (a TOML value, on top
+of that default), and three training-side wrappers: the failure limit ends an episode as a
+termination (`FailureLimitEnds`: SB3 would otherwise bootstrap it as if the episode went on), each scene
+serves 4 episodes with new goals (`SceneRepeat`: a reset in a built world costs about a third of a new
+scene's), and rewards are normalised (`VecNormalize`). Evaluation uses the id as registered (`--eval-kwarg`
+on top), whose episodes the oracle solves.
 
 This is an example to read and change (policy, hyperparameters, wrappers) rather than a command of the
 `luminous` CLI: stable-baselines3 and torch are optional extras, and a fixed set of flags would hide what a
@@ -53,8 +56,10 @@ from luminous_sim.env import ActionFeedback, ActionSubset, FailureLimitEnds, Ins
 from luminous_sim.env.actions import NAVIGATION
 
 DEFAULT_ENV = "Luminous-NavToObject-64-v1"
-TRAIN_KWARGS: dict[str, Any] = {}
-"""Env options for training by default: none, the id as registered (see the module docstring)."""
+TRAIN_KWARGS: dict[str, Any] = {"reward": {"failure": -0.5}}
+"""Env options for training by default: the id as registered, but a failed action costs 0.5 rather than ALFRED's
+0.05: about what it costs in the end, as the 10th failure ends the episode and loses the goal's 9 (see the
+module docstring)."""
 PPO_DEFAULTS: dict[str, Any] = {"n_steps": 128, "batch_size": 64, "n_epochs": 4, "learning_rate": 3e-4,
                                 "gamma": 0.99, "gae_lambda": 0.95, "ent_coef": 0.02, "clip_range": 0.2}
 CURVE_FIELDS = ("timesteps", "episode_return", "episode_length", "success", "cpu_seconds")
@@ -82,7 +87,8 @@ def make_env(env_id: str, env_kwargs: dict[str, Any] | None = None, *, feedback:
     env = InstructionTokens(env)
     if actions:
         env = ActionSubset(env, actions)
-    return ActionFeedback(env, FEEDBACK_HISTORY) if feedback else env
+    limit = int(env.unwrapped.config.max_failures)  # type: ignore[attr-defined]
+    return ActionFeedback(env, FEEDBACK_HISTORY, failures=min(limit, 100)) if feedback else env
 
 
 def _monitored(env_id: str, env_kwargs: dict[str, Any], feedback: bool, actions: Sequence[str] | None,

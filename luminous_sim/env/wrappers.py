@@ -50,40 +50,51 @@ class ActionFeedback(gymnasium.Wrapper, gymnasium.utils.RecordConstructorArgs):
 
     `feedback` is a `MultiDiscrete([n + 1, 2] * history)` (SB3 one-hot encodes it): `[action, failed]` for the
     last step, then the one before, ...; `action` is n (the action space's size) before the episode's first
-    steps and after an action given in the dict form.
+    steps and after an action given in the dict form. With `failures` > 0 one more entry follows: the episode's
+    failed actions so far (`info["failures"]`), at most `failures`, so a policy can see the failure limit coming.
 
     Args:
         env: an env with a `Discrete` action space and a `Dict` observation (a `LuminousEnv`, wrapped or not).
         history: how many past steps to show.
+        failures: show the count of failed actions up to this (0: not shown).
     """
 
-    def __init__(self, env: gymnasium.Env, history: int = 1):
-        gymnasium.utils.RecordConstructorArgs.__init__(self, history=history)
+    def __init__(self, env: gymnasium.Env, history: int = 1, failures: int = 0):
+        gymnasium.utils.RecordConstructorArgs.__init__(self, history=history, failures=failures)
         gymnasium.Wrapper.__init__(self, env)
         if not isinstance(env.action_space, spaces.Discrete) or not isinstance(env.observation_space, spaces.Dict):
             raise TypeError("ActionFeedback needs a Discrete action space and a Dict observation space, got "
                             f"{env.action_space} and {type(env.observation_space).__name__}")
         if isinstance(history, bool) or not isinstance(history, int) or history < 1:
             raise ValueError(f"ActionFeedback history: expected a positive integer, got {history!r}")
+        if isinstance(failures, bool) or not isinstance(failures, int) or failures < 0:
+            raise ValueError(f"ActionFeedback failures: expected an integer >= 0, got {failures!r}")
         self.none = int(env.action_space.n)
-        self.history = history
+        self.history, self.failures = history, failures
         self._past = np.tile(np.array([self.none, 0], np.int64), history)
-        self.observation_space = spaces.Dict({**env.observation_space.spaces,
-                                              "feedback": spaces.MultiDiscrete(np.tile([self.none + 1, 2], history))})
+        self._failed = 0
+        nvec = np.tile([self.none + 1, 2], history)
+        if failures:
+            nvec = np.append(nvec, failures + 1)
+        self.observation_space = spaces.Dict({**env.observation_space.spaces, "feedback": spaces.MultiDiscrete(nvec)})
 
     def _with(self, observation: dict[str, Any]) -> dict[str, Any]:
-        return {**observation, "feedback": self._past.copy()}
+        feedback = np.append(self._past, min(self._failed, self.failures)) if self.failures else self._past.copy()
+        return {**observation, "feedback": feedback}
 
     def reset(self, **kwargs: Any) -> tuple[dict[str, Any], dict[str, Any]]:
         observation, info = self.env.reset(**kwargs)
         self._past = np.tile(np.array([self.none, 0], np.int64), self.history)
+        self._failed = 0
         return self._with(observation), info
 
     def step(self, action: Any) -> tuple[dict[str, Any], Any, bool, bool, dict[str, Any]]:
         observation, reward, terminated, truncated, info = self.env.step(action)
         index = int(action) if isinstance(action, (int, np.integer, np.ndarray)) and np.ndim(action) == 0 else self.none
         index = index if 0 <= index < self.none else self.none
-        self._past = np.concatenate([[index, int(info.get("failure_code") is not None)], self._past[:-2]])
+        failed = info.get("failure_code") is not None
+        self._past = np.concatenate([[index, int(failed)], self._past[:-2]])
+        self._failed = int(info.get("failures", self._failed + failed))
         return self._with(observation), reward, terminated, truncated, info
 
 

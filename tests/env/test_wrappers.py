@@ -95,6 +95,23 @@ def test_action_feedback_with_a_history_shows_the_last_steps_newest_first():
         ActionFeedback(InstructionTokens(gymnasium.make("Luminous-NavToObject-64-v1")), history=0)
 
 
+def test_action_feedback_can_count_the_failed_actions_up_to_a_cap():
+    env = ActionFeedback(gymnasium.make("Luminous-NavToObject-64-v1", max_failures=100), failures=2)
+    n = env.unwrapped.action_space.n
+    assert env.observation_space["feedback"] == gymnasium.spaces.MultiDiscrete([n + 1, 2, 3])
+    obs, _ = env.reset(seed=0)
+    assert obs["feedback"].tolist() == [n, 0, 0]
+    put = _failing_action(env)
+    counts = []
+    for a in (put, 2, put, put):
+        obs, *_ = env.step(a)
+        counts.append(int(obs["feedback"][-1]))
+        assert env.observation_space.contains(obs)
+    assert counts == [1, 1, 2, 2]  # capped at 2
+    assert env.reset(seed=0)[0]["feedback"].tolist() == [n, 0, 0]
+    env.close()
+
+
 def test_failure_limit_ends_turns_that_truncation_into_a_termination():
     wrapped = FailureLimitEnds(gymnasium.make("Luminous-NavToObject-64-v1", max_failures=3))
     plain = gymnasium.make("Luminous-NavToObject-64-v1", max_failures=3)
