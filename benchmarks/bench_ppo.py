@@ -123,7 +123,8 @@ def main(argv: list[str] | None = None) -> int:
               "oracle": train_ppo.oracle_policy, "ppo": lambda: train_ppo.model_policy(model, args.seed)}
     for name in policies:
         t = time.process_time()
-        outcomes = train_ppo.run_episodes(makers[name](), args.env, seeds,
+        seen = train_ppo.observation_kwargs(config["env_kwargs"]) if name == "ppo" else {}
+        outcomes = train_ppo.run_episodes(makers[name](), args.env, seeds, seen,
                                           feedback=name == "ppo" and config.get("feedback", False),
                                           actions=config.get("actions") if name == "ppo" else None)
         summary[name] = train_ppo.success_summary(outcomes)
