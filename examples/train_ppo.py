@@ -52,7 +52,14 @@ import numpy as np
 
 import luminous_sim  # noqa: F401  (registers the ids)
 from luminous_sim.assets.objio import write_atomic
-from luminous_sim.env import ActionFeedback, ActionSubset, FailureLimitEnds, InstructionTokens, SceneRepeat
+from luminous_sim.env import (
+    ActionFeedback,
+    ActionSubset,
+    FailureLimitEnds,
+    InstructionTokens,
+    NewPlaceBonus,
+    SceneRepeat,
+)
 from luminous_sim.env.actions import NAVIGATION
 
 DEFAULT_ENV = "Luminous-NavToObject-64-v1"
@@ -66,6 +73,9 @@ OBSERVATION_OPTIONS = ("depth", "segmentation", "pose", "inventory", "targets", 
 PPO_DEFAULTS: dict[str, Any] = {"n_steps": 128, "batch_size": 64, "n_epochs": 4, "learning_rate": 3e-4,
                                 "gamma": 0.99, "gae_lambda": 0.95, "ent_coef": 0.03, "clip_range": 0.2}
 CURVE_FIELDS = ("timesteps", "episode_return", "episode_length", "success", "cpu_seconds")
+NEW_PLACE_BONUS = 0.2
+"""Training reward for each grid position first stood on in an episode (`NewPlaceBonus`), as much as a path step
+gained toward the goal earns."""
 FEEDBACK_HISTORY = 8
 """Past steps in the `feedback` observation (`ActionFeedback`): enough to see a full turn (4 rotations) and what
 came before it, a short memory for a policy that has none."""
@@ -91,7 +101,7 @@ def make_env(env_id: str, env_kwargs: dict[str, Any] | None = None, *, feedback:
     `scene_repeats` episodes (`SceneRepeat`)."""
     env: gymnasium.Env = gymnasium.make(env_id, **(env_kwargs or {}))
     if training:
-        env = FailureLimitEnds(SceneRepeat(env, scene_repeats))
+        env = NewPlaceBonus(FailureLimitEnds(SceneRepeat(env, scene_repeats)), NEW_PLACE_BONUS)
     env = InstructionTokens(env)
     if actions:
         env = ActionSubset(env, actions)
@@ -249,6 +259,7 @@ def train(env_id: str, out: Path, steps: int, *, seed: int = 0, env_kwargs: dict
         rows, cpu_before = [], 0.0
     config = {"env_id": env_id, "env_kwargs": env_kwargs, "ppo": ppo_kwargs, "policy": "MultiInputPolicy",
               "feedback": feedback, "feedback_history": FEEDBACK_HISTORY if feedback else 0,
+              "new_place_bonus": NEW_PLACE_BONUS,
               "actions": list(actions) if actions else None,
               "normalize_reward": normalize_reward, "failure_limit_ends": True,
               "scene_repeats": scene_repeats,

@@ -26,7 +26,14 @@ if TYPE_CHECKING:
     from luminous_sim.env.oracle_policy import OraclePolicy
     from luminous_sim.env.registration import EnvEntry, load_entries, register_envs
     from luminous_sim.env.rewards import RewardConfig
-    from luminous_sim.env.wrappers import ActionFeedback, ActionSubset, FailureLimitEnds, InstructionTokens, SceneRepeat
+    from luminous_sim.env.wrappers import (
+        ActionFeedback,
+        ActionSubset,
+        FailureLimitEnds,
+        InstructionTokens,
+        NewPlaceBonus,
+        SceneRepeat,
+    )
 
 _WHERE = {
     "ActionTable": "actions",
@@ -37,7 +44,7 @@ _WHERE = {
     "EnvEntry": "registration", "load_entries": "registration", "register_envs": "registration",
     "RewardConfig": "rewards",
     "InstructionTokens": "wrappers", "ActionFeedback": "wrappers", "ActionSubset": "wrappers",
-    "FailureLimitEnds": "wrappers",
+    "FailureLimitEnds": "wrappers", "NewPlaceBonus": "wrappers",
     "SceneRepeat": "wrappers",
 }
 
@@ -52,6 +59,7 @@ __all__ = [
     "FailureLimitEnds",
     "InstructionTokens",
     "LuminousEnv",
+    "NewPlaceBonus",
     "OraclePolicy",
     "RewardConfig",
     "SceneRepeat",

@@ -186,3 +186,40 @@ class ActionSubset(gymnasium.ActionWrapper, gymnasium.utils.RecordConstructorArg
         if not 0 <= index < len(self.indices):  # outside the subset: an index outside the env's space, a failure
             return int(self.env.action_space.n)  # type: ignore[attr-defined]
         return self.indices[index]
+
+
+class NewPlaceBonus(gymnasium.Wrapper, gymnasium.utils.RecordConstructorArgs):
+    """For training: `bonus` added to the reward of each step that takes the agent to a grid position (0.25 m
+    cells) it has not stood on before in the episode, a coverage reward as navigation agents are often trained
+    with. Without it, an agent that fears failed actions learns to turn in place (turning never fails), which
+    finds only what is around the start. `info["new_place"]` says whether the step earned it.
+
+    Args:
+        env: a `LuminousEnv`, wrapped or not.
+        bonus: the reward per new position.
+    """
+
+    CELL = 0.25
+    """ALFRED's grid step (metres)."""
+
+    def __init__(self, env: gymnasium.Env, bonus: float = 0.1):
+        gymnasium.utils.RecordConstructorArgs.__init__(self, bonus=bonus)
+        gymnasium.Wrapper.__init__(self, env)
+        self.bonus = float(bonus)
+        self._seen: set[tuple[int, int]] = set()
+
+    def _cell(self) -> tuple[int, int]:
+        agent = self.env.unwrapped.world.agent  # type: ignore[attr-defined]
+        return round(agent.x / self.CELL), round(agent.y / self.CELL)
+
+    def reset(self, **kwargs: Any) -> tuple[Any, dict[str, Any]]:
+        observation, info = self.env.reset(**kwargs)
+        self._seen = {self._cell()}
+        return observation, info
+
+    def step(self, action: Any) -> tuple[Any, Any, bool, bool, dict[str, Any]]:
+        observation, reward, terminated, truncated, info = self.env.step(action)
+        cell = self._cell()
+        new = cell not in self._seen
+        self._seen.add(cell)
+        return observation, reward + (self.bonus if new else 0.0), terminated, truncated, {**info, "new_place": new}
