@@ -1,5 +1,5 @@
 """The learning wrappers: InstructionTokens (the Text instruction as token ids over the fixed vocabulary),
-ActionFeedback, FailureLimitEnds and SceneRepeat."""
+ActionFeedback, ActionSubset, FailureLimitEnds, SceneRepeat and NewPlaceBonus."""
 
 from __future__ import annotations
 
@@ -10,7 +10,14 @@ import numpy as np
 import pytest
 
 import luminous_sim  # noqa: F401  (registers the ids)
-from luminous_sim.env import ActionFeedback, ActionSubset, FailureLimitEnds, InstructionTokens, SceneRepeat
+from luminous_sim.env import (
+    ActionFeedback,
+    ActionSubset,
+    FailureLimitEnds,
+    InstructionTokens,
+    NewPlaceBonus,
+    SceneRepeat,
+)
 from luminous_sim.env.vocabulary import PAD, UNK, encode, vocabulary
 from luminous_sim.tasks import TEMPLATES
 
@@ -181,3 +188,33 @@ def test_action_subset_maps_its_indices_to_the_named_actions():
     nav.close()
     with pytest.raises(ValueError, match="Jump"):
         ActionSubset(gymnasium.make("Luminous-NavToObject-64-v1"), ["MoveAhead", "Jump"])
+
+
+def test_new_place_bonus_rewards_each_grid_position_once_per_episode():
+    plain = gymnasium.make("Luminous-NavToObject-64-v1", max_failures=100)
+    env = NewPlaceBonus(gymnasium.make("Luminous-NavToObject-64-v1", max_failures=100), bonus=0.5)
+    earned, revisits = 0, 0
+    for seed in range(5):
+        for e in (plain, env):
+            e.reset(seed=seed)
+        seen = {env._cell()}
+        action, back = 0, []
+        for _ in range(16):  # walk ahead (turning when blocked), then turn round and walk back over the same places
+            r0 = plain.step(action)[1]
+            _, r1, terminated, _, info = env.step(action)
+            cell = env._cell()
+            assert info["new_place"] == (cell not in seen) and r1 == pytest.approx(r0 + 0.5 * info["new_place"])
+            earned += info["new_place"]
+            revisits += action == 0 and info["failure_code"] is None and not info["new_place"]
+            seen.add(cell)
+            if terminated:
+                break
+            back.append(action)
+            action = 2 if info["failure_code"] is not None or len(back) in (4, 5) else 0
+        if earned and revisits:
+            break
+    assert earned >= 1 and revisits >= 1
+    env.reset(seed=3)  # a new episode: nothing carried over
+    assert env._seen == {env._cell()}
+    for e in (plain, env):
+        e.close()
