@@ -120,3 +120,9 @@ def test_cpu_seconds_counts_live_worker_processes(train_ppo):
 def test_bad_env_options_are_refused(train_ppo):
     with pytest.raises(SystemExit, match="name=value"):
         train_ppo.main(["--out", "x", "--env-kwarg", "max_steps"])
+
+
+def test_a_policy_is_evaluated_with_the_observation_options_it_was_trained_with(train_ppo):
+    kwargs = {"depth": True, "reward": {"failure": -0.2}, "max_steps": 40, "verify_expert": False, "pose": True}
+    assert train_ppo.observation_kwargs(kwargs) == {"depth": True, "pose": True}
+    assert train_ppo.observation_kwargs(train_ppo.TRAIN_KWARGS) == {"depth": True}
