@@ -61,7 +61,7 @@ def test_train_save_evaluate_and_resume(tmp_path, train_ppo, capsys):
     progress = json.loads((out / "progress.json").read_text())
     assert progress["timesteps"] == 128 and progress["cpu_seconds"] >= cpu[-1]
 
-    env = train_ppo.make_env(ENV, feedback=True)
+    env = train_ppo.make_env(ENV, train_ppo.observation_kwargs(config["env_kwargs"]), feedback=True)
     model = PPO.load(out / "model.zip", device="cpu")
     assert model.action_space == env.action_space  # (SB3 keeps the image channels first in its own space)
     obs, _ = env.reset(seed=7)
