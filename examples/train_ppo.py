@@ -1,23 +1,31 @@
 """Train PPO (stable-baselines3) on a small Luminous-Sim id: save the model, the learning curve (CSV and PNG),
-evaluate the trained policy and a random one on the same held-out seeds.
+evaluate the trained policy, two random ones and the oracle on the same held-out seeds.
 
     pip install -e '.[learn]'
     python examples/train_ppo.py --env Luminous-NavToObject-64-v1 --steps 20000 --out out/ppo
     python examples/train_ppo.py --out out/ppo --steps 40000 --resume      # go on from the last save
+    python examples/train_ppo.py --out out/ppo --steps 1000000 --cpu-minutes 60 --n-envs 2
 
 It writes to `--out`: `model.zip` (`PPO.load` reads it back), `curve.csv` (one row per finished training
-episode: timesteps, return, length, success), `curve.png`, `config.json` (what was run) and `eval.json`
-(success rate with a 95% Wilson interval, mean return and length, per policy). The model and the curve are
-saved together every `--save-every` steps, so an interrupted run resumes with `--resume`.
+episode: timesteps, return, length, success, the training's CPU seconds so far), `curve.png`, `config.json`
+(what was run), `progress.json` (timesteps and CPU seconds), `vecnormalize.pkl` (the reward scale) and
+`eval.json` (success rate with a 95% Wilson interval, mean return and length, how episodes ended, per
+policy). Everything is saved together every `--save-every` steps, so an interrupted run resumes with
+`--resume`; `--cpu-minutes` bounds the training's CPU time (trainer and env workers, resumed runs included).
 
-The policy is SB3's `MultiInputPolicy`: a CNN over `rgb` and a one-hot encoding of the instruction's token ids
-(`luminous_sim.env.InstructionTokens`), so the agent knows which object the episode asks for. Env options
-(`--env-kwarg name=value`, a TOML value) change the env for training; evaluation uses `--eval-kwarg` on top
-of the registered id. The defaults train without `verify_expert` (a reset costs about a third as much; some
-training episodes may then be unsolvable) and without the failure limit (`max_failures`: an untrained policy
-picks mostly interactions, which mostly fail, so with ALFRED's 10 its episodes end after about 10 steps and
-the budget goes to generating scenes: 319 resets in 2,818 steps in our first 25-minute run; failed actions
-still cost their reward), and evaluate on the id as registered, whose episodes the oracle solves.
+The policy is SB3's `MultiInputPolicy`: a CNN over `rgb`, a one-hot encoding of the instruction's token ids
+(`luminous_sim.env.InstructionTokens`), so the agent knows which object the episode asks for, and feedback
+(`ActionFeedback`): the last 8 actions with whether each failed, as ALFRED's agents see `lastActionSuccess`,
+and the episode's failed actions so far (a policy without memory then knows it just hit a wall, that it has
+turned a full circle, and how close the failure limit is). `--actions navigation` restricts the agent to the
+five navigation actions (`ActionSubset`), all that `goto_object` needs. Training envs are the id as
+registered but with a failed action costing 0.5 (`TRAIN_KWARGS`; ALFRED's 0.05 is far below what the 10th
+failure costs: the episode and the goal's reward), changed with `--env-kwarg name=value` (a TOML value, on top
+of that default), and three training-side wrappers: the failure limit ends an episode as a
+termination (`FailureLimitEnds`: SB3 would otherwise bootstrap it as if the episode went on), each scene
+serves 4 episodes with new goals (`SceneRepeat`: a reset in a built world costs about a third of a new
+scene's), and rewards are normalised (`VecNormalize`). Evaluation uses the id as registered (`--eval-kwarg`
+on top), whose episodes the oracle solves.
 
 This is an example to read and change (policy, hyperparameters, wrappers) rather than a command of the
 `luminous` CLI: stable-baselines3 and torch are optional extras, and a fixed set of flags would hide what a
@@ -44,66 +52,134 @@ import numpy as np
 
 import luminous_sim  # noqa: F401  (registers the ids)
 from luminous_sim.assets.objio import write_atomic
-from luminous_sim.env import InstructionTokens
+from luminous_sim.env import (
+    ActionFeedback,
+    ActionSubset,
+    FailureLimitEnds,
+    InstructionTokens,
+    NewPlaceBonus,
+    SceneRepeat,
+)
+from luminous_sim.env.actions import NAVIGATION
 
 DEFAULT_ENV = "Luminous-NavToObject-64-v1"
-TRAIN_KWARGS: dict[str, Any] = {"verify_expert": False, "max_failures": 1_000_000}
-"""Env options for training by default (see the module docstring)."""
-PPO_DEFAULTS: dict[str, Any] = {"n_steps": 128, "batch_size": 64, "n_epochs": 4, "learning_rate": 5e-4,
-                                "gamma": 0.99, "gae_lambda": 0.95, "ent_coef": 0.01, "clip_range": 0.2}
-CURVE_FIELDS = ("timesteps", "episode_return", "episode_length", "success")
+TRAIN_KWARGS: dict[str, Any] = {"depth": True, "reward": {"failure": -0.2}}
+"""Env options for training by default: the id as registered with a `depth` observation (evaluation adds it
+too: `observation_kwargs`), and a failed action costing 0.2 rather than ALFRED's 0.05, nearer what it costs
+in the end, as the 10th failure ends the episode and loses the goal's 9 (see the module docstring)."""
+OBSERVATION_OPTIONS = ("depth", "segmentation", "pose", "inventory", "targets", "grid", "object_slots",
+                       "step_instructions", "width", "height")
+"""Env options that change what a policy sees or does: a trained policy is evaluated with the same ones."""
+PPO_DEFAULTS: dict[str, Any] = {"n_steps": 128, "batch_size": 64, "n_epochs": 4, "learning_rate": 3e-4,
+                                "gamma": 0.99, "gae_lambda": 0.95, "ent_coef": 0.03, "clip_range": 0.2}
+CURVE_FIELDS = ("timesteps", "episode_return", "episode_length", "success", "cpu_seconds")
+NEW_PLACE_BONUS = 0.2
+"""Training reward for each grid position first stood on in an episode (`NewPlaceBonus`), as much as a path step
+gained toward the goal earns."""
+FEEDBACK_HISTORY = 8
+"""Past steps in the `feedback` observation (`ActionFeedback`): enough to see a full turn (4 rotations) and what
+came before it, a short memory for a policy that has none."""
 EVAL_SEED0 = 1_000_000
 """Evaluation seeds start here, far from the training env's seeds (the training env is reset with `--seed`,
 then draws its later episodes from its own generator)."""
 
-Policy = Callable[[dict[str, Any]], int]
+Policy = Callable[[dict[str, Any]], Any]
+"""Observation -> action (an index, or the ALFRED dict form the oracle may give)."""
 
 
-def make_env(env_id: str, env_kwargs: dict[str, Any] | None = None) -> gymnasium.Env:
-    """The registered id with its instruction as token ids (what SB3's `MultiInputPolicy` takes)."""
-    return InstructionTokens(gymnasium.make(env_id, **(env_kwargs or {})))
+def observation_kwargs(env_kwargs: dict[str, Any]) -> dict[str, Any]:
+    """The options among `env_kwargs` that a trained policy must be evaluated with (`OBSERVATION_OPTIONS`)."""
+    return {k: v for k, v in env_kwargs.items() if k in OBSERVATION_OPTIONS}
 
 
-def _monitored(env_id: str, env_kwargs: dict[str, Any]) -> gymnasium.Env:
+def make_env(env_id: str, env_kwargs: dict[str, Any] | None = None, *, feedback: bool = False,
+             actions: Sequence[str] | None = None, training: bool = False, scene_repeats: int = 1) -> gymnasium.Env:
+    """The registered id with its instruction as token ids (what SB3's `MultiInputPolicy` takes); with
+    `feedback`, the previous action and whether it failed as an observation (`ActionFeedback`); with `actions`
+    (names), the agent acts over those actions only (`ActionSubset`); with `training`,
+    the failure limit ends an episode as a termination (`FailureLimitEnds`) and each scene serves
+    `scene_repeats` episodes (`SceneRepeat`)."""
+    env: gymnasium.Env = gymnasium.make(env_id, **(env_kwargs or {}))
+    if training:
+        env = NewPlaceBonus(FailureLimitEnds(SceneRepeat(env, scene_repeats)), NEW_PLACE_BONUS)
+    env = InstructionTokens(env)
+    if actions:
+        env = ActionSubset(env, actions)
+    limit = int(env.unwrapped.config.max_failures)  # type: ignore[attr-defined]
+    return ActionFeedback(env, FEEDBACK_HISTORY, failures=min(limit, 100)) if feedback else env
+
+
+def _monitored(env_id: str, env_kwargs: dict[str, Any], feedback: bool, actions: Sequence[str] | None,
+               scene_repeats: int) -> gymnasium.Env:
     from stable_baselines3.common.monitor import Monitor
 
-    return Monitor(make_env(env_id, env_kwargs), info_keywords=("success",))
+    env = make_env(env_id, env_kwargs, feedback=feedback, actions=actions, training=True, scene_repeats=scene_repeats)
+    return Monitor(env, info_keywords=("success",))
 
 
-def make_vec_env(env_id: str, env_kwargs: dict[str, Any], n_envs: int, seed: int) -> Any:
-    """`n_envs` monitored envs, in this process (1) or in worker processes (more)."""
+def make_vec_env(env_id: str, env_kwargs: dict[str, Any], n_envs: int, seed: int, *, feedback: bool = False,
+                 actions: Sequence[str] | None = None, scene_repeats: int = 1, processes: bool = True) -> Any:
+    """`n_envs` monitored training envs, in worker processes (`processes` and more than one env) or in this one."""
     from functools import partial
 
     from stable_baselines3.common.vec_env import DummyVecEnv, SubprocVecEnv
 
-    makers = [partial(_monitored, env_id, env_kwargs) for _ in range(n_envs)]
-    vec = DummyVecEnv(makers) if n_envs == 1 else SubprocVecEnv(makers, start_method="fork")
+    makers = [partial(_monitored, env_id, env_kwargs, feedback, actions, scene_repeats) for _ in range(n_envs)]
+    vec = SubprocVecEnv(makers, start_method="fork") if processes and n_envs > 1 else DummyVecEnv(makers)
     vec.seed(seed)
     return vec
+
+
+def cpu_seconds(pids: Sequence[int] = ()) -> float:
+    """CPU time (user + system) of this process and of the live processes `pids` (e.g. a `SubprocVecEnv`'s
+    workers), read from `/proc` (Linux; elsewhere, this process only)."""
+    total = time.process_time()
+    ticks = os.sysconf("SC_CLK_TCK") if hasattr(os, "sysconf") else 100
+    for pid in pids:
+        try:
+            fields = Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+        except OSError:
+            continue
+        total += (int(fields[11]) + int(fields[12])) / ticks  # utime, stime (the 14th and 15th fields)
+    return total
+
+
+def worker_pids(vec: Any) -> list[int]:
+    """The pids of a (possibly wrapped) `SubprocVecEnv`'s workers; [] for envs in this process."""
+    while hasattr(vec, "venv"):
+        vec = vec.venv
+    return [p.pid for p in getattr(vec, "processes", [])]
 
 
 def _callback_class() -> type:
     from stable_baselines3.common.callbacks import BaseCallback
 
     class EpisodeLog(BaseCallback):
-        """Collects a curve row per finished episode; every `save_every` steps saves the model and the curve;
-        stops training once `deadline` (a `time.monotonic()` value) has passed."""
+        """Collects a curve row per finished episode (with the training's CPU seconds so far, `cpu()`); every
+        `save_every` steps saves the model and the curve; stops training once `deadline` (a `time.monotonic()`
+        value) has passed or `cpu()` has reached `cpu_budget` (checked every 16 calls)."""
 
         def __init__(self, rows: list[dict[str, Any]], save: Callable[[], None], save_every: int,
-                     deadline: float | None):
+                     deadline: float | None, cpu: Callable[[], float], cpu_budget: float | None = None):
             super().__init__()
             self.rows, self.save, self.save_every, self.deadline = rows, save, save_every, deadline
+            self.cpu, self.cpu_budget = cpu, cpu_budget
             self._next_save = save_every
+            self._calls = 0
 
         def _on_step(self) -> bool:
             for info in self.locals["infos"]:
                 episode = info.get("episode")
                 if episode is not None:
                     self.rows.append({"timesteps": self.num_timesteps, "episode_return": round(float(episode["r"]), 6),
-                                      "episode_length": int(episode["l"]), "success": int(bool(episode["success"]))})
+                                      "episode_length": int(episode["l"]), "success": int(bool(episode["success"])),
+                                      "cpu_seconds": round(self.cpu(), 1)})
             if self.num_timesteps >= self._next_save:
                 self.save()
                 self._next_save = self.num_timesteps + self.save_every
+            self._calls += 1
+            if self.cpu_budget is not None and self._calls % 16 == 0 and self.cpu() >= self.cpu_budget:
+                return False
             return self.deadline is None or time.monotonic() < self.deadline
 
     return EpisodeLog
@@ -120,7 +196,8 @@ def write_curve(rows: Sequence[dict[str, Any]], path: Path) -> None:
 def read_curve(path: Path) -> list[dict[str, Any]]:
     with path.open(newline="") as fh:
         return [{"timesteps": int(r["timesteps"]), "episode_return": float(r["episode_return"]),
-                 "episode_length": int(r["episode_length"]), "success": int(r["success"])} for r in csv.DictReader(fh)]
+                 "episode_length": int(r["episode_length"]), "success": int(r["success"]),
+                 "cpu_seconds": float(r.get("cpu_seconds") or 0.0)} for r in csv.DictReader(fh)]
 
 
 def save_model(model: Any, path: Path) -> None:
@@ -132,46 +209,82 @@ def save_model(model: Any, path: Path) -> None:
 
 def train(env_id: str, out: Path, steps: int, *, seed: int = 0, env_kwargs: dict[str, Any] | None = None,
           ppo_kwargs: dict[str, Any] | None = None, n_envs: int = 1, save_every: int = 5000, resume: bool = False,
-          time_budget_s: float | None = None, torch_threads: int | None = 1, verbose: int = 0) -> Any:
-    """Train (or go on training) PPO with `MultiInputPolicy` until `steps` timesteps in all, or until
-    `time_budget_s` seconds of training have passed; the model.
+          time_budget_s: float | None = None, cpu_budget_s: float | None = None, feedback: bool = True,
+          actions: Sequence[str] | None = None,
+          normalize_reward: bool = True, scene_repeats: int = 4, processes: bool = True, torch_threads: int | None = 1,
+          verbose: int = 0) -> Any:
+    """Train (or go on training) PPO with `MultiInputPolicy` until `steps` timesteps in all, until
+    `time_budget_s` seconds of this call have passed, or until the training's CPU time (this process and its env
+    workers, every call on this `out` together) reaches `cpu_budget_s`; the model.
+
+    `feedback` adds the previous action and whether it failed to the observation (`ActionFeedback`; evaluate
+    with `make_env(..., feedback=True)`); `actions` (names, e.g. `NAVIGATION`) restricts the agent to those
+    actions (`ActionSubset`; evaluate with the same); `normalize_reward` scales rewards by a running estimate of the
+    return's spread (SB3's `VecNormalize`, rewards only; saved as `vecnormalize.pkl`). Training episodes end
+    at the failure limit as terminations (`FailureLimitEnds`), and each training scene serves `scene_repeats`
+    episodes with new goals (`SceneRepeat`: a reset in a built world costs about a third of a new scene's).
 
     `torch_threads` (None: torch's default) is 1 by default: the networks are small and the env's steps take
     most of the time, and on a busy machine torch's intra-op threads spin (PPO took 111 s for 256 steps with
     2 threads against 13 s with 1 on our 2 shared cores).
 
-    Writes `model.zip`, `curve.csv` and `config.json` under `out` (and saves them every `save_every` steps).
+    Writes `model.zip`, `curve.csv`, `progress.json` (timesteps and CPU seconds so far) and `config.json` under
+    `out` (and saves them every `save_every` steps).
     """
     import stable_baselines3
     import torch
     from stable_baselines3 import PPO
+    from stable_baselines3.common.vec_env import VecNormalize
 
     if torch_threads is not None:
         torch.set_num_threads(torch_threads)
     env_kwargs = dict(TRAIN_KWARGS if env_kwargs is None else env_kwargs)
     ppo_kwargs = {**PPO_DEFAULTS, **(ppo_kwargs or {})}
     out.mkdir(parents=True, exist_ok=True)
-    model_path, curve_path = out / "model.zip", out / "curve.csv"
-    vec = make_vec_env(env_id, env_kwargs, n_envs, seed)
-    if resume and model_path.exists():
+    model_path, curve_path, norm_path = out / "model.zip", out / "curve.csv", out / "vecnormalize.pkl"
+    progress_path = out / "progress.json"
+    resuming = resume and model_path.exists()
+    vec = make_vec_env(env_id, env_kwargs, n_envs, seed, feedback=feedback, actions=actions,
+                       scene_repeats=scene_repeats, processes=processes)
+    pids = worker_pids(vec)
+    if normalize_reward:
+        vec = (VecNormalize.load(str(norm_path), vec) if resuming and norm_path.exists()
+               else VecNormalize(vec, norm_obs=False, norm_reward=True, gamma=ppo_kwargs["gamma"]))
+    if resuming:
         model = PPO.load(model_path, env=vec, device="cpu")
         rows = read_curve(curve_path) if curve_path.exists() else []
+        cpu_before = json.loads(progress_path.read_text())["cpu_seconds"] if progress_path.exists() else 0.0
     else:
         model = PPO("MultiInputPolicy", vec, seed=seed, device="cpu", verbose=verbose, **ppo_kwargs)
-        rows = []
+        rows, cpu_before = [], 0.0
     config = {"env_id": env_id, "env_kwargs": env_kwargs, "ppo": ppo_kwargs, "policy": "MultiInputPolicy",
-              "steps": steps, "seed": seed, "n_envs": n_envs, "stable_baselines3": stable_baselines3.__version__,
-              "torch": torch.__version__, "torch_threads": torch.get_num_threads()}
+              "feedback": feedback, "feedback_history": FEEDBACK_HISTORY if feedback else 0,
+              "new_place_bonus": NEW_PLACE_BONUS,
+              "actions": list(actions) if actions else None,
+              "normalize_reward": normalize_reward, "failure_limit_ends": True,
+              "scene_repeats": scene_repeats,
+              "steps": steps, "seed": seed, "n_envs": n_envs, "processes": bool(pids),
+              "stable_baselines3": stable_baselines3.__version__, "torch": torch.__version__,
+              "torch_threads": torch.get_num_threads()}
     write_atomic(out / "config.json", json.dumps(config, indent=2) + "\n")
+    cpu_start = cpu_seconds(pids)
+
+    def cpu() -> float:
+        return cpu_before + cpu_seconds(pids) - cpu_start
 
     def save() -> None:
         save_model(model, model_path)
         write_curve(rows, curve_path)
+        if isinstance(vec, VecNormalize):
+            vec.save(str(norm_path))
+        write_atomic(progress_path, json.dumps({"timesteps": int(model.num_timesteps),
+                                                "cpu_seconds": round(cpu(), 1)}) + "\n")
 
     remaining = steps - model.num_timesteps
     deadline = None if time_budget_s is None else time.monotonic() + time_budget_s
-    if remaining > 0:
-        model.learn(remaining, callback=_callback_class()(rows, save, save_every, deadline), reset_num_timesteps=False)
+    if remaining > 0 and (cpu_budget_s is None or cpu() < cpu_budget_s):
+        log = _callback_class()(rows, save, save_every, deadline, cpu, cpu_budget_s)
+        model.learn(remaining, callback=log, reset_num_timesteps=False)
     save()
     vec.close()
     return model
@@ -185,12 +298,17 @@ class Outcome:
     success: bool
     episode_return: float
     length: int
+    end: str = ""
+    """How it ended: `success`, `stop` (Stop before success), `failures` (the failure limit) or `steps`."""
 
 
 def run_episodes(policy_for: Callable[[gymnasium.Env], Policy], env_id: str, seeds: Sequence[int],
-                 env_kwargs: dict[str, Any] | None = None) -> list[Outcome]:
-    """One episode per seed with the policy `policy_for(env)` gives (observations as `make_env` makes them)."""
-    env = make_env(env_id, env_kwargs)
+                 env_kwargs: dict[str, Any] | None = None, *, feedback: bool = False,
+                 actions: Sequence[str] | None = None) -> list[Outcome]:
+    """One episode per seed with the policy `policy_for(env)` gives (observations and actions as `make_env`
+    makes them)."""
+    env = make_env(env_id, env_kwargs, feedback=feedback, actions=actions)
+    limit = env.unwrapped.config.max_failures  # type: ignore[attr-defined]
     policy = policy_for(env)
     out = []
     try:
@@ -200,7 +318,9 @@ def run_episodes(policy_for: Callable[[gymnasium.Env], Policy], env_id: str, see
             while not done:
                 obs, reward, terminated, truncated, info = env.step(policy(obs))
                 total, n, done = total + float(reward), n + 1, terminated or truncated
-            out.append(Outcome(seed, bool(info["success"]), round(total, 6), n))
+            end = ("success" if info["success"] else "stop" if terminated
+                   else "failures" if info["failures"] >= limit else "steps")
+            out.append(Outcome(seed, bool(info["success"]), round(total, 6), n, end))
     finally:
         env.close()
     return out
@@ -212,6 +332,24 @@ def model_policy(model: Any, seed: int = 0, deterministic: bool = False) -> Call
         model.set_random_seed(seed)
         return lambda obs: int(model.predict(obs, deterministic=deterministic)[0])
     return policy_for
+
+
+def random_nav_policy(seed: int) -> Callable[[gymnasium.Env], Policy]:
+    """Uniform over the five navigation actions (MoveAhead, RotateLeft, RotateRight, LookUp, LookDown), from a
+    seeded generator: a random walk, what wandering alone achieves."""
+    from luminous_sim.env.actions import NAVIGATION
+
+    def policy_for(env: gymnasium.Env) -> Policy:
+        rng = np.random.default_rng(seed)
+        return lambda obs: int(rng.integers(len(NAVIGATION)))
+    return policy_for
+
+
+def oracle_policy() -> Callable[[gymnasium.Env], Policy]:
+    """The expert (`OraclePolicy`): what the episode allows at best."""
+    from luminous_sim.env import OraclePolicy
+
+    return lambda env: OraclePolicy(env)
 
 
 def random_policy(seed: int) -> Callable[[gymnasium.Env], Policy]:
@@ -231,7 +369,8 @@ def success_summary(outcomes: Sequence[Outcome]) -> dict[str, Any]:
     ci = binomtest(k, n).proportion_ci(confidence_level=0.95, method="wilson")
     return {"episodes": n, "successes": k, "success_rate": k / n, "ci95": [round(ci.low, 4), round(ci.high, 4)],
             "mean_return": round(float(np.mean([o.episode_return for o in outcomes])), 4),
-            "mean_length": round(float(np.mean([o.length for o in outcomes])), 2)}
+            "mean_length": round(float(np.mean([o.length for o in outcomes])), 2),
+            "ends": {e: sum(o.end == e for o in outcomes) for e in sorted({o.end for o in outcomes})}}
 
 
 def plot_curve(rows: Sequence[dict[str, Any]], path: Path, *, window: int = 50,
@@ -294,6 +433,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     p.add_argument("--eval-episodes", type=int, default=50, help="held-out episodes per policy (default 50)")
     p.add_argument("--save-every", type=int, default=5000, help="save model and curve every N steps")
     p.add_argument("--resume", action="store_true", help="go on from the model and curve in --out")
+    p.add_argument("--cpu-minutes", type=float, default=None,
+                   help="stop training when it has used this much CPU time (all its processes, all resumed runs)")
+    p.add_argument("--no-feedback", action="store_true", help="leave out the previous action's feedback observation")
+    p.add_argument("--actions", default="all", choices=("all", "navigation"),
+                   help="the agent's actions: the env's whole space, or its five navigation actions (default all)")
+    p.add_argument("--no-normalize-reward", action="store_true", help="train on the raw rewards")
     args = p.parse_args(argv)
     if args.steps < 1 or args.eval_episodes < 0 or args.n_envs < 1 or args.save_every < 1:
         p.error("--steps, --n-envs and --save-every must be positive, --eval-episodes >= 0")
@@ -301,20 +446,28 @@ def main(argv: Sequence[str] | None = None) -> int:
     env_kwargs = {**TRAIN_KWARGS, **_kwargs(args.env_kwarg)}
     eval_kwargs = _kwargs(args.eval_kwarg)
     started = time.perf_counter()
+    feedback = not args.no_feedback
+    actions = NAVIGATION if args.actions == "navigation" else None
     model = train(args.env, args.out, args.steps, seed=args.seed, env_kwargs=env_kwargs,
-                  ppo_kwargs=_kwargs(args.ppo), n_envs=args.n_envs, save_every=args.save_every, resume=args.resume)
+                  ppo_kwargs=_kwargs(args.ppo), n_envs=args.n_envs, save_every=args.save_every, resume=args.resume,
+                  cpu_budget_s=None if args.cpu_minutes is None else args.cpu_minutes * 60, feedback=feedback,
+                  normalize_reward=not args.no_normalize_reward, actions=actions)
     train_s = time.perf_counter() - started
     report: dict[str, Any] = {"env_id": args.env, "eval_kwargs": eval_kwargs, "train_seconds": round(train_s, 1),
                               "timesteps": int(model.num_timesteps)}
     if args.eval_episodes:
         seeds = list(range(EVAL_SEED0, EVAL_SEED0 + args.eval_episodes))
         runs = {"random": run_episodes(random_policy(args.seed), args.env, seeds, eval_kwargs),
-                "ppo": run_episodes(model_policy(model, args.seed), args.env, seeds, eval_kwargs)}
+                "random-nav": run_episodes(random_nav_policy(args.seed), args.env, seeds, eval_kwargs),
+                "ppo": run_episodes(model_policy(model, args.seed), args.env, seeds,
+                                    {**observation_kwargs(env_kwargs), **eval_kwargs}, feedback=feedback,
+                                    actions=actions)}
         report["seeds"] = [seeds[0], seeds[-1]]
         report |= {name: success_summary(o) for name, o in runs.items()}
         report["episodes"] = {name: [asdict(x) for x in o] for name, o in runs.items()}
     write_atomic(args.out / "eval.json", json.dumps(report, indent=2) + "\n")
-    refs = {f"{name} (eval)": report[name]["success_rate"] for name in ("random", "ppo") if name in report}
+    refs = {f"{name} (eval)": report[name]["success_rate"] for name in ("random", "random-nav", "ppo")
+            if name in report}
     plot_curve(read_curve(args.out / "curve.csv"), args.out / "curve.png", references=refs,
                title=f"PPO MultiInputPolicy on {args.env}")
     print(json.dumps({k: v for k, v in report.items() if k != "episodes"}, indent=2))

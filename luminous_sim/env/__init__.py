@@ -26,7 +26,14 @@ if TYPE_CHECKING:
     from luminous_sim.env.oracle_policy import OraclePolicy
     from luminous_sim.env.registration import EnvEntry, load_entries, register_envs
     from luminous_sim.env.rewards import RewardConfig
-    from luminous_sim.env.wrappers import InstructionTokens
+    from luminous_sim.env.wrappers import (
+        ActionFeedback,
+        ActionSubset,
+        FailureLimitEnds,
+        InstructionTokens,
+        NewPlaceBonus,
+        SceneRepeat,
+    )
 
 _WHERE = {
     "ActionTable": "actions",
@@ -36,19 +43,26 @@ _WHERE = {
     "OraclePolicy": "oracle_policy",
     "EnvEntry": "registration", "load_entries": "registration", "register_envs": "registration",
     "RewardConfig": "rewards",
-    "InstructionTokens": "wrappers",
+    "InstructionTokens": "wrappers", "ActionFeedback": "wrappers", "ActionSubset": "wrappers",
+    "FailureLimitEnds": "wrappers", "NewPlaceBonus": "wrappers",
+    "SceneRepeat": "wrappers",
 }
 
 __all__ = [
     "UNAVAILABLE_CAUSES",
+    "ActionFeedback",
+    "ActionSubset",
     "ActionTable",
     "EnvConfig",
     "EnvEntry",
     "EpisodeUnavailable",
+    "FailureLimitEnds",
     "InstructionTokens",
     "LuminousEnv",
+    "NewPlaceBonus",
     "OraclePolicy",
     "RewardConfig",
+    "SceneRepeat",
     "load_entries",
     "register_envs",
 ]

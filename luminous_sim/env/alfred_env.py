@@ -281,7 +281,8 @@ class LuminousEnv(gymnasium.Env):
         obs: dict[str, Any] = {"rgb": np.ascontiguousarray(frame.rgb[..., :3], dtype=np.uint8),
                                "instruction": self._instruction()}
         if c.depth:
-            obs["depth"] = np.clip(frame.depth, 0.0, DEPTH_FAR).astype(np.float32)[..., None]
+            depth = np.nan_to_num(frame.depth, nan=DEPTH_FAR, posinf=DEPTH_FAR, neginf=0.0)  # never NaN: in the space
+            obs["depth"] = np.clip(depth, 0.0, DEPTH_FAR).astype(np.float32)[..., None]
         if c.segmentation:
             obs["segmentation"] = self.world.instance_ids().astype(np.int32)
         if c.pose:
