@@ -2,7 +2,11 @@
 
 from __future__ import annotations
 
+import importlib.util
+import sys
+from collections.abc import Iterator
 from pathlib import Path
+from types import ModuleType
 
 import pytest
 
@@ -16,3 +20,18 @@ def shared_alfred() -> Path:
     if not SHARED_ALFRED.exists():
         pytest.skip(f"ALFRED sample data not found at {SHARED_ALFRED}")
     return SHARED_ALFRED
+
+
+def load_script(relative: str) -> Iterator[ModuleType]:
+    """A script of the repository (`benchmarks/x.py`, `examples/x.py`) imported under its file's name for
+    as long as the generator is suspended: `yield from load_script(...)` in a fixture."""
+    path = REPO / relative
+    spec = importlib.util.spec_from_file_location(path.stem, path)
+    assert spec is not None and spec.loader is not None, f"cannot import {path}"
+    module = importlib.util.module_from_spec(spec)
+    sys.modules[path.stem] = module
+    try:
+        spec.loader.exec_module(module)
+        yield module
+    finally:
+        del sys.modules[path.stem]

@@ -2,26 +2,18 @@
 
 from __future__ import annotations
 
-import importlib.util
-import sys
-
 import pytest
 
 from luminous_sim.data import CoverageReport, Realisation, parse_alfred
 from luminous_sim.data.alfred_report import FileOutcome
-from tests.conftest import REPO
+from tests.conftest import load_script
 
 TRAJ = "valid_seen/pick_and_place_simple-Newspaper-None-Sofa-224"
 
 
 @pytest.fixture(scope="module")
 def bench():
-    spec = importlib.util.spec_from_file_location("bench_alfred_parse", REPO / "benchmarks" / "bench_alfred_parse.py")
-    module = importlib.util.module_from_spec(spec)
-    sys.modules["bench_alfred_parse"] = module
-    spec.loader.exec_module(module)
-    yield module
-    del sys.modules["bench_alfred_parse"]
+    yield from load_script("benchmarks/bench_alfred_parse.py")
 
 
 @pytest.fixture(scope="module")

@@ -2,22 +2,14 @@
 
 from __future__ import annotations
 
-import importlib.util
-import sys
-
 import pytest
 
-from tests.conftest import REPO
+from tests.conftest import load_script
 
 
 @pytest.fixture(scope="module")
 def bench():
-    spec = importlib.util.spec_from_file_location("bench_oracle", REPO / "benchmarks" / "bench_oracle.py")
-    module = importlib.util.module_from_spec(spec)
-    sys.modules["bench_oracle"] = module
-    spec.loader.exec_module(module)
-    yield module
-    del sys.modules["bench_oracle"]
+    yield from load_script("benchmarks/bench_oracle.py")
 
 
 def _slot(k: int, raw: dict, success: bool | None = True) -> dict:

@@ -4,13 +4,12 @@ model that loads and acts, and a resumed run that goes on from the save."""
 from __future__ import annotations
 
 import csv
-import importlib.util
 import json
 import sys
 
 import pytest
 
-from tests.conftest import REPO
+from tests.conftest import load_script
 
 pytest.importorskip("stable_baselines3")
 
@@ -21,12 +20,7 @@ TINY = ["--env", ENV, "--ppo", "n_steps=64", "--ppo", "batch_size=32", "--ppo", 
 
 @pytest.fixture(scope="module")
 def train_ppo():
-    spec = importlib.util.spec_from_file_location("train_ppo", REPO / "examples" / "train_ppo.py")
-    module = importlib.util.module_from_spec(spec)
-    sys.modules["train_ppo"] = module
-    spec.loader.exec_module(module)
-    yield module
-    del sys.modules["train_ppo"]
+    yield from load_script("examples/train_ppo.py")
 
 
 def _curve(path):
