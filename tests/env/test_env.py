@@ -16,7 +16,7 @@ from luminous_sim.env import LuminousEnv
 from luminous_sim.env.actions import INTERACTIONS, NAVIGATION, ActionTable
 from luminous_sim.errors import LuminousError
 
-SMALL = "Luminous-PickUp-64-v0"
+SMALL = "Luminous-PickUp-64-v1"
 ALL_OBS = {"depth": True, "segmentation": True, "pose": True, "inventory": True}
 
 
@@ -33,7 +33,7 @@ def test_check_env_passes_without_warnings():
 
 
 def test_check_env_passes_at_alfred_size():
-    env = gymnasium.make("Luminous-ALFRED-PickPlace-v0", room_types=["Bathroom"]).unwrapped
+    env = gymnasium.make("Luminous-ALFRED-PickPlace-v1", room_types=["Bathroom"]).unwrapped
     with warnings.catch_warnings():
         warnings.simplefilter("error")
         check_env(env, skip_render_check=True)
@@ -201,7 +201,7 @@ def test_bad_options_are_named():
 
 
 def test_step_instructions_follow_the_directive():
-    env = gymnasium.make("Luminous-ALFRED-PickPlace-v0", step_instructions=True, room_types=["Bathroom"]).unwrapped
+    env = gymnasium.make("Luminous-ALFRED-PickPlace-v1", step_instructions=True, room_types=["Bathroom"]).unwrapped
     obs, _ = env.reset(seed=0)
     directive = env.episode.goal.instruction
     assert obs["instruction"].startswith(directive + ". ") and len(obs["instruction"]) > len(directive) + 20

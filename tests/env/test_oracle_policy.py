@@ -39,11 +39,11 @@ def _check(env_id: str, seed: int, **kwargs) -> None:
 
 
 def test_the_oracle_solves_a_small_id():
-    _check("Luminous-PickUp-64-v0", 0)
+    _check("Luminous-PickUp-64-v1", 0)
 
 
 def test_the_oracle_replans_after_the_agent_deviates():
-    env = gymnasium.make("Luminous-PickUp-64-v0")
+    env = gymnasium.make("Luminous-PickUp-64-v1")
     policy = OraclePolicy(env)
     env.reset(seed=0)
     for action in (1, 1, 0):  # the agent wanders off first
@@ -56,7 +56,7 @@ def test_the_oracle_replans_after_the_agent_deviates():
 
 
 def test_expert_in_info_is_the_policys_action():
-    env = gymnasium.make("Luminous-NavToObject-64-v0", expert_in_info=True)
+    env = gymnasium.make("Luminous-NavToObject-64-v1", expert_in_info=True)
     _, info = env.reset(seed=0)
     assert info["expert_action"] == OraclePolicy(env)()
     env.close()

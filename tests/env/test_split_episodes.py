@@ -20,7 +20,7 @@ ENTRY = split_entry("U+", 2)   # examine, FloorPlan219, layout 0
 
 
 def alfred(**kwargs):
-    return gymnasium.make("Luminous-ALFRED-v0", **kwargs).unwrapped
+    return gymnasium.make("Luminous-ALFRED-v1", **kwargs).unwrapped
 
 
 def test_a_split_entry_gives_its_structure_layout_and_task_the_same_every_time():

@@ -66,21 +66,21 @@ def check_reuse(env_id: str, first_seed: int, seed: int) -> tuple[LuminousEnv, i
 
 
 def test_a_reused_world_gives_the_same_episode_and_is_not_rebuilt():
-    env, builds = check_reuse("Luminous-NavToObject-64-v0", 3, 11)
+    env, builds = check_reuse("Luminous-NavToObject-64-v1", 3, 11)
     assert env.worlds.builds == builds and env.worlds.reuses >= 2  # the agent's world and the expert's proof
     env.close()
 
 
 def test_a_touched_world_is_rebuilt_and_the_episode_is_still_the_same():
-    env, builds = check_reuse("Luminous-PickUp-64-v0", 3, 11)
+    env, builds = check_reuse("Luminous-PickUp-64-v1", 3, 11)
     assert env.worlds.reuses >= 1  # the agent's world (it only walked)
     assert env.worlds.builds == builds + 1  # the expert's proof picked something up: a new world
     env.close()
 
 
 def test_the_expert_replans_in_kept_worlds_with_the_same_advice():
-    a = gymnasium.make("Luminous-NavToObject-64-v0", expert_in_info=True).unwrapped
-    b = gymnasium.make("Luminous-NavToObject-64-v0", expert_in_info=True).unwrapped
+    a = gymnasium.make("Luminous-NavToObject-64-v1", expert_in_info=True).unwrapped
+    b = gymnasium.make("Luminous-NavToObject-64-v1", expert_in_info=True).unwrapped
     a.reset(seed=5)
     scene = a.episode.scene
     first = a.reset(seed=6, options={"scene": scene})[1]

@@ -35,7 +35,7 @@ def test_the_vocabulary_covers_the_templates_and_unknown_words_are_unk():
 
 @pytest.mark.parametrize("space", ["multidiscrete", "box"])
 def test_wrapped_observations_lie_in_the_space(space):
-    env = InstructionTokens(gymnasium.make("Luminous-PickUp-64-v0"), length=16, space=space)
+    env = InstructionTokens(gymnasium.make("Luminous-PickUp-64-v1"), length=16, space=space)
     obs, _ = env.reset(seed=0)
     assert env.observation_space.contains(obs) and obs["instruction"].shape == (16,)
     words = env.unwrapped.episode.goal.instruction.split()
@@ -49,7 +49,7 @@ def test_wrapped_observations_lie_in_the_space(space):
 def test_sb3_multi_input_policy_takes_the_wrapped_env():
     from stable_baselines3 import PPO
 
-    env = InstructionTokens(gymnasium.make("Luminous-NavToObject-64-v0"))
+    env = InstructionTokens(gymnasium.make("Luminous-NavToObject-64-v1"))
     model = PPO("MultiInputPolicy", env, n_steps=32, batch_size=16, n_epochs=1, seed=0)
     model.learn(64)
     action, _ = model.predict(env.reset(seed=0)[0])
