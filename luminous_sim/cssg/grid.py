@@ -9,11 +9,11 @@ from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
-from scipy import ndimage
 from shapely import contains_xy
 from shapely.geometry import Polygon
 
 from luminous_sim.assets.catalog import AssetEntry
+from luminous_sim.scene import distance_transform
 
 RES = 0.05
 """Grid resolution in metres."""
@@ -42,7 +42,7 @@ class FloorGrid:
         gx, gy = np.meshgrid(xs, ys, indexing="xy")
         room = contains_xy(poly, gx, gy)
         padded = np.pad(room, 1, constant_values=False)
-        dist, idx = ndimage.distance_transform_edt(padded, return_indices=True)
+        dist, idx = distance_transform(padded, return_indices=True)
         dist, idx = dist[1:-1, 1:-1], idx[:, 1:-1, 1:-1] - 1
         h, w = room.shape
         rows, cols = np.mgrid[0:h, 0:w]

@@ -18,7 +18,6 @@ from dataclasses import dataclass
 
 import numpy as np
 import shapely
-from scipy import ndimage
 from shapely.geometry import LineString, Polygon
 
 from luminous_sim.assets.catalog import Catalog, default_catalog
@@ -32,6 +31,7 @@ from luminous_sim.scene import (
     View,
     blocks_agent,
     footprint,
+    label4,
     region_spots,
     rotate,
     scene_reachable_grid,
@@ -202,7 +202,7 @@ def floor_reach(scene: Scene, catalog: Catalog | None = None) -> FloorReach:
     keys -= keys.min(axis=0)
     image = np.zeros(tuple(keys.max(axis=0) + 1), dtype=bool)
     image[keys[:, 0], keys[:, 1]] = True
-    labels, _ = ndimage.label(image)
+    labels, _ = label4(image)
     sizes = sorted(np.bincount(labels[keys[:, 0], keys[:, 1]])[1:], reverse=True)
     return FloorReach(len(pts), int(sizes[0]), float(sizes[1]) * STEP * STEP if len(sizes) > 1 else 0.0)
 

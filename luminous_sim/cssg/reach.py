@@ -12,10 +12,9 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import ndimage
 
 from luminous_sim.cssg.grid import RES
-from luminous_sim.scene import REACH
+from luminous_sim.scene import REACH, distance_transform, label4
 
 
 @dataclass
@@ -58,7 +57,7 @@ class FloorPiece:
             return rows, cols, np.sqrt((dr[:, None] ** 2 + dc[None, :] ** 2).astype(float)) * RES
         mask = np.zeros(shape, dtype=bool)
         mask.ravel()[self.cells] = True
-        return rows, cols, ndimage.distance_transform_edt(~mask[rows, cols]) * RES
+        return rows, cols, distance_transform(~mask[rows, cols]) * RES
 
     def reachable(self, walk: np.ndarray) -> bool:
         """Whether a cell of `walk` lies within the piece's reach (a piece without cells is)."""
@@ -77,7 +76,7 @@ class FloorPiece:
 
 def largest_part(ok: np.ndarray) -> np.ndarray:
     """The largest 4-connected part of `ok` (the first by label order among equals)."""
-    labels, n = ndimage.label(ok)
+    labels, n = label4(ok)
     if n == 0:
         return ok
     sizes = np.bincount(labels.ravel())[1:]

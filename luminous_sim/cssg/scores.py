@@ -8,11 +8,11 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
-from scipy import ndimage
 
 from luminous_sim.assets.catalog import AssetEntry
 from luminous_sim.cssg.grid import RES, FloorGrid
 from luminous_sim.cssg.tables import face_distance
+from luminous_sim.scene import minimum_filter_box
 
 TEMPERATURE = 0.05
 """metres of cost per e-fold of probability."""
@@ -97,7 +97,7 @@ def _wall_clearance(wall_dist: np.ndarray, ex: float, ey: float) -> np.ndarray:
     """Per cell, how far a box of half extents `ex` (along x) and `ey` (along y) centred there stays from
     the nearest wall: the least wall distance under it (negative where it crosses a wall or leaves the grid)."""
     size = (2 * round(ey / RES) + 1, 2 * round(ex / RES) + 1)
-    return ndimage.minimum_filter(wall_dist, size=size, mode="constant", cval=-RES)
+    return minimum_filter_box(wall_dist, size, cval=-RES)
 
 
 def _wall_clearances(grid: FloorGrid, hw: float, hd: float) -> tuple[np.ndarray, np.ndarray]:

@@ -20,6 +20,7 @@ from luminous_sim.scene.pose import (
     rotate,
     yaw_facing,
 )
+from luminous_sim.scene.raster import distance_transform, feature_transform, label4, minimum_filter_box
 from luminous_sim.scene.reach import REACH, horizontal_reach, reach_of
 from luminous_sim.scene.regions import (
     RegionSpot,
@@ -49,7 +50,9 @@ __all__ = [
     "against_wall",
     "blocks_agent",
     "can_hold",
+    "distance_transform",
     "edge_slides",
+    "feature_transform",
     "fits",
     "footprint",
     "front_zone",
@@ -57,8 +60,10 @@ __all__ = [
     "hanger_back",
     "horizontal_reach",
     "in_sight",
+    "label4",
     "largest_component",
     "local_to_world",
+    "minimum_filter_box",
     "open_tops",
     "reach_of",
     "reachable_grid",

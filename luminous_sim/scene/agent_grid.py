@@ -18,6 +18,7 @@ from luminous_sim.assets.catalog import AssetEntry, Catalog, default_catalog
 from luminous_sim.rooms.shell import RoomShell
 from luminous_sim.scene.model import Scene, SceneObject
 from luminous_sim.scene.pose import footprint
+from luminous_sim.scene.raster import label4
 from luminous_sim.vocab.agent_body import AGENT_RADIUS
 
 STEP = 0.25
@@ -54,13 +55,11 @@ def reachable_grid(shell: RoomShell, obstacles: Iterable[Polygon]) -> np.ndarray
 def largest_component(pts: np.ndarray) -> np.ndarray:
     """Mask of the points in the largest 4-connected component of grid points `pts` (ties: the component
     holding the earliest point)."""
-    from scipy import ndimage
-
     keys = np.round(pts / STEP).astype(int)
     keys -= keys.min(axis=0)
     image = np.zeros(tuple(keys.max(axis=0) + 1), dtype=bool)
     image[keys[:, 0], keys[:, 1]] = True
-    labels, _ = ndimage.label(image)
+    labels, _ = label4(image)
     of_point = labels[keys[:, 0], keys[:, 1]]
     sizes = np.bincount(of_point)
     best = sizes[of_point] == sizes.max()
