@@ -1,17 +1,21 @@
 """Behaviour cloning on S+ and U+ (the issue's figure "BC success on S+ and U+"), beside random and the oracle.
 
-    python benchmarks/bench_bc.py                       # 400 demos, 3 training seeds, 28 episodes a split
-    python benchmarks/bench_bc.py --demos 400 --eval-episodes 56 --workers 4
+    python benchmarks/bench_bc.py                  # 400 demos, 3 training seeds, 200 episodes a split (~25 min)
+    python benchmarks/bench_bc.py --demos 400 --eval-episodes 28 --workers 4   # the quick look
 
 1. Oracle demonstrations of the pickup family (`luminous_sim.bc`: pick up a named object in the layouts of
    a split's entries, 64 px, object-slot targets) on S+ entries 28 .. 28+D-1 (the training entries).
 2. A `BCPolicy` trained on them per seed (`--seeds`), with the wall time of each training.
-3. Each policy on the held-out S+ entries 0 .. N-1 (same room structures and layouts as training, other
-   tasks) and on U+ entries 0 .. N-1 (ALFRED's valid_unseen structures, never seen in training): SR, GC,
-   PLW-SR, PLW-GC and SR over all entries (`luminous_sim.eval.metrics`), for random, the clone of each
+3. Each policy on the first N held-out S+ entries (0 .. 27, then those after the training entries: same
+   room structures and layouts as training, other entries) and on U+ entries 0 .. N-1 (ALFRED's
+   valid_unseen structures, never seen in training): SR, GC, PLW-SR, PLW-GC and SR over all entries
+   (`luminous_sim.eval.metrics`), for random, the clone of each
    seed, greedy (and the median and range over seeds), seed 0's clone sampling its actions, and the oracle.
    S+ is also split into the held-out episodes whose task (layout and instruction) no training demo has and
    those whose task a training demo has (another entry drew the same object type in the same layout).
+4. Whether the clone's drop from S+ to U+ is more than chance: per seed, Fisher's exact test (one-sided,
+   S+ SR > U+ SR); over the seeds, the drop in their mean SR with a 95% bootstrap interval (episodes
+   resampled within each split, each episode keeping all seeds' results) and the bootstrap's one-sided p.
 
 Everything is kept under --out (default out/bench_bc): demonstrations, checkpoints and one file per played
 episode, so a second run reprints the figures without redoing the work (`--fresh` starts over). It writes
@@ -78,6 +82,37 @@ def _play(job: tuple[str, str, str, str, int, int, str]) -> dict[str, Any]:
     return outcome
 
 
+def held_out(split: str, count: int, training: range) -> list[int]:
+    """The first `count` entries of `split` not used for training (S+ skips the training range)."""
+    if split != "S+":
+        return list(range(count))
+    below = list(range(min(count, training.start)))
+    return below + list(range(training.stop, training.stop + count - len(below)))
+
+
+def gap_test(wins: dict[str, list[list[bool]]], repeats: int = 10000, seed: int = 0) -> dict[str, Any]:
+    """Is the clone's S+ SR above its U+ SR by more than chance? `wins[split][seed]` lists successes per episode.
+
+    Per seed, Fisher's exact one-sided p; over seeds, the drop in the mean SR with a bootstrap 95% interval
+    (episodes resampled within each split; an episode keeps every seed's result) and the share of
+    resamples with no drop (a one-sided p).
+    """
+    import numpy as np
+    from scipy.stats import fisher_exact
+
+    seen, unseen = (np.array(wins[split], dtype=float) for split in SPLITS)
+    per_seed = []
+    for s_row, u_row in zip(seen, unseen, strict=True):
+        table = [[int(s_row.sum()), int(len(s_row) - s_row.sum())], [int(u_row.sum()), int(len(u_row) - u_row.sum())]]
+        per_seed.append(float(fisher_exact(table, alternative="greater")[1]))
+    rng = np.random.default_rng(seed)
+    s_mean, u_mean = seen.mean(axis=0), unseen.mean(axis=0)
+    drops = (s_mean[rng.integers(0, len(s_mean), (repeats, len(s_mean)))].mean(axis=1)
+             - u_mean[rng.integers(0, len(u_mean), (repeats, len(u_mean)))].mean(axis=1))
+    return {"drop": float(s_mean.mean() - u_mean.mean()), "ci95": [float(np.quantile(drops, 0.025)),
+            float(np.quantile(drops, 0.975))], "p_bootstrap": float((drops <= 0).mean()), "fisher_p": per_seed}
+
+
 def _row(name: str, m: Metrics) -> str:
     cells = [f"{m.successes}/{m.episodes}"] + [_num(v) for v in (m.sr, m.gc, m.plw_sr, m.plw_gc, m.sr_all)]
     return f"| {name} | " + " | ".join(cells) + " |"
@@ -94,7 +129,8 @@ def _spread(values: list[float]) -> str:
 def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--demos", type=int, default=400, help="training demonstrations (S+ entries from 28)")
-    parser.add_argument("--eval-episodes", type=int, default=28, help="held-out episodes per split (default 28)")
+    parser.add_argument("--eval-episodes", type=int, default=200,
+                        help="held-out episodes per split (default 200: enough to tell a drop of 0.1 SR from chance)")
     parser.add_argument("--seeds", default="0,1,2", help="training seeds (default 0,1,2)")
     parser.add_argument("--epochs", type=int, default=20)
     parser.add_argument("--workers", type=int, default=2, help="local worker processes (default 2)")
@@ -108,6 +144,7 @@ def main() -> int:
 
     demo_dir = args.out / "demos"
     training = list(range(FIRST_TRAINING, FIRST_TRAINING + args.demos))
+    evaluated = {split: held_out(split, args.eval_episodes, range(training[0], training[-1] + 1)) for split in SPLITS}
     start = time.perf_counter()
     chunks = [(str(demo_dir), training[k::args.workers]) for k in range(args.workers)]
     summaries = list(map_local(_collect, chunks, args.workers))
@@ -119,9 +156,9 @@ def main() -> int:
           f"{steps} steps, {labelled} labelled (the rest acted on an object in no slot); "
           f"{time.perf_counter() - start:.0f} s (with those kept from an earlier run)")
     seen_layouts = {(split_entry("S+", i).floor_plan, split_entry("S+", i).layout) for i in training}
-    held_out = {(split_entry("S+", i).floor_plan, split_entry("S+", i).layout) for i in range(args.eval_episodes)}
-    print(f"held-out S+ entries 0..{args.eval_episodes - 1}: {len(held_out & seen_layouts)} of their "
-          f"{len(held_out)} layouts appear in the training demos (S+: seen layouts, other tasks); "
+    layouts = {(split_entry("S+", i).floor_plan, split_entry("S+", i).layout) for i in evaluated["S+"]}
+    print(f"held-out S+ entries {_ranges(evaluated['S+'])}: {len(layouts & seen_layouts)} of their "
+          f"{len(layouts)} layouts appear in the training demos (S+: seen layouts, other tasks); "
           "no U+ structure does")
 
     paths = {seed: args.out / f"bc-seed{seed}.pt" for seed in seeds}
@@ -137,7 +174,7 @@ def main() -> int:
     policies = [("random", "random", ""), *((f"bc seed {s}", CLONE, str(paths[s].resolve())) for s in seeds),
                 (f"bc seed {seeds[0]} sampling", SAMPLING, str(paths[seeds[0]].resolve())), ("oracle", "oracle", "")]
     jobs = [(label, spec, ckpt, split, i, 0, str(args.out / "outcomes" / label.replace(" ", "-") / f"{split}-{i}.json"))
-            for label, spec, ckpt in policies for split in SPLITS for i in range(args.eval_episodes)]
+            for label, spec, ckpt in policies for split in SPLITS for i in evaluated[split]]
     start = time.perf_counter()
     played = list(map_local(_play, jobs, args.workers))
     print(f"played {len(jobs)} episodes in {time.perf_counter() - start:.0f} s")
@@ -150,9 +187,9 @@ def main() -> int:
 
     results: dict[str, Any] = {"demos": len(demos), "training_entries": [training[0], training[-1]],
                                "labelled_steps": labelled, "seeds": seeds, "training": trained,
-                               "eval_episodes": args.eval_episodes, "metrics": {}}
+                               "eval_episodes": args.eval_episodes, "eval_entries": evaluated, "metrics": {}}
     for split in SPLITS:
-        print(f"\n### pickup_object on {split}: entries 0..{args.eval_episodes - 1}\n")
+        print(f"\n### pickup_object on {split}: entries {_ranges(evaluated[split])}\n")
         print("| policy | successes | SR | GC | PLW-SR | PLW-GC | SR all |\n|---|---|---|---|---|---|---|")
         for label, _, _ in policies:
             print(_row(label, table[label, split]))
@@ -177,6 +214,13 @@ def main() -> int:
               f"{_num(old.sr)} |")
     drop = [(table[f"bc seed {s}", "S+"].sr or 0.0) - (table[f"bc seed {s}", "U+"].sr or 0.0) for s in seeds]
     print(f"\nclone SR drop S+ -> U+ per seed: {[round(d, 3) for d in drop]} (median {statistics.median(drop):.3f})")
+    wins = {split: [[o.success for o in outcomes[f"bc seed {s}", split] if o.end != "unavailable"] for s in seeds]
+            for split in SPLITS}
+    gap = gap_test(wins)
+    print(f"Fisher's exact one-sided p per seed (S+ SR > U+ SR): {[round(p, 4) for p in gap['fisher_p']]}")
+    print(f"drop in the mean SR over seeds: {gap['drop']:.3f}, 95% bootstrap interval "
+          f"[{gap['ci95'][0]:.3f}, {gap['ci95'][1]:.3f}], bootstrap p (no drop) {gap['p_bootstrap']:.4f}")
+    results["gap"] = gap
     for label, _, _ in policies:
         for split in SPLITS:
             ends: dict[str, int] = {}
@@ -192,6 +236,17 @@ def main() -> int:
     print(f"wrote {args.out / 'results.json'} and {_plot(table, seeds, args.out / 'bc_success.png')}")
     print(f"load average at end: {os.getloadavg()}")
     return 0
+
+
+def _ranges(indices: list[int]) -> str:
+    """`0..27, 428..599` for a sorted list of integers."""
+    runs: list[list[int]] = []
+    for i in indices:
+        if runs and i == runs[-1][1] + 1:
+            runs[-1][1] = i
+        else:
+            runs.append([i, i])
+    return ", ".join(f"{a}..{b}" if a != b else str(a) for a, b in runs)
 
 
 def _plot(table: dict[tuple[str, str], Metrics], seeds: list[int], path: Path) -> Path:

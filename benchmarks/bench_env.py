@@ -20,12 +20,15 @@ each figure as the median over repeats with its spread (min..max):
   with the scene of the previous episode: no generation, and the env's kept worlds of that scene are put
   back (`World.reset_to_start`) instead of built, where their physics was not touched: the agent's world
   is (no action was taken in it), the expert's proof world is only if the expert just walked). The worlds
-  built and reused during the reused-scene resets are printed beside the figure.
+  built and reused during the reused-scene resets are printed beside the figure;
+- memory of one env process (a fresh spawned process: `gymnasium.make`, `reset`, 50 steps): RSS, and the
+  worlds it holds (the agent's and the expert's kept one, each its own PyBullet client).
 """
 
 from __future__ import annotations
 
 import argparse
+import multiprocessing as mp
 import os
 import statistics
 import sys
@@ -130,6 +133,26 @@ def reset_seconds(env_id: str, seed: int, repeats: int) -> tuple[list[float], li
     return new, reused, (builds, reuses)
 
 
+def _rss_mb() -> float:
+    with open(f"/proc/{os.getpid()}/status") as fh:
+        return next(int(line.split()[1]) / 1024 for line in fh if line.startswith("VmRSS"))
+
+
+def env_process_memory(job: tuple[str, int]) -> tuple[float, float, int]:
+    """In a fresh process: RSS after the imports, RSS after a reset and 50 steps, and the worlds held then."""
+    env_id, seed = job
+    before = _rss_mb()
+    env = gymnasium.make(env_id)
+    env.reset(seed=seed)
+    rng = np.random.default_rng(seed)
+    for a in _actions("nav", int(env.action_space.n), rng, 50):
+        env.step(int(a))
+    worlds = len(env.unwrapped.worlds._idle) + (env.unwrapped.world is not None)  # type: ignore[attr-defined]
+    rss = _rss_mb()
+    env.close()
+    return before, rss, worlds
+
+
 def bench(env_id: str, args: argparse.Namespace) -> None:
     spec = gymnasium.spec(env_id)
     size = f"{spec.kwargs.get('width', 300)}x{spec.kwargs.get('height', 300)}"
@@ -144,6 +167,10 @@ def bench(env_id: str, args: argparse.Namespace) -> None:
     print(f"  reset s, new scene:                 {spread(new, '.2f')}")
     print(f"  reset s, reused scene:              {spread(reused, '.2f')}   worlds built: {builds}, "
           f"reused: {reuses}")
+    with mp.get_context("spawn").Pool(1) as pool:
+        before, rss, worlds = pool.apply(env_process_memory, ((env_id, args.seed),))
+    print(f"  memory, one env process:            {rss:.0f} MB after reset and 50 steps ({before:.0f} MB after "
+          f"the imports; {worlds} worlds held: the agent's and the expert's)")
 
 
 def main(argv: list[str] | None = None) -> None:
