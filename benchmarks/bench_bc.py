@@ -15,7 +15,8 @@
    those whose task a training demo has (another entry drew the same object type in the same layout).
 4. Whether the clone's drop from S+ to U+ is more than chance: per seed, Fisher's exact test (one-sided,
    S+ SR > U+ SR); over the seeds, the drop in their mean SR with a 95% bootstrap interval (episodes
-   resampled within each split, each episode keeping all seeds' results) and the bootstrap's one-sided p.
+   resampled within each split, each episode keeping all seeds' results) and the bootstrap's one-sided p;
+   for all held-out S+ episodes, and for those whose task no training demo has.
 
 Everything is kept under --out (default out/bench_bc): demonstrations, checkpoints and one file per played
 episode, so a second run reprints the figures without redoing the work (`--fresh` starts over). It writes
@@ -214,13 +215,16 @@ def main() -> int:
               f"{_num(old.sr)} |")
     drop = [(table[f"bc seed {s}", "S+"].sr or 0.0) - (table[f"bc seed {s}", "U+"].sr or 0.0) for s in seeds]
     print(f"\nclone SR drop S+ -> U+ per seed: {[round(d, 3) for d in drop]} (median {statistics.median(drop):.3f})")
-    wins = {split: [[o.success for o in outcomes[f"bc seed {s}", split] if o.end != "unavailable"] for s in seeds]
-            for split in SPLITS}
-    gap = gap_test(wins)
-    print(f"Fisher's exact one-sided p per seed (S+ SR > U+ SR): {[round(p, 4) for p in gap['fisher_p']]}")
-    print(f"drop in the mean SR over seeds: {gap['drop']:.3f}, 95% bootstrap interval "
-          f"[{gap['ci95'][0]:.3f}, {gap['ci95'][1]:.3f}], bootstrap p (no drop) {gap['p_bootstrap']:.4f}")
-    results["gap"] = gap
+    for name, kept in (("all held-out S+ episodes", lambda o: True),
+                       ("S+ episodes whose task no training demo has", lambda o: o.index not in repeated)):
+        wins = {split: [[o.success for o in outcomes[f"bc seed {s}", split]
+                         if o.end != "unavailable" and (split != "S+" or kept(o))] for s in seeds] for split in SPLITS}
+        gap = gap_test(wins)
+        print(f"{name} ({len(wins['S+'][0])}) against U+ ({len(wins['U+'][0])}): Fisher's exact one-sided p per "
+              f"seed (S+ SR > U+ SR) {[round(p, 4) for p in gap['fisher_p']]}; drop in the mean SR over seeds "
+              f"{gap['drop']:.3f}, 95% bootstrap interval [{gap['ci95'][0]:.3f}, {gap['ci95'][1]:.3f}], "
+              f"bootstrap p (no drop) {gap['p_bootstrap']:.4f}")
+        results["gap" if name.startswith("all") else "gap_new_tasks"] = gap
     for label, _, _ in policies:
         for split in SPLITS:
             ends: dict[str, int] = {}
