@@ -28,9 +28,10 @@ def label4(mask: np.ndarray) -> tuple[np.ndarray, int]:
     out = np.zeros(mask.shape, dtype=np.int32)
     if mask.size == 0 or not mask.any():
         return out, 0
-    edges = np.diff(np.pad(mask, ((0, 0), (1, 1))).astype(np.int8), axis=1)
-    rows, starts = np.nonzero(edges == 1)  # raster order: by row, then column
-    ends = np.nonzero(edges == -1)[1]
+    left = np.zeros((mask.shape[0], 1), dtype=bool)
+    before, after = np.hstack([left, mask[:, :-1]]), np.hstack([mask[:, 1:], left])
+    rows, starts = np.nonzero(mask & ~before)  # runs in raster order: by row, then column
+    ends = np.nonzero(mask & ~after)[1] + 1
     parent = list(range(len(rows)))
 
     def root(k: int) -> int:
@@ -39,7 +40,7 @@ def label4(mask: np.ndarray) -> tuple[np.ndarray, int]:
             k = parent[k]
         return k
 
-    row_list, start_list, end_list = rows.tolist(), starts.tolist(), ends.tolist()
+    start_list, end_list = starts.tolist(), ends.tolist()
     first_in_row = np.searchsorted(rows, np.arange(mask.shape[0] + 1)).tolist()
     for r in range(mask.shape[0] - 1):
         a, a_stop = first_in_row[r], first_in_row[r + 1]
@@ -53,11 +54,13 @@ def label4(mask: np.ndarray) -> tuple[np.ndarray, int]:
                 a += 1
             else:
                 b += 1
-    roots = [root(k) for k in range(len(row_list))]
-    number: dict[int, int] = {}
-    labels = [number.setdefault(k, len(number) + 1) for k in roots]
-    out[mask] = np.repeat(np.array(labels, dtype=np.int32), ends - starts)
-    return out, len(number)
+    for k in range(len(parent)):  # a parent precedes its child, so one forward pass reaches every root
+        parent[k] = parent[parent[k]]
+    # Roots are components' first runs: counting roots in run order numbers the components in raster order.
+    root_of = np.array(parent)
+    number = np.cumsum(root_of == np.arange(len(parent)), dtype=np.int32)[root_of]
+    out[mask] = np.repeat(number, ends - starts)
+    return out, int(number.max())
 
 
 def _column_nearest(feature: np.ndarray) -> np.ndarray:
