@@ -145,7 +145,7 @@ def env_process_memory(job: tuple[str, int]) -> tuple[float, float, int]:
     rng = np.random.default_rng(seed)
     for a in _actions("nav", int(env.action_space.n), rng, 50):
         env.step(int(a))
-    worlds = len(env.unwrapped.worlds._idle) + (env.unwrapped.world is not None)  # type: ignore[attr-defined]
+    worlds = env.unwrapped.worlds.kept + (env.unwrapped.world is not None)  # type: ignore[attr-defined]
     rss = _rss_mb()
     env.close()
     return before, rss, worlds

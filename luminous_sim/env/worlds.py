@@ -49,6 +49,11 @@ class WorldPool:
             world.agent = start
         return world
 
+    @property
+    def kept(self) -> int:
+        """Worlds kept at their start, ready to hand out again."""
+        return len(self._idle)
+
     def put(self, world: World) -> None:
         """Give a world back: kept at its start if it is of the current scene and can be restored, else closed."""
         if (world.client is not None and self._same(world.scene) and len(self._idle) < MAX_IDLE

@@ -68,6 +68,7 @@ def check_reuse(env_id: str, first_seed: int, seed: int) -> tuple[LuminousEnv, i
 def test_a_reused_world_gives_the_same_episode_and_is_not_rebuilt():
     env, builds = check_reuse("Luminous-NavToObject-64-v1", 3, 11)
     assert env.worlds.builds == builds and env.worlds.reuses >= 2  # the agent's world and the expert's proof
+    assert env.worlds.kept == 1  # the expert's world waits for the next episode beside the agent's
     env.close()
 
 
@@ -75,6 +76,7 @@ def test_a_touched_world_is_rebuilt_and_the_episode_is_still_the_same():
     env, builds = check_reuse("Luminous-PickUp-64-v1", 3, 11)
     assert env.worlds.reuses >= 1  # the agent's world (it only walked)
     assert env.worlds.builds == builds + 1  # the expert's proof picked something up: a new world
+    assert env.worlds.kept == 0  # and that world could not be put back at its start
     env.close()
 
 
