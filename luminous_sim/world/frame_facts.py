@@ -8,7 +8,7 @@ and the World hands out copies of the dicts.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from typing import Any
 
 import numpy as np
@@ -29,9 +29,11 @@ def body_counts(bodies: np.ndarray) -> dict[int, int]:
     return dict(zip(shown.tolist(), counts[shown].tolist(), strict=True))
 
 
-def object_masks(bodies: np.ndarray, names: dict[int, str]) -> dict[str, np.ndarray]:
-    """Boolean mask of every object (body id in `names`) that shows in `bodies`."""
-    return {names[b]: bodies == b for b in body_counts(bodies) if b in names}
+def object_masks(bodies: np.ndarray, names: dict[int, str], shown: Iterable[int] | None = None
+                 ) -> dict[str, np.ndarray]:
+    """Boolean mask of every object (body id in `names`) that shows in `bodies` (`shown`: the body ids
+    that do, when already counted)."""
+    return {names[b]: bodies == b for b in (body_counts(bodies) if shown is None else shown) if b in names}
 
 
 def _read_only(a: np.ndarray) -> np.ndarray:
@@ -66,8 +68,8 @@ class FrameFacts:
     def masks(self, names: Callable[[], dict[int, str]]) -> dict[str, np.ndarray]:
         """Object masks of this frame (read-only arrays); `names` maps body ids to object ids."""
         if self._masks is None:
-            bodies, known = self.bodies(), names()
-            self._masks = {known[b]: _read_only(bodies == b) for b in self.counts() if b in known}
+            masks = object_masks(self.bodies(), names(), self.counts())
+            self._masks = {oid: _read_only(m) for oid, m in masks.items()}
         return self._masks
 
     def boxes(self, names: Callable[[], dict[int, str]]) -> dict[str, list[int]]:
