@@ -11,6 +11,7 @@ import numpy as np
 from gymnasium import spaces
 
 from luminous_sim.env.vocabulary import encode, vocabulary
+from luminous_sim.scene import STEP
 
 
 class InstructionTokens(gymnasium.ObservationWrapper, gymnasium.utils.RecordConstructorArgs):
@@ -190,17 +191,15 @@ class ActionSubset(gymnasium.ActionWrapper, gymnasium.utils.RecordConstructorArg
 
 class NewPlaceBonus(gymnasium.Wrapper, gymnasium.utils.RecordConstructorArgs):
     """For training: `bonus` added to the reward of each step that takes the agent to a grid position (0.25 m
-    cells) it has not stood on before in the episode, a coverage reward as navigation agents are often trained
-    with. Without it, an agent that fears failed actions learns to turn in place (turning never fails), which
-    finds only what is around the start. `info["new_place"]` says whether the step earned it.
+    cells, the agent grid's `STEP`) it has not stood on before in the episode, a coverage reward as navigation
+    agents are often trained with. Without it, an agent that fears failed actions learns to turn in place
+    (turning never fails), which finds only what is around the start. `info["new_place"]` says whether the
+    step earned it.
 
     Args:
         env: a `LuminousEnv`, wrapped or not.
         bonus: the reward per new position.
     """
-
-    CELL = 0.25
-    """ALFRED's grid step (metres)."""
 
     def __init__(self, env: gymnasium.Env, bonus: float = 0.1):
         gymnasium.utils.RecordConstructorArgs.__init__(self, bonus=bonus)
@@ -210,7 +209,7 @@ class NewPlaceBonus(gymnasium.Wrapper, gymnasium.utils.RecordConstructorArgs):
 
     def _cell(self) -> tuple[int, int]:
         agent = self.env.unwrapped.world.agent  # type: ignore[attr-defined]
-        return round(agent.x / self.CELL), round(agent.y / self.CELL)
+        return round(agent.x / STEP), round(agent.y / STEP)
 
     def reset(self, **kwargs: Any) -> tuple[Any, dict[str, Any]]:
         observation, info = self.env.reset(**kwargs)
