@@ -97,8 +97,9 @@ def make_env(env_id: str, env_kwargs: dict[str, Any] | None = None, *, feedback:
     """The registered id with its instruction as token ids (what SB3's `MultiInputPolicy` takes); with
     `feedback`, the previous action and whether it failed as an observation (`ActionFeedback`); with `actions`
     (names), the agent acts over those actions only (`ActionSubset`); with `training`,
-    the failure limit ends an episode as a termination (`FailureLimitEnds`) and each scene serves
-    `scene_repeats` episodes (`SceneRepeat`)."""
+    the failure limit ends an episode as a termination (`FailureLimitEnds`), each scene serves
+    `scene_repeats` episodes (`SceneRepeat`) and each grid position first stood on earns `NEW_PLACE_BONUS`
+    (`NewPlaceBonus`)."""
     env: gymnasium.Env = gymnasium.make(env_id, **(env_kwargs or {}))
     if training:
         env = NewPlaceBonus(FailureLimitEnds(SceneRepeat(env, scene_repeats)), NEW_PLACE_BONUS)
