@@ -1,9 +1,9 @@
 """The agent's reach on the furniture layer's grid: whether every floor piece stays within reach of
 the cells the agent can stand on (`lattice.Lattice.walkable`).
 
-Distances are cell-centre to cell-centre, as the Euclidean distance transform (`scene.distance_transform`) measures them, but
-computed only in a window around one piece (in closed form when its cells fill a box), and each piece
-remembers a walkable cell within its reach so that most checks cost one lookup.
+Distances are cell-centre to cell-centre, as the Euclidean distance transform (`scene.distance_transform`)
+measures them, but computed only in a window around one piece (in closed form when its cells fill a box),
+and each piece remembers a walkable cell within its reach so that most checks cost one lookup.
 """
 
 from __future__ import annotations
