@@ -101,8 +101,8 @@ def _run(args: argparse.Namespace) -> int:
 
             rng = np.random.default_rng(np.random.SeedSequence([seed, 0]))
             room = shell or choose_room(doc, rng)
-            draft, report = sample_uniform(doc, room, rng, default_catalog())
-            generated = Generated(draft.to_scene("uniform", seed, source=doc.name or ""), report)
+            draft, layout = sample_uniform(doc, room, rng, default_catalog())
+            generated = Generated(draft.to_scene("uniform", seed, source=doc.name or ""), layout)
         else:
             try:
                 generated = generate(doc, seed=seed, room=shell)

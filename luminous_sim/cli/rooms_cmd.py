@@ -71,7 +71,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
 
 def cmd_list(args: argparse.Namespace) -> int:
     """Print every room name with its type, shape, area and source."""
-    rows = []
+    rows: list[dict[str, str | float]] = []
     files = room_files()
     for name in room_names():
         if name not in files:

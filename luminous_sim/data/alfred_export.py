@@ -96,29 +96,32 @@ class _Coordinates:
 
 def _planner_action(pa: dict[str, Any], coords: _Coordinates) -> dict[str, Any]:
     """Our planner_action ({action, objectId, receptacleObjectId}) with ALFRED's keys for that action."""
-    act, o, r = pa["action"], pa.get("objectId"), pa.get("receptacleObjectId")
+    act = pa["action"]
     if act in ("GotoLocation", "End"):
         return dict(pa)
+    if act not in ("PickupObject", "ToggleObject", "SliceObject", "PutObject", "HeatObject", "CoolObject",
+                   "CleanObject"):
+        raise ExportError(f"no ALFRED planner_action for {act!r}")
+    o: str = pa["objectId"]
     if act == "PickupObject":
         out = {"action": act, "coordinateObjectId": coords.of(o), "forceVisible": True, "objectId": o}
         parent = coords.parent(o)
         if parent is not None:
             out["coordinateReceptacleObjectId"] = coords.of(parent)
         return out
-    if act == "PutObject":
-        return {"action": act, "coordinateObjectId": coords.of(o), "coordinateReceptacleObjectId": coords.of(r),
-                "forceVisible": True, "objectId": o, "receptacleObjectId": r}
-    if act in ("HeatObject", "CoolObject"):
-        return {"action": act, "coordinateReceptacleObjectId": coords.of(r), "forceVisible": True, "objectId": r}
-    if act == "CleanObject":
-        return {"action": act, "cleanObjectId": o, "coordinateObjectId": coords.of(o),
-                "coordinateReceptacleObjectId": coords.of(r), "forceVisible": True, "objectId": r}
     if act == "ToggleObject":
         return {"action": act, "coordinateObjectId": coords.of(o), "coordinateReceptacleObjectId": coords.of(o),
                 "forceVisible": True, "objectId": o}
     if act == "SliceObject":
         return {"action": act, "coordinateObjectId": coords.of(o), "forceVisible": True, "objectId": o}
-    raise ExportError(f"no ALFRED planner_action for {act!r}")
+    r: str = pa["receptacleObjectId"]  # Put's receptacle, Heat/Cool/Clean's device
+    if act == "PutObject":
+        return {"action": act, "coordinateObjectId": coords.of(o), "coordinateReceptacleObjectId": coords.of(r),
+                "forceVisible": True, "objectId": o, "receptacleObjectId": r}
+    if act in ("HeatObject", "CoolObject"):
+        return {"action": act, "coordinateReceptacleObjectId": coords.of(r), "forceVisible": True, "objectId": r}
+    return {"action": act, "cleanObjectId": o, "coordinateObjectId": coords.of(o),
+            "coordinateReceptacleObjectId": coords.of(r), "forceVisible": True, "objectId": r}
 
 
 def fold_subgoals(actions: list[str]) -> list[int]:
@@ -142,7 +145,8 @@ def fold_subgoals(actions: list[str]) -> list[int]:
         nxt = next((j for j in kept if j > i), None)
         order = [nxt, prev] if a == "OpenObject" else [prev, nxt]
         interaction = [j for j in order if j is not None and actions[j] != "GotoLocation"]
-        out.append(rank[interaction[0] if interaction else (prev if prev is not None else nxt)])
+        walks = [j for j in (prev, nxt) if j is not None]  # not empty: `kept` is not
+        out.append(rank[(interaction or walks)[0]])
     return out
 
 

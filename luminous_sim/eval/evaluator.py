@@ -98,13 +98,12 @@ def play(env: LuminousEnv, agent: Agent, split: str, index: int, seed: int = 0) 
         PolicyError: the agent raised (the message names the episode; the agent's error is chained).
     """
     entry = split_entry(split, index)
-    where = {"split": split, "index": index, "task_type": entry.task_type, "floor_plan": entry.floor_plan,
-             "layout": entry.layout}
     own_seed = episode_seed(seed, split, index)
     try:
         obs, info = env.reset(seed=own_seed, options={"split": split, "index": index})
     except EpisodeUnavailable as exc:
-        return EpisodeOutcome(**where, end="unavailable", cause=exc.cause, detail=exc.detail)
+        return EpisodeOutcome(split, index, entry.task_type, entry.floor_plan, entry.layout, end="unavailable",
+                              cause=exc.cause, detail=exc.detail)
     assert env.episode is not None and env.episode.expert is not None, "the evaluation env proves the expert"
     steps, terminated, truncated = 0, False, False
     try:
@@ -123,8 +122,9 @@ def play(env: LuminousEnv, agent: Agent, split: str, index: int, seed: int = 0) 
         end = "stop"
     else:
         end = "max_failures" if info["failures"] >= env.config.max_failures else "max_steps"
-    return EpisodeOutcome(**where, end=end, success=bool(info["success"]),
-                          goal_conditions=tuple(info["goal_conditions"]),  # type: ignore[arg-type]
+    met, total = info["goal_conditions"]
+    return EpisodeOutcome(split, index, entry.task_type, entry.floor_plan, entry.layout, end=end,
+                          success=bool(info["success"]), goal_conditions=(int(met), int(total)),
                           steps=steps - stopped, expert_length=len(env.episode.expert.actions),
                           failures=int(info["failures"]), instruction=str(obs["instruction"]))
 

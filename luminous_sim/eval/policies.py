@@ -124,7 +124,7 @@ def make_agent(spec: str, env: LuminousEnv) -> Agent:
     if spec == "oracle":
         return OracleAgent(env)
     if spec == "random":
-        return RandomAgent(int(env.action_space.n))
+        return RandomAgent(env.actions.n)  # the size of env.action_space, a Discrete
     factory = resolve_factory(spec)
     try:
         agent = factory(AgentContext(env.action_space, env.observation_space, env.actions, env.config))

@@ -6,8 +6,8 @@ from __future__ import annotations
 import contextlib
 import ctypes
 import glob
+import importlib.util
 import os
-import pkgutil
 import sys
 from collections.abc import Iterator
 
@@ -76,8 +76,9 @@ def new_client(gui: bool = False, renderer: str = "tiny") -> BulletClient:
         client = BulletClient(connection_mode=p.GUI if gui else p.DIRECT)
     client.luminous_renderer = p.ER_TINY_RENDERER
     if renderer == "egl":
-        egl = pkgutil.get_loader("eglRenderer")
-        if egl is not None and client.loadPlugin(egl.get_filename(), "_eglRendererPlugin") >= 0:
+        egl = importlib.util.find_spec("eglRenderer")
+        if egl is not None and egl.origin is not None \
+                and client.loadPlugin(egl.origin, "_eglRendererPlugin") >= 0:
             client.luminous_renderer = p.ER_BULLET_HARDWARE_OPENGL
     client.setPhysicsEngineParameter(
         fixedTimeStep=TIME_STEP, deterministicOverlappingPairs=1, numSolverIterations=50

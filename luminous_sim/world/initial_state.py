@@ -3,11 +3,12 @@ which knob works which burner, which faucet fills which basin, and how many slic
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import TYPE_CHECKING
 
 import numpy as np
 
-from luminous_sim.states.model import ObjectState, WorldState
+from luminous_sim.states.model import ObjectState, Temperature, WorldState
 from luminous_sim.vocab import BASINS
 
 if TYPE_CHECKING:
@@ -28,7 +29,7 @@ def initial_state(world: World) -> WorldState:
                       controls=_controls(world), faucet_basin=_faucet_basins(world), slice_counts=slices)
 
 
-def _temperature(states: dict) -> str:
+def _temperature(states: Mapping[str, object]) -> Temperature:
     """A CDF's initial isHot/isCold as a temperature (physical only: ALFRED's isHot means "was heated")."""
     return "Hot" if states.get("isHot") else "Cold" if states.get("isCold") else "RoomTemp"
 
@@ -47,7 +48,7 @@ def _faucet_basins(world: World) -> dict[str, str]:
 
 def _controls(world: World) -> dict[str, str]:
     burners = [o.id for o in world.scene.objects if o.type == "StoveBurner"]
-    out = {}
+    out: dict[str, str] = {}
     for o in world.scene.objects:
         if o.type == "StoveKnob":
             free = [b for b in burners if b not in out.values()] or burners

@@ -145,8 +145,9 @@ def find_spot(world: World, state: WorldState, oid: str, receptacle: str, rng: n
                 got = _centred_pose(entry, spot, spot.floor_z)
             if got is not None:
                 return got[:4]
-    if hidden is not None or last is not None:
-        return (hidden or last)[:4]
+    chosen = hidden or last
+    if chosen is not None:
+        return chosen[:4]
     return Failure(FailureCode.RECEPTACLE_FULL, f"{receptacle} is full: no free, stable spot for {oid}")
 
 

@@ -28,8 +28,11 @@ OPENING_MARGIN = 0.05
 MIN_EYE_DEPTH = 0.1
 """An eye nearer than this to an opening's wall plane (or beyond it) sees through the opening at any angle."""
 
+Point3 = Sequence[float] | np.ndarray
+"""An (x, y, z) point: a sequence of floats or a numpy array of 3."""
 
-def box_corners(lo: Sequence[float], hi: Sequence[float]) -> np.ndarray:
+
+def box_corners(lo: Point3, hi: Point3) -> np.ndarray:
     """The 8 corners of an axis-aligned box, shape (8, 3)."""
     return np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
 
@@ -91,7 +94,7 @@ def openings(room: Any) -> list[Opening]:
 class OutdoorCuller:
     """Which outdoor boxes no opening of the room can show from a camera."""
 
-    def __init__(self, room: Any, boxes: Sequence[tuple[Sequence[float], Sequence[float]]]):
+    def __init__(self, room: Any, boxes: Sequence[tuple[Point3, Point3]]):
         """`room`: the scene's room (a `rooms.RoomShell`); `boxes`: each outdoor box's world (lo, hi) corners,
         axis-aligned, in the order of `hidden`'s answer."""
         self._openings = openings(room)
