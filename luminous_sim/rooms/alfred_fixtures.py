@@ -68,14 +68,15 @@ def _slot_near(
                 i = int(np.argmin(np.abs(offs + width / 2 - u) + offs * 1e-9))
                 if abs(offs[i] + width / 2 - u) <= 1.0:
                     return wall, r4(offs[i])
-    best, best_key = None, None
+    best: tuple[Wall, float] | None = None
+    best_key: tuple[float, ...] | None = None
     pts = shapely.points(far_from) if len(far_from) else None
     for wi, wall in enumerate(walls):
         for u in free_offsets(wall, width, depth, floor, obstacles, front=front):
             foot = footprint(wall, float(u), width, depth)
             if hint is not None:
                 cx, cy = foot.centroid.coords[0]
-                key = (math.dist((cx, cy), hint), wi, float(u))
+                key: tuple[float, ...] = (math.dist((cx, cy), hint), wi, float(u))
             elif pts is not None:
                 dist = shapely.distance(foot, pts)
                 key = (int(np.sum(dist < 1e-9)), -round(float(np.min(dist)), 6), wi, float(u))

@@ -51,15 +51,15 @@ def shell_problems(shell: RoomShell, reach: float = REACH) -> list[str]:
             out.append(f"{fid}: footprint leaves the floor")
     hosts = {s.id: s.counter for s in shell.fixtures.slots}
     ids = list(feet)
-    for i, a in enumerate(ids):
-        for b in ids[i + 1 :]:
-            slot, host = (a, b) if hosts.get(a) == b else (b, a) if hosts.get(b) == a else ("", "")
+    for i, fa in enumerate(ids):
+        for fb in ids[i + 1 :]:
+            slot, host = (fa, fb) if hosts.get(fa) == fb else (fb, fa) if hosts.get(fb) == fa else ("", "")
             if slot:
                 if not inside(feet[slot], feet[host]):
                     out.append(f"{slot}: not inside its counter {host}")
                 continue
-            if overlaps(feet[a], feet[b]):
-                out.append(f"{a} overlaps {b}")
+            if overlaps(feet[fa], feet[fb]):
+                out.append(f"{fa} overlaps {fb}")
     for door, zone in zip(shell.doors, shell.door_clearance_zones()):
         if not inside(zone, floor):
             out.append(f"{door.id}: clearance zone leaves the floor")

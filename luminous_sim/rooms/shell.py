@@ -14,10 +14,11 @@ from __future__ import annotations
 
 import json
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import cached_property
 from pathlib import Path
-from typing import Annotated, Any, Literal
+from typing import Annotated, Any, Final, Literal, Self
 
 import numpy as np
 import shapely
@@ -37,7 +38,7 @@ from shapely.geometry.base import BaseGeometry
 from luminous_sim.errors import RoomError
 from luminous_sim.rooms.geometry import EPS, canonical_ring, is_convex_vertex, r4, signed_area
 
-FORMAT = "luminous-room/1"
+FORMAT: Final = "luminous-room/1"
 """The value of every room file's `format` key."""
 
 R4 = Annotated[float, AfterValidator(r4)]
@@ -52,7 +53,7 @@ NAME_PATTERN = r"^[A-Za-z0-9_\-]+$"
 class _Model(BaseModel):
     model_config = ConfigDict(frozen=True, extra="forbid")
 
-    def model_copy(self, *, update: dict[str, Any] | None = None, deep: bool = False) -> Any:
+    def model_copy(self, *, update: Mapping[str, Any] | None = None, deep: bool = False) -> Self:
         """A copy with some fields replaced (not validated again), without stale cached values."""
         copy = super().model_copy(update=update, deep=deep)
         for name in dir(type(copy)):
