@@ -172,11 +172,6 @@ def _stove(draft: SceneDraft, wall: Wall, slot: FixtureSlot, counter_top: float,
                 draft.add(knob, kx, ky, counter_top - 0.12, yaw, "fixture", True, parent=host)
 
 
-def _counter_top_height(draft: SceneDraft) -> float:
-    tops = [e.bbox_max[2] for e in draft.catalog.of_type("CounterTop")]
-    return max(tops) if tops else 0.9
-
-
 def _within(slot: FixtureSlot, width: float, lo: float, hi: float) -> float:
     """Where a piece `width` wide starts in its slot: centred (at the slot's start when wider), then moved
     as little as needed to stay within [lo, hi] (what is left of its counter run) where it fits there."""

@@ -11,7 +11,7 @@ import networkx as nx
 
 from luminous_sim.errors import FailureCode, PlanningError
 from luminous_sim.world import NavGrid
-from luminous_sim.world.agent import GRID, HORIZON_STEP, AgentPose
+from luminous_sim.world.agent import HORIZON_STEP, AgentPose
 
 WALK_HORIZON = 45
 """ALFRED's planner walks with the camera 45 degrees down."""
@@ -83,7 +83,3 @@ def goto_actions(graph: NavGraph, start: AgentPose, goal: AgentPose) -> list[str
     if not walk:
         return look_steps(start.horizon, goal.horizon)
     return look_steps(start.horizon, WALK_HORIZON) + walk + look_steps(WALK_HORIZON, goal.horizon)
-
-
-def pose_from_node(node: Node, horizon: int) -> AgentPose:
-    return AgentPose(round(node[0] * GRID, 4), round(node[1] * GRID, 4), node[2], horizon)

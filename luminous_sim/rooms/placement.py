@@ -9,7 +9,7 @@ import shapely
 from shapely.geometry import Polygon
 from shapely.geometry.base import BaseGeometry
 
-from luminous_sim.rooms.geometry import is_convex_vertex, mask_to_intervals, polygon_parts, r4
+from luminous_sim.rooms.geometry import is_convex_vertex, mask_to_intervals, polygon_parts
 from luminous_sim.rooms.shell import Wall
 
 STEP = 0.05
@@ -133,11 +133,3 @@ def corner_convex(walls: Sequence[Wall], i: int) -> bool:
 def footprint(wall: Wall, offset: float, width: float, depth: float) -> Polygon:
     """World polygon of a wall-backed rectangle."""
     return wall.rect(offset, offset + width, 0.0, depth)
-
-
-def closest_offset(offsets: np.ndarray, target: float) -> float | None:
-    """The admissible offset closest to `target` (ties: the smaller one), or None."""
-    if len(offsets) == 0:
-        return None
-    i = int(np.argmin(np.abs(offsets - target) + offsets * 1e-9))
-    return r4(offsets[i])
