@@ -60,9 +60,6 @@ class AssetEntry(BaseModel):
         """The URDF to load: the level-of-detail one if asked for and built, else the full-detail one."""
         return Path(self.root) / self.lod_urdf if lod and self.lod_urdf else self.urdf_path
 
-    def regions_of(self, kind: str) -> list[dict[str, Any]]:
-        return [r for r in self.regions if r["kind"] == kind]
-
 
 def _scale_xyz(v: list[float], s: float) -> list[float]:
     return [round(x * s, 5) for x in v]

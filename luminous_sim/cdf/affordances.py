@@ -26,23 +26,9 @@ STANDS_ON: dict[str, frozenset[str]] = {
 }
 """Object type -> receptacle types it may stand on, beyond ALFRED's compatibility table."""
 
-ABILITY_NAMES: tuple[str, ...] = (
-    "pickupable",
-    "receptacle",
-    "openable",
-    "toggleable",
-    "sliceable",
-    "heatable",
-    "coolable",
-    "cleanable",
-    "dirtyable",
-    "movable_receptacle",
-    "fillable",
-)
-
-
 def has_ability(object_type: str, ability: str) -> bool:
-    """Whether a known object type has an ability (one of ABILITY_NAMES); False when unknown."""
+    """Whether a known object type has an ability (a field of `vocab.Abilities`, or "fillable"); False when
+    unknown."""
     try:
         if ability == "fillable":
             return object_type in FILLABLE

@@ -218,17 +218,11 @@ HEADING_RELATIONS = frozenset({"face", "in_front_of", "against_wall", "across_fr
 WRONG_HEADING_COST = 1.0
 
 
-def point_cost(relation: str, grid: FloorGrid, subject: AssetEntry, anchor: Placed2D | None, wall_dirs: np.ndarray,
-               centroid: tuple[float, float], x: float, y: float, yaw: float | None = None) -> float:
-    """The relation's cost at one placed origin (for the validation report); with `yaw`, a relation
-    that asks for a heading costs WRONG_HEADING_COST more when the subject does not have it."""
-    field = relation_field(relation, grid, subject, anchor, wall_dirs, centroid)
-    return cost_in_field(relation, field, grid, subject, wall_dirs, x, y, yaw)
-
-
 def cost_in_field(relation: str, field: tuple[np.ndarray, np.ndarray | None], grid: FloorGrid, subject: AssetEntry,
                   wall_dirs: np.ndarray, x: float, y: float, yaw: float | None = None) -> float:
-    """`point_cost` read off an already computed relation field."""
+    """The relation's cost at one placed origin (for the validation report), read off its already computed
+    field (`relation_field`); with `yaw`, a relation that asks for a heading costs WRONG_HEADING_COST more
+    when the subject does not have it."""
     cost, head = field
     r, c = grid.cell(x, y)
     r, c = min(max(r, 0), grid.shape[0] - 1), min(max(c, 0), grid.shape[1] - 1)

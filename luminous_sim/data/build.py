@@ -63,9 +63,6 @@ ANNOTATIONS = 3
 """Instructions per trajectory (ALFRED has about three per trajectory, `repeat_idx` 0..2)."""
 CAUSES_SHOWN = 2
 """Most frequent failure causes shown per task type in the summary."""
-STAGES = ("layout", "task", "oracle", "export", "crash")
-"""Where a job can fail: generating the layout; no task of the type fits the scene; the oracle did not
-solve it; the export refused it; an unexpected error (a bug: its type and message are recorded)."""
 
 
 class BuildError(LuminousError):
@@ -92,6 +89,9 @@ class JobOutcome:
 
     trial: Path | None = None
     stage: str | None = None
+    """Where a job failed: "layout" (generating the layout), "task" (no task of the type fits the scene),
+    "oracle" (the oracle did not solve it), "export" (the export refused it) or "crash" (an unexpected error,
+    a bug: its type and message are the cause)."""
     cause: str | None = None
     details: dict[str, Any] = field(default_factory=dict)
 

@@ -1,4 +1,4 @@
-"""Data for the state rules: which types cook, gate access, switch off or heat on a stove; slices.
+"""Data for the state rules: which types cook, gate access, or switch off; slices.
 
 The action names, fillable vessels and slicing tools are vocabulary (`luminous_sim.vocab`)."""
 
@@ -35,9 +35,6 @@ FOOD_COOKABLE: frozenset[str] = frozenset(
     }
 )
 """Food that becomes isCooked when heated."""
-
-STOVE_VESSELS: frozenset[str] = frozenset({"Pot", "Pan", "Kettle"})
-"""What a StoveBurner heats (ALFRED's table lets only these stand on a burner)."""
 
 OFF_WHEN_OPENED: frozenset[str] = frozenset({"Microwave"})
 """Devices that AI2-THOR switches off when their door is opened."""

@@ -169,8 +169,3 @@ WASHING: frozenset[str] = frozenset(
     m.name for m in _TABLE if "CleanObject" in (m.achieved_by, m.undone_by)
 )
 """The predicates a sink basin under a running faucet changes (isClean, isDirty, isFilled)."""
-
-
-def meaning(pred: str) -> PredicateMeaning:
-    """The meaning of a goal predicate (KeyError for a name that is not one)."""
-    return MEANINGS[pred]

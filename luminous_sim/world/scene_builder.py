@@ -40,9 +40,6 @@ class BuiltScene:
     """The outdoors as drawn (the last of `overhead`): ground, sky and sky walls, axis-aligned boxes seen only
     through doorways and windows (see `world.portals`)."""
 
-    def body_of(self, object_id: str) -> int:
-        return self.objects[object_id].body
-
     def close(self) -> None:
         """Disconnect the scene's PyBullet client."""
         self.client.disconnect()
