@@ -2,9 +2,10 @@
 
 Each label, in turn, takes the first free spot among candidates in rings of growing distance around its
 anchor (the point it names): free means inside the picture, clear of every label already placed and of
-the obstacles, and, if a spot allows it, clear of other labels' anchors and leader lines too. A label that
-sits away from its anchor gets a leader line back to it. A label with no free spot in the picture goes to
-a legend column to the right of it (x >= width), so that every label is placed.
+the obstacles, and, if a spot allows it, clear of other labels' anchors and leader lines and of points to
+avoid (a path drawn on the picture) too. A label that sits away from its anchor gets a leader line back
+to it. A label with no free spot in the picture goes to a legend column to the right of it (x >= width),
+so that every label is placed.
 """
 
 from __future__ import annotations
@@ -67,7 +68,7 @@ def boxes_overlap(a: Box, b: Box) -> bool:
 
 
 def place_labels(specs: Sequence[LabelSpec], width: float, height: float, obstacles: Sequence[Box] = (),
-                 gap: float = 2.0) -> list[PlacedLabel]:
+                 avoid: np.ndarray | None = None, gap: float = 2.0) -> list[PlacedLabel]:
     """Place every label, in the order given, so that no two boxes overlap, none overlaps an obstacle, and
     each lies inside the `width` x `height` picture or else in a legend column at x >= width.
 
@@ -76,6 +77,7 @@ def place_labels(specs: Sequence[LabelSpec], width: float, height: float, obstac
         width: picture width in pixels.
         height: picture height in pixels.
         obstacles: boxes no label may cover (text already written).
+        avoid: (N, 2) pixel points a label covers only where no other spot is free (a path drawn on the picture).
         gap: pixels between a label and its anchor, and between legend rows.
 
     Returns:
@@ -83,7 +85,7 @@ def place_labels(specs: Sequence[LabelSpec], width: float, height: float, obstac
     """
     anchors = np.array([s.anchor for s in specs], dtype=float).reshape(-1, 2)
     taken = np.array(obstacles, dtype=float).reshape(-1, 4)
-    leaders = np.zeros((0, 2))
+    leaders = np.zeros((0, 2)) if avoid is None else np.asarray(avoid, dtype=float).reshape(-1, 2)
     placed: list[PlacedLabel] = []
     legend_y = gap
     reach = math.hypot(width, height)

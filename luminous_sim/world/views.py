@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Callable, Iterator
 from contextlib import contextmanager
@@ -59,11 +60,13 @@ def labelled_top_down(built: BuiltScene, px_per_m: int = 90, labels: bool = True
     draw = ImageDraw.Draw(img)
     view = np.array(client.computeViewMatrix(eye, target, [0, 1, 0])).reshape(4, 4)
     proj = np.array(client.computeProjectionMatrixFOV(fov, w / h, height - 3.5, height + 1.0)).reshape(4, 4)
+    drawn = np.zeros((0, 2))
     if path is not None and len(path):
         px = _project(view, proj, np.hstack([path, np.full((len(path), 1), 0.05)]), w, h)
         draw.line([tuple(p) for p in px], fill=(220, 30, 30), width=3)
         for (x, y), colour in ((px[0], (30, 160, 30)), (px[-1], (220, 30, 30))):
             draw.ellipse([x - 5, y - 5, x + 5, y + 5], fill=colour)
+        drawn = _densify(px)
     if grid is not None and len(grid):
         pts = _project(view, proj, np.hstack([grid, np.zeros((len(grid), 1))]), w, h)
         for x, y in pts:
@@ -76,13 +79,22 @@ def labelled_top_down(built: BuiltScene, px_per_m: int = 90, labels: bool = True
         return float(x), float(y)
 
     rooms = _room_labels(built, to_px)
-    placed = place_labels(object_labels(built, to_px), w, h, obstacles=[box for _, box in rooms])
+    placed = place_labels(object_labels(built, to_px), w, h, obstacles=[box for _, box in rooms], avoid=drawn)
     img = draw_labels(img, placed, {o.id: o.layer for o in built.scene.objects})
     draw = ImageDraw.Draw(img)
     for text, box in rooms:
         draw.rectangle(box, fill=(255, 255, 255), outline=ROOM_INK)
         _write(draw, text, box, ROOM_INK)
     return TopDown(img, tuple(placed))
+
+
+def _densify(line: np.ndarray, spacing: float = 3.0) -> np.ndarray:
+    """Points every `spacing` pixels along a polyline (N, 2)."""
+    out = [line[:1]]
+    for a, b in itertools.pairwise(line):
+        n = max(int(np.hypot(*(b - a)) / spacing), 1)
+        out.append(a + (b - a) * np.linspace(0, 1, n + 1)[1:, None])
+    return np.concatenate(out)
 
 
 ROOM_INK = (20, 40, 140)
@@ -101,16 +113,23 @@ def labelled(scene: Scene) -> list[SceneObject]:
 
 
 def object_labels(built: BuiltScene, to_px: Callable[[np.ndarray], tuple[float, float]]) -> list[LabelSpec]:
-    """One label per labelled object, anchored at its position: its CDF name, else its type. Small objects
-    come first, so that they get the spots nearest them; furniture may be written on itself."""
+    """One label per labelled object still there, anchored at its position: its CDF name, else its type (a
+    sliced one's, marked so, at the middle of its slices). Small objects come first, so that they get the
+    spots nearest them; furniture may be written on itself."""
     font = ImageFont.load_default()
     draw = ImageDraw.Draw(Image.new("RGB", (1, 1)))
     specs = []
     for obj in sorted(labelled(built.scene), key=lambda o: o.layer != "object"):
         text = obj.cdf_name or obj.type
+        parts = [obj.id] if obj.id in built.objects else [k for k in built.objects if k.startswith(f"{obj.id}|")]
+        if not parts:
+            continue
+        if parts != [obj.id]:
+            text = f"{text} (sliced)"
+        anchor = to_px(np.mean([built.pose_of(k)[0] for k in parts], axis=0))
         left, top, right, bottom = draw.textbbox((0, 0), text, font=font)
         size = (right - left + 2 * PAD, bottom - top + 2 * PAD)
-        specs.append(LabelSpec(obj.id, text, to_px(built.pose_of(obj.id)[0]), size, on_anchor=obj.layer != "object"))
+        specs.append(LabelSpec(obj.id, text, anchor, size, on_anchor=obj.layer != "object"))
     return specs
 
 

@@ -39,3 +39,9 @@ def test_labels_that_do_not_fit_go_to_a_legend_beside_the_picture():
     _no_overlaps(placed)
     legend = [p for p in placed if p.box[0] >= 40]
     assert legend and len(legend) < len(placed)
+
+
+def test_a_path_to_avoid_is_kept_clear_while_there_is_room():
+    path = np.stack([np.full(50, 72.0), np.linspace(0, 100, 50)], axis=1)  # a line just right of the anchor
+    placed = place_labels([LabelSpec("m", "Mug", (70.0, 50.0), (20.0, 12.0))], 100, 100, avoid=path)
+    assert placed[0].box[2] < 70.0  # written on the left, the line's side left free

@@ -89,3 +89,19 @@ def test_every_object_is_labelled_by_its_cdf_name_and_no_labels_overlap():
     assert names == {n: n for n in ("counter", "coffee_machine", "table", "stool", "mug")}
     auto = next(o for o in small if o.name and o.name.endswith("_auto0"))
     assert by_id[auto.id].text == auto.type
+
+
+def test_a_sliced_object_is_labelled_at_its_slices_and_a_gone_one_not_at_all():
+    from luminous_sim.world.views import labelled_top_down
+
+    scene = generate(empty_cdf("Kitchen"), seed=0).scene
+    small = [o for o in scene.objects if o.layer == "object"]
+    sliced, gone = small[0], small[1]
+    built = build_scene(scene, settle_steps=0)
+    try:
+        built.objects[f"{sliced.id}|{sliced.type}Sliced_1"] = built.objects.pop(sliced.id)
+        del built.objects[gone.id]
+        labels = {label.key: label.text for label in labelled_top_down(built, px_per_m=60).labels}
+    finally:
+        built.client.disconnect()
+    assert labels[sliced.id] == f"{sliced.type} (sliced)" and gone.id not in labels
