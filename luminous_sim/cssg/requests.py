@@ -17,6 +17,7 @@ from luminous_sim.cdf.relations import STRUCTURE_ELEMENTS
 from luminous_sim.cdf.schema import ChallengeDefinition
 from luminous_sim.cssg.tables import generation_layer, needs, object_hosts, placement, room_defaults, supports_for
 from luminous_sim.scene import can_hold
+from luminous_sim.scene.model import auto_name
 from luminous_sim.vocab import HANGERS, room_objects
 
 
@@ -229,14 +230,14 @@ def _add_defaults(reqs: dict[str, Request], room_type: str, rng: np.random.Gener
     for t, (lo, hi) in sorted(room_defaults(room_type)["furniture"].items()):
         n = lo + int(rng.binomial(hi - lo, room_share * 0.6))
         for i in range(n if t not in have else 0):
-            name = f"{t.lower()}_auto{i}"
+            name = auto_name(t, i)
             reqs[name] = Request(name, t, _layer(t, None, room_type), False)
     for t, n in sorted(room_objects(room_type).items()):
         if t in have or generation_layer(t) not in ("object", "wall") or rng.random() >= n / 30:
             continue
         if generation_layer(t) == "object" and not supports_for(t):
             continue
-        name = f"{t.lower()}_auto0"
+        name = auto_name(t, 0)
         reqs[name] = Request(name, t, generation_layer(t), False)
     have = {r.type for r in reqs.values()} | fixtures
     for name in [n for n, r in reqs.items() if not r.explicit and needs(r.type)]:

@@ -19,6 +19,11 @@ SCENE_FORMAT: Final = "luminous-scene/1"
 Layer = Literal["structure", "fixture", "furniture", "object", "decoration"]
 
 
+def auto_name(object_type: str, index: int) -> str:
+    """The name the generator gives the `index`-th object of a type that the CDF did not ask for."""
+    return f"{object_type.lower()}_auto{index}"
+
+
 def _r(x: float, digits: int = 4) -> float:
     return round(float(x), digits) + 0.0
 
@@ -48,6 +53,14 @@ class SceneObject(BaseModel):
     scale: float = 1.0
     color: tuple[float, float, float] | None = None
     """A CDF colour for the object's main material slot (else drawn from the palette by color_seed)."""
+
+    @property
+    def cdf_name(self) -> str | None:
+        """The instance name the CDF gave it (`mug`, `chair#2`); None when unnamed or named by the generator."""
+        prefix = auto_name(self.type, 0).removesuffix("0")
+        if self.name is None or (self.name.startswith(prefix) and self.name[len(prefix):].isdigit()):
+            return None
+        return self.name
 
     @field_validator("position")
     @classmethod

@@ -56,3 +56,14 @@ def test_type_of_id_agrees_with_alfred_discrete_args(shared_alfred) -> None:
                 assert kind in SLICED_TYPES, planner
                 seen_slice = True
     assert seen_slice and seen_basin
+
+
+def test_cdf_name_is_the_cdf_s_and_not_the_generator_s():
+    from luminous_sim.scene.model import SceneObject, auto_name
+
+    def named(name, t="Mug"):
+        return SceneObject(id="x", type=t, asset="a", position=(0, 0, 0), layer="object", name=name).cdf_name
+
+    assert named("mug") == "mug" and named("chair#2", "Chair") == "chair#2"
+    assert named(auto_name("Mug", 3)) is None and named(None) is None
+    assert named("mug_auto0", "Cup") == "mug_auto0"  # another type's auto name is a name the CDF chose
