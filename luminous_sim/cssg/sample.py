@@ -121,7 +121,7 @@ class Sample:
         if hit is None:
             return None
         register(ctx, req.name, hit.obj, hit.entry)
-        met = hard_relations_met(ctx, req, hit.entry, hit.obj.position[0], hit.obj.position[1])
+        met = hard_relations_met(ctx, req, hit.entry, hit.obj.position[0], hit.obj.position[1], hit.obj.yaw)
         if not met and req.type not in ATTACHED:
             del ctx.placed[req.name]
             ctx.alternates.pop(req.name, None)
