@@ -165,9 +165,8 @@ def implicit_rules(scene: Scene, catalog: Catalog) -> tuple[int, int]:
                 continue
         for p in (q for q in floor if q.obj.type == rule["subject"]):
             x, y, yaw = p.obj.position[0], p.obj.position[1], p.obj.yaw
-            cost = min(ctx.cost_at(rule["relation"], p.entry, a, x, y, yaw) for a in anchors if a != p.obj.id)
             total += 1
-            met += cost <= TOLERANCE[rule["relation"]] + 1e-6
+            met += any(ctx.check(rule["relation"], p.entry, a, x, y, yaw)[0] for a in anchors if a != p.obj.id)
     return met, total
 
 

@@ -14,6 +14,8 @@ import difflib
 from dataclasses import dataclass
 from typing import Literal
 
+from luminous_sim.vocab.agent_body import AGENT_RADIUS
+
 Category = Literal["support", "spatial", "wall"]
 
 
@@ -51,7 +53,8 @@ class RelationInfo:
 _TABLE: tuple[RelationInfo, ...] = (
     RelationInfo("on", 2, "support", None, "rests on top of the target receptacle"),
     RelationInfo("in", 2, "support", None, "is inside the target receptacle"),
-    RelationInfo("beside", 2, "spatial", "beside", "stands next to the target, almost touching"),
+    RelationInfo("beside", 2, "spatial", "beside", "stands at the target's left or right side, too close for the "
+                 f"agent to walk between (a gap under {2 * AGENT_RADIUS:g} m)"),
     RelationInfo("near", 2, "spatial", "near", "is within a short distance of the target"),
     RelationInfo("far", 2, "spatial", "far", "is at a long distance from the target"),
     RelationInfo("away_from", 2, "spatial", "away_from", "keeps clear of the target"),

@@ -18,11 +18,13 @@ from luminous_sim.cssg.lattice import Lattice
 from luminous_sim.cssg.reach import FloorPiece
 from luminous_sim.cssg.requests import FIXTURE_ANCHOR, Request
 from luminous_sim.cssg.scores import (
+    GAP_RELATIONS,
     TEMPERATURE,
     TOLERANCE,
     Placed2D,
     cost_in_field,
     directional_wall_distance,
+    holds,
     relation_field,
 )
 from luminous_sim.cssg.tables import room_defaults
@@ -191,14 +193,33 @@ class FloorContext:
                 best, heading = cost, head
             else:
                 better = cost < best
+                if head is not None and heading is not None:  # per cell (over headings: the least cost)
+                    cell_better = better if better.ndim == 2 else _least(cost) < _least(best)
+                    heading = np.where(cell_better, head, heading)
                 best = np.where(better, cost, best)
-                if head is not None and heading is not None:
-                    heading = np.where(better, head, heading)
         return best, heading
 
     def cost_at(self, relation: str, entry, name: str | None, x: float, y: float, yaw: float | None = None) -> float:
         return min(cost_in_field(relation, self.relation_field(relation, entry, a), self.grid, entry, self.wall_dirs,
                                  x, y, yaw) for a in self.anchors(name))
+
+    def gap(self, entry, name: str | None, x: float, y: float, yaw: float) -> float | None:
+        """Least distance (m) between the footprint of `entry` at (x, y, yaw) and that of anything `name`
+        refers to; None for a room element (a wall) or a name not placed."""
+        anchors = [a for a in self.anchors(name) if a is not None]
+        if not anchors:
+            return None
+        fp = footprint(entry, x, y, yaw)
+        return min(float(fp.distance(footprint(a.entry, a.x, a.y, a.yaw))) for a in anchors)
+
+    def check(self, relation: str, entry, name: str | None, x: float, y: float,
+              yaw: float | None = None) -> tuple[bool, float, float | None]:
+        """(met, cost, gap) of a floor relation with the subject's origin at (x, y) and heading `yaw`: the
+        one test the generator places by and the validation report applies (`scores.holds`). The gap
+        between the footprints is measured for GAP_RELATIONS when the heading is known, else None."""
+        cost = self.cost_at(relation, entry, name, x, y, yaw)
+        gap = self.gap(entry, name, x, y, yaw) if relation in GAP_RELATIONS and yaw is not None else None
+        return holds(relation, cost, gap), cost, gap
 
 
 SEAT_SIDE = 0.15
@@ -223,7 +244,8 @@ def _entry_key(entry) -> tuple:
 
 
 def score(ctx: FloorContext, req: Request, entry) -> tuple[np.ndarray, np.ndarray | None]:
-    """Weighted total cost per cell and the heading field of the heaviest relation that has one."""
+    """Weighted total cost per cell (per heading and cell where a relation's cost depends on the heading) and
+    the heading field of the heaviest relation that has one."""
     total = np.zeros(ctx.grid.shape)
     heading, best_w = None, -1.0
     for rel in req.rels:
@@ -231,7 +253,7 @@ def score(ctx: FloorContext, req: Request, entry) -> tuple[np.ndarray, np.ndarra
         if rel.anchor and anchor is None and rel.anchor not in ("wall", "window", "door"):
             continue  # the anchor could not be placed; the report records the relation as unmet
         cost, head = ctx.field(rel.relation, entry, rel.anchor)
-        total += rel.weight * cost
+        total = total + rel.weight * cost  # (heading, row, column) once a relation's cost depends on the heading
         if head is not None and rel.weight > best_w:
             heading, best_w = head, rel.weight
     if req.clear_above:  # a painting is to hang above it: not in front of a window
@@ -255,7 +277,7 @@ def hard_relations_met(ctx: FloorContext, req: Request, entry, x: float, y: floa
             continue
         if rel.anchor and ctx.anchor(rel.anchor) is None and rel.anchor not in ("wall", "window", "door"):
             return False
-        if ctx.cost_at(rel.relation, entry, rel.anchor, x, y, yaw) > TOLERANCE[rel.relation] + 1e-6:
+        if not ctx.check(rel.relation, entry, rel.anchor, x, y, yaw)[0]:
             return False
     return True
 
@@ -355,13 +377,19 @@ def _cheapest(field: tuple[np.ndarray, np.ndarray | None], feas: np.ndarray) -> 
     return float(_cell_values(cost, heading, cand).min()) if len(cand) else math.inf
 
 
+def _least(cost: np.ndarray) -> np.ndarray:
+    """Per cell, the least cost over the headings of a (heading, row, column) field; a 2-D field as it is."""
+    return cost if cost.ndim == 2 else cost.min(axis=0)
+
+
 def _cell_values(cost: np.ndarray, heading: np.ndarray | None, cand: np.ndarray) -> np.ndarray:
-    """Cost of each candidate flat index into (heading, row, column): the cell's cost, plus
-    WRONG_HEADING_PENALTY off the preferred heading (none without a heading field)."""
-    cells = cand % cost.size
-    vals = cost.ravel()[cells]
+    """Cost of each candidate flat index into (heading, row, column): the cell's cost (at that heading, for
+    a field per heading), plus WRONG_HEADING_PENALTY off the preferred heading (none without a heading field)."""
+    plane = cost.shape[-2] * cost.shape[-1]
+    cells = cand % plane
+    vals = cost.ravel()[cand if cost.ndim == 3 else cells]
     if heading is not None:
-        vals = vals + WRONG_HEADING_PENALTY * (heading.ravel()[cells] != cand // cost.size)
+        vals = vals + WRONG_HEADING_PENALTY * (heading.ravel()[cells] != cand // plane)
     return vals
 
 
@@ -371,7 +399,7 @@ def _draw(cost: np.ndarray, heading: np.ndarray | None, feas: np.ndarray, rng: n
     the feasible ones (or the cheapest feasible one); the preferred heading is free, the others cost
     WRONG_HEADING_PENALTY more. Without a heading field, one heading is drawn for all cells."""
     if heading is None:
-        heading = np.full(cost.shape, int(rng.integers(4)))
+        heading = np.full(cost.shape[-2:], int(rng.integers(4)))
     cand = np.flatnonzero(feas)
     vals = _cell_values(cost, heading, cand)
     if cheapest:

@@ -16,14 +16,12 @@ from luminous_sim.assets.catalog import Catalog, default_catalog
 from luminous_sim.cdf.schema import ChallengeDefinition
 from luminous_sim.cssg.attributes import check_sizes
 from luminous_sim.cssg.draft import SceneDraft
-from luminous_sim.cssg.floor_objects import may_lie_on_floor, place_on_floor, wants_floor
-from luminous_sim.cssg.furniture import FloorContext, hard_relations_met, place_piece, register
-from luminous_sim.cssg.objects import place_object, reserve_for_goal
+from luminous_sim.cssg.objects import reserve_for_goal
 from luminous_sim.cssg.requests import Request, requests_from_cdf
+from luminous_sim.cssg.sample import Checkpoint, Sample
 from luminous_sim.cssg.structure import fixture_types, place_fixtures
 from luminous_sim.cssg.tables import generation_layer
 from luminous_sim.cssg.validate import LayoutReport, check_layout, named, relation_checks
-from luminous_sim.cssg.walls import place_wall_piece
 from luminous_sim.errors import CDFError, InfeasibleSceneError
 from luminous_sim.rooms.shell import RoomShell
 from luminous_sim.scene import Scene
@@ -101,102 +99,6 @@ def _meets(shell: RoomShell, c) -> bool:
             and (c.min_width is None or width >= c.min_width) and (c.max_width is None or width <= c.max_width))
 
 
-ATTACHED = frozenset({"SinkBasin", "Faucet", "BathtubBasin", "StoveBurner", "StoveKnob"})
-"""Fixture types that only exist as parts of another fixture: never placed on the floor by themselves."""
-
-
-def _bind_fixtures(draft: SceneDraft, req: Request, by_name: dict[str, str], ctx: FloorContext) -> bool | None:
-    """A CDF object of a fixture type names a fixture the room already has (the kitchen's fridge); whether
-    its hard relations hold there, or None when there is none to name.
-
-    If that fixture breaks one of the object's hard relations, it (and what it brings along) is taken
-    out so that the furniture layer places the object by its relations instead (None), unless it is
-    part of another fixture (a sink's basin): that one stays, with its relations unmet.
-    """
-    taken = set(by_name.values())
-    hit = next((p for p in draft.placed if p.obj.type == req.type and p.obj.id not in taken), None)
-    if hit is None:
-        return None
-    register(ctx, req.name, hit.obj, hit.entry)
-    met = hard_relations_met(ctx, req, hit.entry, hit.obj.position[0], hit.obj.position[1])
-    if not met and req.type not in ATTACHED:
-        del ctx.placed[req.name]
-        ctx.alternates.pop(req.name, None)
-        gone = {hit.obj.id} | {p.obj.id for p in draft.placed if p.obj.parent == hit.obj.id}
-        draft.placed[:] = [p for p in draft.placed if p.obj.id not in gone]
-        ctx.remove(gone, hit.footprint)
-        return None
-    by_name[req.name] = hit.obj.id
-    if req.states or req.name:
-        i = draft.placed.index(hit)
-        obj = hit.obj.model_copy(update={"name": req.name, "states": {**hit.obj.states, **req.states}})
-        draft.placed[i] = type(hit)(obj, hit.entry, hit.footprint)
-    return met
-
-
-@dataclass
-class _Checkpoint:
-    """Everything a sample changes, saved before one request is placed."""
-
-    index: int
-    placed: list
-    floor: tuple
-    bound: set
-    by_name: dict
-    occupied: dict
-    unplaced: list
-
-
-def _save(i: int, draft: SceneDraft, ctx: FloorContext, bound: set, by_name: dict, occupied: dict,
-          unplaced: list) -> _Checkpoint:
-    return _Checkpoint(i, list(draft.placed), ctx.snapshot(), set(bound), dict(by_name),
-                       {k: list(v) for k, v in occupied.items()}, list(unplaced))
-
-
-def _restore(cp: _Checkpoint, draft: SceneDraft, ctx: FloorContext, bound: set, by_name: dict, occupied: dict,
-             unplaced: list) -> None:
-    draft.placed[:] = cp.placed
-    draft.taken_ids = {p.obj.id for p in draft.placed}
-    ctx.restore(cp.floor)
-    bound.clear()
-    bound.update(cp.bound)
-    by_name.clear()
-    by_name.update(cp.by_name)
-    occupied.clear()
-    occupied.update({k: list(v) for k, v in cp.occupied.items()})
-    unplaced[:] = cp.unplaced
-
-
-def _place(draft: SceneDraft, ctx: FloorContext, req: Request, by_name: dict, occupied: dict,
-           bound: set[str]) -> bool:
-    """Place one request; True when it is placed with its hard relations met. Names bound to the room's
-    own fixtures are added to `bound`."""
-    if req.layer == "fixture":
-        met = _bind_fixtures(draft, req, by_name, ctx)
-        if met is not None:
-            bound.add(req.name)
-            return met
-        if req.type in ATTACHED:
-            return False
-    if req.layer in ("furniture", "fixture"):
-        with ctx.seat_zone_open(req):  # a stool at the counter stands where one works at it
-            if place_piece(ctx, req) is None:
-                return False
-        by_name[req.name] = draft.placed[-1].obj.id
-        last = draft.placed[-1].obj
-        return hard_relations_met(ctx, req, draft.placed[-1].entry, last.position[0], last.position[1], last.yaw)
-    if req.layer == "object":  # sports gear first on the floor as often as ALFRED puts it there
-        if wants_floor(req, draft.rng) and place_on_floor(ctx, req, by_name):
-            return True
-        return place_object(draft, req, by_name, occupied) or (
-            may_lie_on_floor(req) and place_on_floor(ctx, req, by_name))
-    ok = place_wall_piece(draft, req, by_name,
-                          accept=lambda e, x, y, yaw: hard_relations_met(ctx, req, e, x, y, yaw))
-    if ok:
-        by_name[req.name] = draft.placed[-1].obj.id
-    return ok
-
-
 BACKTRACKS = 3
 """Times one sample may go back and re-place the anchor of a piece that could not meet its relations."""
 
@@ -214,12 +116,8 @@ def sample_layout(cdf: ChallengeDefinition, shell: RoomShell, rng: np.random.Gen
     draft = SceneDraft(shell, catalog, rng)
     place_fixtures(draft)
     requests = requests_from_cdf(cdf, shell.room_type, rng, area=shell.area, fixtures=_fixtures(draft))
-    ctx = FloorContext.create(draft)
-    by_name: dict[str, str] = {}
-    occupied: dict = {}
-    unplaced: list[str] = []
-    checkpoints: dict[str, _Checkpoint] = {}
-    bound: set[str] = set()
+    sample = Sample.start(draft)
+    checkpoints: dict[str, Checkpoint] = {}
     backtracks = 0
     undo_floor = _undo_floors(requests)
     reserved: int | None = None  # where room was kept for the goal's puts (before the room's own objects)
@@ -227,30 +125,32 @@ def sample_layout(cdf: ChallengeDefinition, shell: RoomShell, rng: np.random.Gen
     while i < len(requests):
         req = requests[i]
         if req.layer == "object" and not req.explicit and reserved is None:
-            reserve_for_goal(draft, requests, by_name, occupied)
+            reserve_for_goal(draft, requests, sample.by_name, sample.occupied)
             reserved = i
         if req.layer in ("furniture", "fixture"):
-            checkpoints[req.name] = _save(i, draft, ctx, bound, by_name, occupied, unplaced)
-        ok = _place(draft, ctx, req, by_name, occupied, bound)
+            checkpoints[req.name] = sample.checkpoint(i)
+        ok = sample.place(req)
         if not ok and backtracks < BACKTRACKS and req.layer in ("furniture", "fixture"):
             # an anchor bound to the room's own fixture would be bound again just the same
             anchors = [r.anchor for r in req.rels
-                       if r.explicit and r.hard and r.anchor in checkpoints and r.anchor not in bound]
+                       if r.explicit and r.hard and r.anchor in checkpoints and r.anchor not in sample.bound]
             if anchors:
                 cp = checkpoints[anchors[0]]
-                _restore(cp, draft, ctx, bound, by_name, occupied, unplaced)
+                sample.restore(cp)
                 if reserved is not None and cp.index <= reserved:
                     reserved = None
                 backtracks += 1
                 i = cp.index
                 continue
-        if not ok and req.name not in by_name:
-            unplaced.append(req.name)
-        if not ok and (backtracks >= BACKTRACKS or undo_floor[i] > i) and _fails_for_good(req, draft, ctx, unplaced):
-            return draft, check_layout(draft, requests[:i + 1], ctx, unplaced, attempt, stopped_after=req.name)
+        if not ok and req.name not in sample.by_name:
+            sample.unplaced.append(req.name)
+        if not ok and (backtracks >= BACKTRACKS or undo_floor[i] > i) and _fails_for_good(req, sample):
+            return draft, check_layout(draft, requests[:i + 1], sample.ctx, sample.unplaced, attempt,
+                                       stopped_after=req.name)
         i += 1
-    report = check_layout(draft, requests, ctx, unplaced, attempt)
-    report.ignored_attributes = {r.name: sorted(r.attributes) for r in requests if r.name in bound and r.attributes}
+    report = check_layout(draft, requests, sample.ctx, sample.unplaced, attempt)
+    report.ignored_attributes = {r.name: sorted(r.attributes) for r in requests
+                                 if r.name in sample.bound and r.attributes}
     return draft, report
 
 
@@ -276,13 +176,14 @@ def _undo_floors(requests: list[Request]) -> list[float]:
     return floors
 
 
-def _fails_for_good(req: Request, draft: SceneDraft, ctx: FloorContext, unplaced: list[str]) -> bool:
+def _fails_for_good(req: Request, sample: Sample) -> bool:
     """Whether a CDF object just placed (or not) already fails validation: left out, or one of its hard
     relations unmet, exactly as the final check would find it."""
     if not req.explicit:
         return False
-    return req.name in unplaced or any(c.explicit and c.hard and not c.met
-                                       for c in relation_checks(req, named(draft), draft, ctx))
+    draft = sample.draft
+    return req.name in sample.unplaced or any(c.explicit and c.hard and not c.met
+                                              for c in relation_checks(req, named(draft), draft, sample.ctx))
 
 
 def generate(cdf: ChallengeDefinition, seed: int = 0, room: RoomShell | None = None,

@@ -1,6 +1,8 @@
 """Relations as score fields: each relation gives a cost in metres for every candidate cell (lower is
 better) and, where it has one, a preferred heading per cell. CSSG sums weighted costs and samples
-P(p) proportional to exp(-s_p / TEMPERATURE); the heaviest relation with a heading sets the rotation."""
+P(p) proportional to exp(-s_p / TEMPERATURE); the heaviest relation with a heading sets the rotation.
+A field is (rows, columns), or (heading, rows, columns) where the cost depends on the subject's heading
+(`beside`: a piece turned the other way is wider along the anchor's side)."""
 
 from __future__ import annotations
 
@@ -10,9 +12,10 @@ from dataclasses import dataclass
 import numpy as np
 
 from luminous_sim.assets.catalog import AssetEntry
-from luminous_sim.cssg.grid import RES, FloorGrid
+from luminous_sim.cssg.grid import HEADINGS, RES, FloorGrid
 from luminous_sim.cssg.tables import face_distance
 from luminous_sim.scene import minimum_filter_box
+from luminous_sim.vocab.agent_body import AGENT_RADIUS
 
 TEMPERATURE = 0.05
 """metres of cost per e-fold of probability."""
@@ -25,10 +28,26 @@ FACE_OVERLAP = 0.25
 """How far (m) within the span of the anchor's side a piece that faces it must stand."""
 ACROSS_BAND = (1.2, 3.5)
 """Distance (m) between the fronts of a piece `across_from` its anchor and the anchor (a TV and a sofa)."""
-TOLERANCE = {"against_wall": 0.12, "in_corner": 0.3, "in_centre": 0.6, "beside": 0.35, "near": 0.0, "far": 0.0,
+WALKWAY = 2 * AGENT_RADIUS
+"""The narrowest gap (m) between two footprints that the agent walks through: its grid points keep
+AGENT_RADIUS from every footprint (`scene.reachable_grid`)."""
+BESIDE_GAP = 0.05
+"""Gap (m) between a piece `beside` its anchor and the anchor's side at which the relation costs nothing."""
+GAP_RELATIONS = frozenset({"beside", "near", "far", "away_from"})
+"""Relations about distance: a check of one to an object reports the gap between the two footprints."""
+TOLERANCE = {"against_wall": 0.12, "in_corner": 0.3, "in_centre": 0.6, "beside": WALKWAY - BESIDE_GAP,
+             "near": 0.0, "far": 0.0,
              "away_from": 0.15, "face": 0.15, "in_front_of": 0.4, "behind": 0.4, "left_of": 0.4, "right_of": 0.4,
              "aligned_with": 0.15, "at_head_of": 0.2, "across_from": 0.2}
 """Cost at or below which a relation counts as met (used by the validation report)."""
+
+
+def holds(relation: str, cost: float, gap: float | None = None) -> bool:
+    """Whether a relation counts as met: its cost within TOLERANCE and, for `beside`, its footprint `gap`
+    (where known) narrower than WALKWAY, so that the agent cannot walk between the two."""
+    if cost > TOLERANCE.get(relation, 0.3) + 1e-6:
+        return False
+    return relation != "beside" or gap is None or gap < WALKWAY
 
 
 @dataclass(frozen=True)
@@ -149,10 +168,12 @@ def relation_field(
     same = np.full(grid.shape, heading_index(np.array(fr[0]), np.array(fr[1])))
     u = (gx - ac[0]) * lat[0] + (gy - ac[1]) * lat[1]
     v = (gx - ac[0]) * fr[0] + (gy - ac[1]) * fr[1]
-    if relation in ("beside", "left_of", "right_of"):
+    if relation == "beside":
+        return _beside(grid, subject, anchor), same
+    if relation in ("left_of", "right_of"):
         # next to the anchor's side, anywhere along its depth as long as the subject stays within it
         side = ahw + hw + 0.05
-        along = {"beside": np.abs(u), "left_of": -u, "right_of": u}[relation]
+        along = {"left_of": -u, "right_of": u}[relation]
         slack = max(ahd - hd, 0.0) + 0.1
         return np.abs(along - side) + np.maximum(0.0, np.abs(v) - slack), same
     if relation == "at_head_of":
@@ -188,6 +209,31 @@ def relation_field(
     # aligned_with: centres on a line (either axis), or backs or fronts flush
     options = [np.abs(u), np.abs(v), np.abs(v - hd + ahd), np.abs(v + hd - ahd)]
     return np.min(options, axis=0), same
+
+
+def _beside(grid: FloorGrid, subject: AssetEntry, anchor: Placed2D) -> np.ndarray:
+    """The cost of `subject beside anchor` per subject heading, shape (4, rows, columns).
+
+    How far the gap between the subject's footprint and the anchor's left or right side is from BESIDE_GAP,
+    plus how far the subject's centre lies beyond the anchor's depth (beyond half the anchor's depth less
+    half its own, and 0.1 m). The gap is exact for footprints square to the anchor, so a cost within
+    TOLERANCE["beside"] means a gap of at most WALKWAY.
+    """
+    gx, gy = grid.coords()
+    ac, (ahw, ahd), (hw, hd) = anchor.center(), anchor.half(), _half_extents(subject)
+    lat, fr = anchor.lateral, anchor.front
+    mid = (np.array(subject.bbox_min[:2]) + np.array(subject.bbox_max[:2])) / 2
+    out = np.empty((len(HEADINGS),) + grid.shape)
+    for k, yaw in enumerate(HEADINGS):
+        turn = yaw - anchor.yaw
+        c, s = abs(math.cos(turn)), abs(math.sin(turn))
+        ex, ey = c * hw + s * hd, s * hw + c * hd  # half extents along the anchor's side and depth
+        dx = gx + mid[0] * math.cos(yaw) - mid[1] * math.sin(yaw) - ac[0]
+        dy = gy + mid[0] * math.sin(yaw) + mid[1] * math.cos(yaw) - ac[1]
+        gap = np.abs(dx * lat[0] + dy * lat[1]) - ahw - ex
+        v = dx * fr[0] + dy * fr[1]
+        out[k] = np.abs(gap - BESIDE_GAP) + np.maximum(0.0, np.abs(v) - (max(ahd - ey, 0.0) + 0.1))
+    return out
 
 
 def _wall_heading(grid: FloorGrid) -> np.ndarray:
@@ -233,6 +279,8 @@ def cost_in_field(relation: str, field: tuple[np.ndarray, np.ndarray | None], gr
     if relation == "away_from" and head is not None and yaw is not None:
         clearance = _wall_clearances(grid, *_half_extents(subject))[round(yaw / (math.pi / 2)) % 2]
         return max(0.0, WALL_CLEAR - float(clearance[r, c]))
+    if cost.ndim == 3:  # a cost per heading: the one it stands at, or the least where that is not known
+        cost = cost[int(np.argmin(cost[:, r, c])) if yaw is None else round(yaw / (math.pi / 2)) % 4]
     extra = 0.0
     if yaw is not None and head is not None and relation in HEADING_RELATIONS:
         extra = WRONG_HEADING_COST * (int(head[r, c]) != round(yaw / (math.pi / 2)) % 4)

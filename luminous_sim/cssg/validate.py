@@ -10,13 +10,27 @@ import shapely
 from shapely.strtree import STRtree
 
 from luminous_sim.cssg.draft import SceneDraft
-from luminous_sim.cssg.scores import TOLERANCE
 from luminous_sim.scene import horizontal_reach
 from luminous_sim.vocab.agent_body import VISIBILITY_DISTANCE as REACH
 
 
 @dataclass
 class RelationCheck:
+    """Whether one relation of one CDF (or default) object holds in a sample.
+
+    Attributes:
+        subject: The object's name.
+        relation: Canonical relation name.
+        anchor: The target's name (an object or a room element), None for a unary relation.
+        source: Where the relation comes from (the CDF, an implicit rule).
+        hard: Whether the sample is rejected when it is not met (with `explicit`).
+        explicit: Whether the CDF states it.
+        met: Whether it holds (`scores.holds`).
+        cost: Its score-field cost (m) where the subject stands; inf when either object is missing.
+        gap: For a relation about distance (beside, near, far, away_from) to an object, the least
+            distance (m) between the two footprints; None otherwise. `beside` is not met from WALKWAY up.
+    """
+
     subject: str
     relation: str
     anchor: str | None
@@ -25,6 +39,7 @@ class RelationCheck:
     explicit: bool
     met: bool
     cost: float
+    gap: float | None = None
 
 
 @dataclass
@@ -110,6 +125,7 @@ def relation_checks(req, by_name: dict, draft: SceneDraft, ctx) -> list[Relation
         return []
     out = []
     for rel in req.rels:
+        gap = None
         if placed is None:
             met, cost = False, float("inf")
         elif rel.relation in ("on", "in"):
@@ -123,11 +139,10 @@ def relation_checks(req, by_name: dict, draft: SceneDraft, ctx) -> list[Relation
         elif rel.anchor and ctx.anchor(rel.anchor) is None and rel.anchor not in ("wall", "window", "door"):
             met, cost = False, float("inf")
         else:
-            cost = ctx.cost_at(rel.relation, placed.entry, rel.anchor, placed.obj.position[0],
-                               placed.obj.position[1], placed.obj.yaw)
-            met = cost <= TOLERANCE.get(rel.relation, 0.3) + 1e-6
+            met, cost, gap = ctx.check(rel.relation, placed.entry, rel.anchor, placed.obj.position[0],
+                                       placed.obj.position[1], placed.obj.yaw)
         out.append(RelationCheck(req.name, rel.relation, rel.anchor, rel.source, rel.hard, rel.explicit,
-                                 bool(met), round(float(cost), 4)))
+                                 bool(met), round(float(cost), 4), None if gap is None else round(gap, 4)))
     return out
 
 
