@@ -5,6 +5,10 @@ planner's domain `planning.symbolic.domain_text()`), optionally `video.mp4`, and
 with what ALFRED has no field for (task and goal, seed, the scene itself, evaluation, replans, package
 version), enough to regenerate the trajectory with `run_episode(Scene.from_json(sidecar["scene"]), task_type, seed)`.
 
+`images[].image_name` in `traj_data.json` names a `.png` (`000000000.png`, ...) while `raw_images/` holds
+`.jpg` files of the same stem (`000000000.jpg`), exactly as ALFRED's own json_2.1.0 data does; readers swap the
+extension, as ALFRED's loaders do.
+
 Where ALFRED records something we cannot know, the value is ALFRED-typed and generated, and the sidecar
 says so (`generated`): the task id's timestamp, MTurk assignment ids and votes, object names' hex
 suffixes, and the scene number of a room that is no AI2-THOR floor plan.

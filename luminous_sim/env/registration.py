@@ -1,9 +1,9 @@
 """Gymnasium ids from the declarative specs in `envs/*.toml` (one file per family of ids).
 
-Where the specs are read from: the repository's top-level `envs/` folder, the documented place to add
-or change an environment (a data-only change), when it sits beside the package (a source checkout or an
-editable install); otherwise the copy shipped inside the package as package data (`luminous_sim/env/specs/`,
-what a wheel holds). A test keeps the two byte-identical. A spec file looks like::
+`envs/` is the one copy of the specs. Where they are read from: in an installed wheel, the package data
+`luminous_sim/env/specs/`, which the build copies from `envs/` (setup.py's build hook); in a source checkout
+or an editable install, the repository's `envs/` beside the package (the documented place to add or change
+an environment, a data-only change). A spec file looks like::
 
     [family]
     entry_point = "luminous_sim.env.alfred_env:LuminousEnv"
@@ -31,9 +31,9 @@ from luminous_sim.env.config import EnvConfig
 from luminous_sim.errors import LuminousError
 
 REPO_SPECS = Path(__file__).resolve().parents[2] / "envs"
-"""The canonical specs, in a source checkout."""
+"""The specs, in a source checkout or an editable install (the one copy)."""
 PACKAGE_SPECS = "specs"
-"""The shipped copy, inside this package."""
+"""Where a wheel holds them, inside this package (copied from `envs/` at build time, absent from the source)."""
 _FAMILY_KEYS = {"entry_point", "kwargs"}
 _ENV_KEYS = {"id", "description", "kwargs", "entry_point"}
 
@@ -49,10 +49,24 @@ class EnvEntry:
     source: str = ""
 
 
+def spec_folder() -> Traversable:
+    """The folder the specs are read from: the wheel's package data if installed so, else the repository's `envs/`.
+
+    Raises:
+        LuminousError: neither exists (a wheel built without the build hook, or a checkout without `envs/`).
+    """
+    shipped = resources.files(__package__) / PACKAGE_SPECS
+    if shipped.is_dir():
+        return shipped
+    if REPO_SPECS.is_dir():
+        return REPO_SPECS
+    raise LuminousError(f"no environment specs: neither the package data {shipped} nor {REPO_SPECS} exists "
+                        "(build the wheel with the project's setup.py, which copies envs/*.toml into it)")
+
+
 def spec_files() -> list[Traversable]:
-    """The spec files, sorted by name: the repository's `envs/` if present, else the shipped copy."""
-    folder: Traversable = REPO_SPECS if REPO_SPECS.is_dir() else resources.files(__package__) / PACKAGE_SPECS
-    return sorted((f for f in folder.iterdir() if f.name.endswith(".toml")), key=lambda f: f.name)
+    """The spec files, sorted by name (see `spec_folder`)."""
+    return sorted((f for f in spec_folder().iterdir() if f.name.endswith(".toml")), key=lambda f: f.name)
 
 
 def read_spec(text: str, source: str) -> list[EnvEntry]:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -56,14 +57,29 @@ def test_each_id_is_registered_by_string_entry_point_and_serialises(env_id):
     EnvConfig.from_kwargs(spec.kwargs)  # valid options
 
 
-def test_the_shipped_copy_matches_the_repository_specs():
-    shipped = REPO / "luminous_sim" / "env" / PACKAGE_SPECS
-    assert REPO_SPECS == REPO / "envs"
+def test_envs_is_the_one_copy_of_the_specs():
+    """envs/ is the only place the specs live in the source; the package holds no second copy."""
+    assert REPO_SPECS == REPO / "envs" and sorted(REPO_SPECS.glob("*.toml")), "envs/*.toml is missing"
+    copies = [str(p.relative_to(REPO)) for p in (REPO / "luminous_sim").rglob("*.toml") if "[[env]]" in p.read_text()]
+    assert not (REPO / "luminous_sim" / "env" / PACKAGE_SPECS).exists() and not copies, (
+        f"a second copy of the env specs in the package ({copies}): keep envs/ only; the wheel copies it at build time")
+    from luminous_sim.env import registration
+
+    assert Path(str(registration.spec_folder())) == REPO_SPECS
+
+
+def test_the_build_ships_envs_as_package_data(tmp_path):
+    """setup.py's build hook copies envs/*.toml into the built package, where an installed wheel reads them."""
+    pytest.importorskip("setuptools")
+    out = subprocess.run([sys.executable, "setup.py", "-q", "egg_info", "--egg-base", str(tmp_path), "build_py",
+                          "--build-lib", str(tmp_path / "lib")], capture_output=True, text=True, cwd=REPO,
+                         check=False)
+    assert out.returncode == 0, out.stderr[-2000:]
+    shipped = tmp_path / "lib" / "luminous_sim" / "env" / PACKAGE_SPECS
     names = sorted(p.name for p in REPO_SPECS.glob("*.toml"))
-    assert names and names == sorted(p.name for p in shipped.glob("*.toml")), \
-        "copy envs/*.toml to luminous_sim/env/specs/ (what a wheel ships)"
+    assert sorted(p.name for p in shipped.glob("*.toml")) == names, "the built package lacks envs/*.toml"
     for name in names:
-        assert (REPO_SPECS / name).read_bytes() == (shipped / name).read_bytes(), f"{name} differs from its copy"
+        assert (shipped / name).read_bytes() == (REPO_SPECS / name).read_bytes()
 
 
 def test_registering_twice_changes_nothing():
@@ -90,12 +106,20 @@ def test_a_bad_spec_names_the_file_and_the_key(text, message):
     assert message in str(err.value)
 
 
-def test_without_the_repository_folder_the_shipped_specs_are_read(monkeypatch):
+def test_an_installed_wheel_reads_its_package_data(monkeypatch, tmp_path):
+    """Where the package holds `env/specs/` (an installed wheel), those are read, not a folder beside it."""
     from luminous_sim.env import registration
 
     ids = [e.id for e in load_entries()]
+    shipped = tmp_path / "luminous_sim" / "env" / PACKAGE_SPECS
+    shipped.mkdir(parents=True)
+    for p in REPO_SPECS.glob("*.toml"):
+        (shipped / p.name).write_bytes(p.read_bytes())
+    monkeypatch.setattr(registration.resources, "files", lambda _package: tmp_path / "luminous_sim" / "env")
     monkeypatch.setattr(registration, "REPO_SPECS", REPO / "no-such-folder")
-    files = registration.spec_files()
-    assert [f.name for f in files] == sorted(p.name for p in REPO_SPECS.glob("*.toml"))
-    assert "luminous_sim" in str(files[0]) and "specs" in str(files[0])
+    assert [f.name for f in registration.spec_files()] == sorted(p.name for p in REPO_SPECS.glob("*.toml"))
+    assert str(shipped) in str(registration.spec_files()[0])
     assert [e.id for e in registration.load_entries()] == ids
+    shutil.rmtree(shipped)
+    with pytest.raises(LuminousError, match="no environment specs"):
+        registration.spec_files()
