@@ -119,7 +119,7 @@ def oracle(houses: dict[tuple[int, int], HouseGenerated], oracle_seeds: int) -> 
             t0 = time.process_time()
             draws["n"] = 0
             try:
-                result = run_episode(house.scene, t, seed, record_frames=False, cross_room=True)
+                result, _ = run_episode(house.scene, t, seed, record_frames=False, extra_annotations=0, cross_room=True)
             except TaskSamplingError:
                 row["no_task"] += 1
                 continue

@@ -104,7 +104,8 @@ def episode(task_type: str, k: int) -> dict:
     try:
         scene = scene_for_task(task_type, room, seed)
         t0 = time.perf_counter()
-        r, traj = run_episode(scene, task_type, seed=k, record_frames=False, return_trajectory=True)
+        r, record = run_episode(scene, task_type, seed=k, record_frames=False, extra_annotations=0)
+        traj = record.trajectory
     except LuminousError as exc:  # no room of this type supports the task, or none fits physically
         return {"type": task_type, "k": k, "room": room, "scene_seed": seed, "success": None, "no_task": 1,
                 "why": str(exc), "raw": {"sampled": False, "why": "no scene"}}

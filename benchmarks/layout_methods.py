@@ -236,7 +236,7 @@ def episodes(method: Method, task_type: str, count: int,
         if outcome.scene is None:
             continue
         try:
-            ok += run_episode(outcome.scene, task_type, i, record_frames=False, extra_annotations=0).success
+            ok += run_episode(outcome.scene, task_type, i, record_frames=False, extra_annotations=0)[0].success
         except TaskSamplingError:  # no task of this type in the scene: a failure of the scene
             no_task += 1
     return ok, count, no_task

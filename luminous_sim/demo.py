@@ -32,7 +32,7 @@ def run_demo_episode(out: Path, seed: int = 0):
     scene = generate(empty_cdf("Kitchen"), seed=seed).scene
     result = None
     for task_type in DEMO_TASKS:
-        result = run_episode(scene, task_type, seed, out_dir=Path(out))
+        result, _ = run_episode(scene, task_type, seed, out_dir=Path(out), extra_annotations=0)
         if result.success:
             break
     return result

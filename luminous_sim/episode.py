@@ -52,7 +52,8 @@ class EpisodeResult:
 
 @dataclass(frozen=True)
 class EpisodeRecord:
-    """What an exporter needs beyond the files `run_episode` writes (`return_record=True`)."""
+    """What an exporter needs beyond the files `run_episode` writes (`run_episode` returns it beside the
+    `EpisodeResult`)."""
 
     task: Any
     """The `TaskInstance` that was solved (after any redraws, or the one given)."""
@@ -88,7 +89,7 @@ def write_video(frames: list[np.ndarray], path: Path, fps: int = 6) -> Path:
     path.parent.mkdir(parents=True, exist_ok=True)
     tmp = path.with_name(f".{path.stem}.tmp{path.suffix}")
     h, w = frames[0].shape[:2]
-    writer = cv2.VideoWriter(str(tmp), cv2.VideoWriter_fourcc(*"mp4v"), fps, (w, h))
+    writer = cv2.VideoWriter(str(tmp), cv2.VideoWriter.fourcc(*"mp4v"), fps, (w, h))
     for f in frames:
         writer.write(cv2.cvtColor(f, cv2.COLOR_RGB2BGR))
     writer.release()
@@ -109,15 +110,24 @@ def prepared_world(scene: Scene, task_type: str, catalog: Catalog | None = None)
 
 
 def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = None,
-                record_frames: bool = True, return_trajectory: bool = False, return_record: bool = False,
-                extra_annotations: int = 2, cross_room: bool = False):
+                record_frames: bool = True, extra_annotations: int = 2,
+                cross_room: bool = False) -> tuple[EpisodeResult, EpisodeRecord]:
     """Sample a `task_type` task in `scene`, solve it with the oracle, evaluate it, and write the files.
 
-    With `cross_room` (a house only), the task's object and its receptacle (or lamp) are in different rooms
-    (`tasks.rooms_apart`).
+    Args:
+        scene: the scene.
+        task_type: an ALFRED task type.
+        seed: seeds the task draw and the instructions' wording.
+        out_dir: where to write trajectory.json, frames/, video.mp4, top_down.png, instructions.txt (None:
+            nothing is written).
+        record_frames: render a frame after each action (for the files and the record's trajectory).
+        extra_annotations: instructions the record holds beyond the one written, each from its own stream.
+        cross_room: (a house only) the task's object and its receptacle (or lamp) are in different rooms
+            (`tasks.rooms_apart`).
 
-    Returns the `EpisodeResult`; with `return_trajectory`, `(result, trajectory)`; with `return_record`,
-    `(result, EpisodeRecord)` holding the task, the trajectory and `1 + extra_annotations` instructions.
+    Returns:
+        `(result, record)`: the `EpisodeResult`, and the `EpisodeRecord` holding the task, the trajectory
+        and `1 + extra_annotations` instructions.
     """
     from luminous_sim.planning import Oracle, draw_task
     from luminous_sim.tasks.errors import TaskSamplingError
@@ -150,13 +160,9 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
             world, task = fresh, redrawn
             start_state = world.view().state
             traj = Oracle(world, record_frames=record_frames).run(task.goal)
-        result, record = _conclude(world, scene, task, traj, _Run(seed, rng, start, start_state, out_dir,
-                                                                  return_record, extra_annotations))
+        return _conclude(world, scene, task, traj, _Run(seed, rng, start, start_state, out_dir, extra_annotations))
     finally:
         world.close()
-    if return_record:
-        return result, record
-    return (result, traj) if return_trajectory else result
 
 
 def run_task(scene: Scene, task: TaskInstance, seed: int, out_dir: Path | None = None, *,
@@ -176,7 +182,8 @@ def run_task(scene: Scene, task: TaskInstance, seed: int, out_dir: Path | None =
             isToggled, isDirty, isFilled, isHot, isCool) are set, then every literal is checked.
         script: steps to follow instead of the oracle's plan (a CDF's `execution`); the goal is judged
             after them.
-        record_frames, return_record, extra_annotations: as for `run_episode`.
+        record_frames, extra_annotations: as for `run_episode`.
+        return_record: return the `EpisodeRecord` too.
 
     Returns:
         The `EpisodeResult`, or with `return_record` `(result, EpisodeRecord)`.
@@ -199,8 +206,9 @@ def run_task(scene: Scene, task: TaskInstance, seed: int, out_dir: Path | None =
         else:
             traj = Oracle(world, record_frames=record_frames).run(task.goal, names=names or None)
         rng = np.random.default_rng(np.random.SeedSequence([seed, 11]))
+        extra = extra_annotations if return_record else 0
         result, record = _conclude(world, scene, task, traj, _Run(seed, rng, start_pose, start_state, out_dir,
-                                                                  return_record, extra_annotations, notes))
+                                                                  extra, notes))
     finally:
         world.close()
     return (result, record) if return_record else result
@@ -215,12 +223,11 @@ class _Run:
     start: AgentPose
     start_state: Any
     out_dir: Path | None
-    return_record: bool
     extra_annotations: int
     notes: tuple[str, ...] = ()
 
 
-def _conclude(world, scene: Scene, task, traj: Trajectory, run: _Run) -> tuple[EpisodeResult, EpisodeRecord | None]:
+def _conclude(world, scene: Scene, task, traj: Trajectory, run: _Run) -> tuple[EpisodeResult, EpisodeRecord]:
     """Score the trajectory by the task's goal conditions, describe it, write the files."""
     from luminous_sim.cdf.predicates import to_sexpr
     from luminous_sim.language import Describer
@@ -233,10 +240,9 @@ def _conclude(world, scene: Scene, task, traj: Trajectory, run: _Run) -> tuple[E
     traj.success = traj.success and done == total
     text = Describer(view, run.rng).describe(traj, task_description(task, run.rng))
     texts = [text]
-    if run.return_record:
-        for k in range(run.extra_annotations):
-            more = np.random.default_rng(np.random.SeedSequence([run.seed, 12, k]))
-            texts.append(Describer(view, more).describe(traj, task_description(task, more)))
+    for k in range(run.extra_annotations):
+        more = np.random.default_rng(np.random.SeedSequence([run.seed, 12, k]))
+        texts.append(Describer(view, more).describe(traj, task_description(task, more)))
     failures = tuple(Failure(c, m) for c, m in zip(traj.failure_codes, traj.failures, strict=True))
     first = failures[0].message if failures else "" if traj.success else (
         f"the goal is not met at the end: {done} of {total} goal conditions hold")
@@ -245,8 +251,7 @@ def _conclude(world, scene: Scene, task, traj: Trajectory, run: _Run) -> tuple[E
     result = EpisodeResult(task.task_type, to_sexpr(task.goal), traj.success, (done, total), len(traj.low_actions),
                            traj.planning_seconds, Path(run.out_dir) if run.out_dir else None, first,
                            failures[0].code if failures else None, failures, run.notes)
-    record = EpisodeRecord(task, traj, run.start_state, texts) if run.return_record else None
-    return result, record
+    return result, EpisodeRecord(task, traj, run.start_state, texts)
 
 
 def _place_agent(world, start: AgentPoseSpec | None) -> tuple[str, ...]:
@@ -264,7 +269,7 @@ def _place_agent(world, start: AgentPoseSpec | None) -> tuple[str, ...]:
                          f"started at the nearest reachable point ({x:g}, {y:g})")
     rotation = pose.rotation if start.rotation is None else start.rotation
     horizon = pose.horizon if start.horizon is None else start.horizon
-    world.agent = AgentPose(x, y, rotation, horizon)
+    world.set_start(AgentPose(x, y, rotation, horizon))
     return tuple(notes)
 
 

@@ -11,7 +11,7 @@ Typical use::
 
     from luminous_sim.data import scene_for_task
     scene = scene_for_task("pick_heat_then_place_in_recep", "Kitchen", seed=0)
-    result, record = run_episode(scene, "pick_heat_then_place_in_recep", seed=0, return_record=True)
+    result, record = run_episode(scene, "pick_heat_then_place_in_recep", seed=0)
     trial_dir = export_alfred(out_root, scene, record, seed=0)
 
     parse = parse_alfred("valid_seen/<task>/<trial>/traj_data.json")   # parse.cdf, .kept, .dropped

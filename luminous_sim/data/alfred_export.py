@@ -267,7 +267,7 @@ def _jpeg(frame) -> bytes:
 
 def export_alfred(out_root: Path, scene: Scene, record: EpisodeRecord, seed: int, task_id: str | None = None,
                   video: bool = False, sidecar: Mapping[str, Any] | None = None) -> Path:
-    """Write a solved episode (`run_episode(scene, task_type, seed, return_record=True)`) under `out_root`
+    """Write a solved episode (`run_episode(scene, task_type, seed)`) under `out_root`
     in ALFRED's layout and return its trial folder. `sidecar` adds keys to (or replaces keys of) the
     sidecar file, e.g. how to regenerate an episode that `run_episode` did not make.
 
@@ -295,7 +295,7 @@ def export_alfred(out_root: Path, scene: Scene, record: EpisodeRecord, seed: int
         "goal_conditions": list(traj.goal_conditions), "replans": traj.replans, "failures": list(traj.failures),
         "high_idx_map": high_map, "luminous_high_pddl": traj.high_pddl, "generated": GENERATED,
         "regenerate": "luminous_sim.episode.run_episode(Scene.from_json(json.dumps(scene)), "
-                      "task['task_type'], seed, return_record=True)",
+                      "task['task_type'], seed)",
         "scene": json.loads(scene.to_json()),
         **(sidecar or {}),
     }

@@ -209,7 +209,7 @@ class SplitJob:
         from luminous_sim.episode import run_episode
 
         return run_episode(scene, entry.task_type, entry.task_seed, record_frames=options.frames,
-                           return_record=True, extra_annotations=ANNOTATIONS - 1)
+                           extra_annotations=ANNOTATIONS - 1)
 
 
 def split_jobs(split: str, count: int, start: int = 0) -> list[SplitJob]:

@@ -23,6 +23,8 @@ if TYPE_CHECKING:
     from luminous_sim.env.alfred_env import LuminousEnv
     from luminous_sim.env.config import EnvConfig
     from luminous_sim.env.episodes import UNAVAILABLE_CAUSES, EpisodeUnavailable
+    from luminous_sim.env.expert import Expert
+    from luminous_sim.env.kinds import TASK_KINDS, TaskKind
     from luminous_sim.env.oracle_policy import OraclePolicy
     from luminous_sim.env.registration import EnvEntry, load_entries, register_envs
     from luminous_sim.env.rewards import RewardConfig
@@ -40,6 +42,8 @@ _WHERE = {
     "LuminousEnv": "alfred_env",
     "EnvConfig": "config",
     "EpisodeUnavailable": "episodes", "UNAVAILABLE_CAUSES": "episodes",
+    "Expert": "expert",
+    "TaskKind": "kinds", "TASK_KINDS": "kinds",
     "OraclePolicy": "oracle_policy",
     "EnvEntry": "registration", "load_entries": "registration", "register_envs": "registration",
     "RewardConfig": "rewards",
@@ -49,6 +53,7 @@ _WHERE = {
 }
 
 __all__ = [
+    "TASK_KINDS",
     "UNAVAILABLE_CAUSES",
     "ActionFeedback",
     "ActionSubset",
@@ -56,6 +61,7 @@ __all__ = [
     "EnvConfig",
     "EnvEntry",
     "EpisodeUnavailable",
+    "Expert",
     "FailureLimitEnds",
     "InstructionTokens",
     "LuminousEnv",
@@ -63,6 +69,7 @@ __all__ = [
     "OraclePolicy",
     "RewardConfig",
     "SceneRepeat",
+    "TaskKind",
     "load_entries",
     "register_envs",
 ]

@@ -41,7 +41,6 @@ planner solves), so the population is "solvable by the expert", and redraws say 
 from __future__ import annotations
 
 import string
-from dataclasses import astuple, dataclass
 from typing import Any
 
 import gymnasium
@@ -53,12 +52,14 @@ from luminous_sim.env.cdf_scenes import cdf_episode, cdf_paths
 from luminous_sim.env.config import EnvConfig
 from luminous_sim.env.episodes import Episode, draw_episode, requested_entry, split_episode
 from luminous_sim.env.expert import Expert
-from luminous_sim.env.goals import goal_from_dict
-from luminous_sim.env.goto_reward import GotoReward, goto_targets
-from luminous_sim.env.rewards import RewardConfig, step_reward
+from luminous_sim.env.history import Sent
+from luminous_sim.env.replay import episode_data, episode_from_data, history_data, replay
+from luminous_sim.env.rewards import RewardConfig
+from luminous_sim.env.shaping import RewardShaper
 from luminous_sim.env.worlds import WorldPool
 from luminous_sim.errors import FailureCode, LuminousError
 from luminous_sim.vocab import ALL_TYPES, abilities
+from luminous_sim.world import World
 
 INSTRUCTION_CHARSET = string.ascii_letters + string.digits + " .,;:'!?-()\n"
 MAX_INSTRUCTION = 1000
@@ -66,15 +67,6 @@ MAX_INSTRUCTION = 1000
 DEPTH_FAR = 20.0
 """The camera's far plane (metres): the largest depth."""
 POSE_BOUND = 1000.0
-
-
-@dataclass(frozen=True)
-class Sent:
-    """One action that reached the world: as the agent gave it, as sent, and whether it succeeded."""
-
-    given: Any
-    api: dict[str, Any]
-    ok: bool
 
 
 def _type_index(object_type: str | None) -> int:
@@ -93,7 +85,11 @@ def _clean_text(text: str) -> str:
 
 
 class LuminousEnv(gymnasium.Env):
-    """ALFRED's low-level actions, observations and limits in a generated room; see the module docstring."""
+    """ALFRED's low-level actions, observations and limits in a generated room; see the module docstring.
+
+    It wires its parts together: episodes (`episodes`, `cdf_scenes`), worlds (`WorldPool`), the expert
+    (`Expert`), the reward (`RewardShaper`) and pickling by replay (`replay`).
+    """
 
     metadata: dict[str, Any] = {"render_modes": ["rgb_array"], "render_fps": 6}  # noqa: RUF012  (as gymnasium.Env)
 
@@ -122,20 +118,19 @@ class LuminousEnv(gymnasium.Env):
         if self.actions.slots:
             obs["objects"] = spaces.MultiDiscrete(np.full(self.actions.slots, len(ALL_TYPES) + 1, np.int64))
         self.observation_space = spaces.Dict(obs)
-        self.world: Any = None
+        self.world: World | None = None
+        """The episode's world (None before the first reset and after `close`)."""
         self.worlds = WorldPool(self.config)
         """Worlds kept for reuse while episodes stay in one scene (`builds` and `reuses` count them)."""
         self.episode: Episode | None = None
         self.history: list[Sent] = []
+        self.expert: Expert | None = None
+        """The episode's expert (None before the first reset)."""
+        self.shaper = RewardShaper(self.rewards, self.config.navigation_reward)
+        """The episode's goal scores and reward."""
         self._slots: list[str] = []
-        """The object ids in the slots of the last observation (`objects` targets)."""
-        self._expert = Expert()
-        self._goto: GotoReward | None = None
-        """ALFRED's navigation reward of the episode (dense rewards with the expert's plan known)."""
-        self._scores: dict[str, int] = {}
         self._steps = 0
         self._failures = 0
-        self._reached = False
 
     # ------------------------------------------------------------------ gymnasium API
 
@@ -157,47 +152,29 @@ class LuminousEnv(gymnasium.Env):
             self.episode, self.world = cdf_episode(self.config, paths, rng, self.worlds, options.get("scene_seed"))
         else:
             self.episode, self.world = draw_episode(self.config, rng, self.worlds, scene=options.get("scene"))
-        self._start()
+        self._start(self.episode, self.world)
         return self._observation(), {**self._info(None, ""), "redraws": self.episode.redraws}
 
-    def _start(self) -> None:
-        assert self.episode is not None
-        self.history, self._steps, self._failures, self._reached = [], 0, 0, False
-        self._expert.start(self.episode.expert.actions if self.episode.expert is not None else None)
-        self._scores = self._goal_scores()
-        self._goto = None
-        r = self.rewards
-        if not r.sparse and self.config.navigation_reward and self.episode.expert is not None:
-            from luminous_sim.planning import NavGraph
-
-            agent = self.world.agent
-            self._goto = GotoReward(NavGraph(self.world.nav), goto_targets(agent, self.episode.expert.actions), agent,
-                                    shaping=r.goto_shaping, reach=r.goto_reach, bonus=r.section("GotoLocation"))
+    def _start(self, episode: Episode, world: World) -> None:
+        self.history, self._steps, self._failures = [], 0, 0
+        self.expert = Expert.for_episode(episode, self.worlds)
+        self.shaper.start(episode.goal, world, episode.expert)
 
     def step(self, action: Any):
         """One action (a discrete index or an ALFRED dict); see the module docstring."""
-        if self.world is None or self.episode is None:
-            raise gymnasium.error.ResetNeeded("call reset() before step()")
+        world = self._world()
         self._steps += 1
         api, code, error = self._decode(action)
         stopped = api is not None and api["action"] in STOP_NAMES
         if api is not None and not stopped:
-            result = self.world.step(api)
+            result = world.step(api)
             self.history.append(Sent(action, api, result.success))
             code, error = result.code, result.error
         ok = code is None
         if not ok:
             self._failures += 1
-        before, self._scores = self._scores, self._goal_scores()
-        success = self._scores == self.episode.goal.weights()
-        reached = success and not self._reached
-        self._reached = self._reached or success
-        expert_length = len(self.episode.expert.actions) if self.episode.expert is not None else 0
-        reward = step_reward(self.rewards, before, self._scores, self.episode.goal.stages(), reached=reached,
-                             action_ok=ok, step=self._steps, expert_length=expert_length)
-        if self._goto is not None:
-            reward += self._goto.step(self.world.agent, api["action"] if api else None, ok)
-        terminated = success or stopped
+        reward = self.shaper.step(world, api["action"] if api else None, ok, self._steps)
+        terminated = self.shaper.success or stopped
         truncated = not terminated and (self._steps >= self.config.max_steps
                                         or self._failures >= self.config.max_failures)
         return self._observation(), reward, terminated, truncated, self._info(code, error)
@@ -210,28 +187,30 @@ class LuminousEnv(gymnasium.Env):
 
     def top_down(self) -> np.ndarray:
         """A labelled top-down map of the room as it is now, with the reachable grid (an RGB array)."""
-        if self.world is None:
-            raise gymnasium.error.ResetNeeded("call reset() before top_down()")
-        return np.asarray(self.world.view().top_down(grid=True).convert("RGB"))
+        return np.asarray(self._world("top_down()").view().top_down(grid=True).convert("RGB"))
 
     def close(self) -> None:
         self._close_world()
         self.worlds.clear()
         super().close()
 
-    # ------------------------------------------------------------------ the expert
+    # ------------------------------------------------------------------ the expert and the action form
 
     def expert_action(self) -> int | dict[str, Any]:
         """The expert's next action in this env's action form: a discrete index when one names what the
         expert means (for an interaction, a grid point on its target, or its slot), else the ALFRED dict
         with the object id (the target covers no grid point, or has no slot); Stop when the expert has
         nothing left to do."""
-        api = self._expert.next_api(self)
-        action = self._env_action(api)
-        self._expert.suggested(len(self.history), action)
+        if self.expert is None:
+            raise gymnasium.error.ResetNeeded("call reset() before expert_action()")
+        api = self.expert.next_api(self.history)
+        action = self.action_for(api)
+        self.expert.suggested(len(self.history), action)
         return action
 
-    def _env_action(self, api: dict[str, Any] | None) -> int | dict[str, Any]:
+    def action_for(self, api: dict[str, Any] | None) -> int | dict[str, Any]:
+        """An api action (object ids, as the oracle sends them) in this env's action form, for the current
+        observation: a discrete index when one names it, else the api dict itself; Stop for None."""
         if api is None:
             return self.actions.index("Stop")
         name = api["action"]
@@ -241,11 +220,23 @@ class LuminousEnv(gymnasium.Env):
         if self.actions.slots:
             slot = self._slots.index(target) if target in self._slots else None
             return self.actions.index(name, slot) if slot is not None else dict(api)
-        mask = self.world.instance_masks().get(target) if name in INTERACTIONS else None
+        mask = self._world().instance_masks().get(target) if name in INTERACTIONS and isinstance(target, str) \
+            else None
         cell = self.actions.cell_on(mask) if mask is not None else None
         return self.actions.index(name, cell) if cell is not None else dict(api)
 
+    @property
+    def slots(self) -> tuple[str, ...]:
+        """The object ids in the slots of the last observation (`objects` targets; empty otherwise)."""
+        return tuple(self._slots)
+
     # ------------------------------------------------------------------ insides
+
+    def _world(self, caller: str = "step()") -> World:
+        """The episode's world; ResetNeeded before the first reset."""
+        if self.world is None or self.episode is None:
+            raise gymnasium.error.ResetNeeded(f"call reset() before {caller}")
+        return self.world
 
     def _decode(self, action: Any) -> tuple[dict[str, Any] | None, FailureCode | None, str]:
         """The api action to send, or None with the code and message of an invalid one."""
@@ -267,16 +258,9 @@ class LuminousEnv(gymnasium.Env):
         return None, FailureCode.INVALID_ARGUMENT, (f"an action is an index in 0..{self.actions.n - 1} or a dict "
                                                     f"with an 'action' name, not {type(action).__name__}")
 
-    def _visible(self) -> set[str]:
-        return set(self.world.visible_objects())
-
-    def _goal_scores(self) -> dict[str, int]:
-        assert self.episode is not None
-        return self.episode.goal.scores(self.world.view(), self._visible())
-
     def _observation(self) -> dict[str, Any]:
-        assert self.episode is not None
-        frame = self.world.frame()
+        world = self._world()
+        frame = world.frame()
         c = self.config
         obs: dict[str, Any] = {"rgb": np.ascontiguousarray(frame.rgb[..., :3], dtype=np.uint8),
                                "instruction": self._instruction()}
@@ -284,24 +268,24 @@ class LuminousEnv(gymnasium.Env):
             depth = np.nan_to_num(frame.depth, nan=DEPTH_FAR, posinf=DEPTH_FAR, neginf=0.0)  # never NaN: in the space
             obs["depth"] = np.clip(depth, 0.0, DEPTH_FAR).astype(np.float32)[..., None]
         if c.segmentation:
-            obs["segmentation"] = self.world.instance_ids().astype(np.int32)
+            obs["segmentation"] = world.instance_ids().astype(np.int32)
         if c.pose:
-            p = self.world.agent
+            p = world.agent
             obs["pose"] = np.array([p.x, p.y, p.rotation % 360, p.horizon], np.float32)
-        state = self.world.view().state
+        state = world.view().state
         if c.inventory:
             obs["inventory"] = _type_index(state.objects[state.held].object_type if state.held else None)
         if self.actions.slots:
-            self._slots = self._visible_slots()
+            self._slots = self._visible_slots(world)
             kinds = [_type_index(state.objects[o].object_type) for o in self._slots]
             obs["objects"] = np.array(kinds + [0] * (self.actions.slots - len(kinds)), np.int64)
         return obs
 
-    def _visible_slots(self) -> list[str]:
+    def _visible_slots(self, world: World) -> list[str]:
         """Objects in view and within reach that an interaction applies to, the held one aside, most pixels
         first (ties by id), as many as there are slots."""
-        state = self.world.view().state
-        seen = [(-n, o) for o, n in self.world.visible_objects().items()
+        state = world.view().state
+        seen = [(-n, o) for o, n in world.visible_objects().items()
                 if o in state.objects and o != state.held and _interactable(state.objects[o].object_type)]
         return [o for _, o in sorted(seen)[: self.actions.slots]]
 
@@ -316,11 +300,11 @@ class LuminousEnv(gymnasium.Env):
     def _info(self, code: FailureCode | None, error: str) -> dict[str, Any]:
         assert self.episode is not None
         goal = self.episode.goal
-        weights = goal.weights()
+        scores = self.shaper.scores
         info: dict[str, Any] = {
-            "success": self._scores == weights,
-            "goal_conditions": (sum(self._scores.values()), sum(weights.values())),
-            "subgoal": goal.subgoal(self._scores),
+            "success": self.shaper.success,
+            "goal_conditions": (sum(scores.values()), sum(goal.weights().values())),
+            "subgoal": goal.subgoal(scores),
             "task_type": goal.task_type,
             "failures": self._failures,
             "failure_code": None if code is None else code.value,
@@ -336,44 +320,27 @@ class LuminousEnv(gymnasium.Env):
             self.worlds.put(self.world)
             self.world = None
 
-    # ------------------------------------------------------------------ pickling
+    # ------------------------------------------------------------------ pickling (by replay: `env.replay`)
 
     def __getstate__(self) -> dict[str, Any]:
         """The config, the random state and the episode so far; the world is rebuilt and replayed on load."""
-        ep = self.episode
         return {
             "render_mode": self.render_mode, "kwargs": self.config.to_kwargs(),
             "np_random": self._np_random,
-            "episode": None if ep is None else {
-                "scene": ep.scene.to_json(), "goal": ep.goal.to_dict(), "dirty": list(ep.dirty),
-                "expert": None if ep.expert is None else [list(ep.expert.actions), list(ep.expert.steps)],
-                "redraws": ep.redraws, "start": None if ep.start is None else list(astuple(ep.start))},
-            "history": [(s.given, s.api, s.ok) for s in self.history],
-            "counters": (self._steps, self._failures, self._reached),
+            "episode": None if self.episode is None else episode_data(self.episode),
+            "history": history_data(self.history),
+            "counters": (self._steps, self._failures, self.shaper.reached),
         }
 
     def __setstate__(self, state: dict[str, Any]) -> None:
-        from luminous_sim.env.goals import ExpertPlan
-        from luminous_sim.scene import Scene
-        from luminous_sim.world import AgentPose
-
         self.__init__(state["render_mode"], **state["kwargs"])  # type: ignore[misc]
         self._np_random = state["np_random"]
-        data = state["episode"]
-        if data is None:
+        if state["episode"] is None:
             return
-        plan = data["expert"]
-        expert = None if plan is None else ExpertPlan(tuple(plan[0]), steps=tuple(plan[1]))
-        start = None if data["start"] is None else AgentPose(*data["start"])
-        self.episode = Episode(Scene.from_json(data["scene"]), goal_from_dict(data["goal"]),
-                               tuple(data["dirty"]), expert, data["redraws"], start)
-        self.world = self.worlds.get(self.episode.scene, self.episode.dirty, start)
-        self._start()
-        for given, api, ok in state["history"]:
-            self.world.step(api)
-            self.history.append(Sent(given, api, ok))
-            if self._goto is not None:
-                self._goto.step(self.world.agent, api["action"], ok)
-        self._steps, self._failures, self._reached = state["counters"]
-        self._scores = self._goal_scores()
+        episode = self.episode = episode_from_data(state["episode"])
+        world = self.world = self.worlds.get(episode.scene, episode.dirty, episode.start)
+        self._start(episode, world)
+        self.history = replay(world, state["history"], self.shaper)
+        self._steps, self._failures, reached = state["counters"]
+        self.shaper.resume(world, reached)
         self._observation()  # the object slots the agent saw last

@@ -24,8 +24,8 @@ import numpy as np
 
 from luminous_sim.cdf import AgentPoseSpec, ChallengeDefinition
 from luminous_sim.env.config import EnvConfig
-from luminous_sim.env.episodes import Episode, _prove, dirty_for, draw_goal
-from luminous_sim.env.goals import TaskGoal
+from luminous_sim.env.episodes import Episode, _prove, draw_goal, set_up_world
+from luminous_sim.env.goals import Goal, TaskGoal
 from luminous_sim.env.worlds import WorldPool
 from luminous_sim.errors import CDFError, InfeasibleSceneError, LuminousError
 from luminous_sim.scene import Scene
@@ -132,7 +132,7 @@ def cdf_episode(config: EnvConfig, paths: Sequence[str], rng: np.random.Generato
                 raise LuminousError(f"{path}: task.agent.position: {outside}")
             names = names_from_scene(scene)
             try:
-                goal: Any = TaskGoal(task_from_cdf(doc, names, scene_seed=seed))
+                goal: Goal = TaskGoal(task_from_cdf(doc, names, scene_seed=seed))
             except TaskError as exc:
                 raise LuminousError(f"{path}: task.goal: {exc}") from None
             try:
@@ -154,11 +154,9 @@ def cdf_episode(config: EnvConfig, paths: Sequence[str], rng: np.random.Generato
                 worlds.put(world)
                 why.append(f"{path} seed {seed}: {exc}")
                 continue
-        dirty = dirty_for(world, goal.task_type)
-        if dirty:
-            world.set_up_dirty(dirty)
+        dirty = set_up_world(world, goal.task_type)
         if start is not None:
-            world.agent = start
+            world.set_start(start)
         episode = Episode(scene, goal, dirty, start=start, redraws=len(why))
         if config.verify_expert:
             plan = _prove(episode, worlds)

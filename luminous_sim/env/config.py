@@ -10,13 +10,10 @@ from dataclasses import asdict, dataclass, field, fields
 from pathlib import Path
 from typing import Any
 
+from luminous_sim.env.kinds import TASK_KINDS
 from luminous_sim.errors import LuminousError
-from luminous_sim.vocab import ALFRED_TASK_TYPES
+from luminous_sim.vocab import ALFRED_TASK_TYPES, ROOM_TYPES
 
-SMALL_TASK_TYPES: tuple[str, ...] = ("goto_object", "pickup_object")
-"""Tasks for RL from scratch: stand where a named object is in view and reach; hold an object of a type."""
-TASK_KINDS: tuple[str, ...] = ALFRED_TASK_TYPES + SMALL_TASK_TYPES
-ROOM_TYPES: tuple[str, ...] = ("Kitchen", "LivingRoom", "Bedroom", "Bathroom")
 REWARD_MODES: tuple[str, ...] = ("dense", "sparse")
 TARGET_KINDS: tuple[str, ...] = ("points", "objects")
 
@@ -27,7 +24,7 @@ class EnvConfig:
 
     Attributes:
         task_types: the task kinds an episode draws from (uniformly): ALFRED's types, `goto_object`,
-            `pickup_object`.
+            `pickup_object` (`luminous_sim.env.kinds.TASK_KINDS`).
         room_types: the room types scenes are generated in; empty means every room type the drawn task
             type allows (ALFRED's table).
         width: image width in pixels.

@@ -23,16 +23,15 @@ from typing import Any
 import numpy as np
 
 from luminous_sim.env.config import EnvConfig
-from luminous_sim.env.goals import ExpertPlan, Goal, GotoGoal, TaskGoal, pickup_task
+from luminous_sim.env.goals import ExpertPlan, Goal
+from luminous_sim.env.kinds import set_up, task_kind
 from luminous_sim.env.worlds import WorldPool
 from luminous_sim.errors import InfeasibleSceneError, LuminousError
 from luminous_sim.scene import Scene
 from luminous_sim.splits import SplitEntry, plus_split, split_entry
-from luminous_sim.tasks import TASK_TYPES, TaskSamplingError, task_info
-from luminous_sim.vocab import ROOM_TYPES, abilities
+from luminous_sim.tasks import TASK_TYPES, TaskSamplingError
 from luminous_sim.world import AgentPose, World
 
-CLEANING = "pick_clean_then_place_in_recep"
 UNAVAILABLE_CAUSES: tuple[str, ...] = ("layout", "no_task", "expert")
 """Why a split entry has no episode: CSSG found no valid layout in the structure; no task of the entry's
 type fits the layout; the expert solves none of the tasks drawn (`EnvConfig.scene_attempts` of them)."""
@@ -66,49 +65,29 @@ class Episode:
     """Where the agent starts (a CDF's `task.agent`); None for the world's default start."""
 
 
-def dirty_for(world: World, task_type: str) -> tuple[str, ...]:
-    """What ALFRED makes dirty before a cleaning task: every dirtyable object that can be picked up."""
-    if task_type != CLEANING:
-        return ()
-    return tuple(sorted(oid for oid, st in world.view().state.objects.items()
-                        if abilities(st.object_type).dirtyable and abilities(st.object_type).pickupable))
+def set_up_world(world: World, task_type: str) -> tuple[str, ...]:
+    """Set a world up for an episode of the kind (`TaskKind.set_up`: e.g. for cleaning, everything dirtyable
+    dirty); the objects it made dirty."""
+    dirty = set_up(world, task_type)
+    if dirty:
+        world.set_up_dirty(dirty)
+    return dirty
 
 
 def room_types(config: EnvConfig, task_type: str) -> list[str]:
-    """The room types an episode of the type may be generated in (ALFRED's table, the config's choice)."""
-    allowed = sorted(task_info(task_type).rooms) if task_type in TASK_TYPES else list(ROOM_TYPES)
+    """The room types an episode of the kind may be generated in (`TaskKind.rooms`, the config's choice)."""
+    allowed = list(task_kind(task_type).rooms())
     chosen = [r for r in allowed if not config.room_types or r in config.room_types]
     return chosen or allowed
 
 
 def draw_goal(world: World, scene: Scene, task_type: str, rng: np.random.Generator) -> Goal:
-    """A goal of the kind that fits this world.
+    """A goal of the kind that fits this world (`TaskKind.draw_goal`).
 
     Raises:
         TaskSamplingError: none fits.
     """
-    from luminous_sim.planning import draw_task, unseeable
-
-    view = world.view()
-    if task_type not in ("goto_object", "pickup_object"):
-        return TaskGoal(draw_task(scene, view, task_type, rng))
-    hidden = unseeable(view)
-    seen = {view.state.objects[o].object_type for o in view.visible_objects() if o in view.state.objects}
-    types = sorted({st.object_type for oid, st in view.state.objects.items() if oid not in hidden
-                    and st.object_type not in seen and _goal_worthy(st.object_type, task_type)})
-    if not types:
-        raise TaskSamplingError(f"no {task_type} target in {scene.room.name} (seed {scene.seed})")
-    object_type = types[int(rng.integers(len(types)))]
-    if task_type == "goto_object":
-        return GotoGoal(object_type)
-    return TaskGoal(pickup_task(object_type, scene.seed))
-
-
-def _goal_worthy(object_type: str, task_type: str) -> bool:
-    ab = abilities(object_type)
-    if task_type == "pickup_object":
-        return ab.pickupable
-    return ab.pickupable or ab.receptacle or ab.openable or ab.toggleable
+    return task_kind(task_type).draw_goal(world, scene, rng)
 
 
 def _prove(episode: Episode, worlds: WorldPool) -> ExpertPlan | None:
@@ -161,9 +140,7 @@ def draw_episode(config: EnvConfig, rng: np.random.Generator, worlds: WorldPool,
         else:
             candidate = scene
         world = worlds.get(candidate)
-        dirty = dirty_for(world, task_type)
-        if dirty:
-            world.set_up_dirty(dirty)
+        dirty = set_up_world(world, task_type)
         try:
             goal = draw_goal(world, candidate, task_type, rng)
         except TaskSamplingError as exc:
@@ -245,9 +222,7 @@ def split_episode(config: EnvConfig, entry: SplitEntry, worlds: WorldPool) -> tu
     unsolved: list[str] = []
     for _ in range(config.scene_attempts):
         world = worlds.get(scene)
-        dirty = dirty_for(world, entry.task_type)
-        if dirty:
-            world.set_up_dirty(dirty)
+        dirty = set_up_world(world, entry.task_type)
         try:
             goal = draw_goal(world, scene, entry.task_type, rng)
         except TaskSamplingError as exc:

@@ -1,10 +1,9 @@
-"""What an episode asks for, behind one small interface: its named conditions and what meets each, the
-current subgoal, the instruction, and the expert's plan from a world's current state.
+"""What an episode asks for, behind one small interface (`Goal`): its named conditions and what meets each,
+the current subgoal, the instruction, and the expert's plan from a world's current state.
 
-`TaskGoal` wraps a `TaskInstance` (ALFRED's seven types, and `pickup_object`, a one-condition custom goal);
-its conditions are the task's `GoalConditions`, so success, ALFRED's counts, the dense reward and the subgoal
-come from one source. `GotoGoal` (`goto_object`) is met when an object of a type is visible within reach;
-no goal predicate says that, so it judges the view itself, and its expert walks ALFRED's GotoLocation.
+`TaskGoal` wraps a `TaskInstance` (ALFRED's seven types, a CDF's task, and `pickup_object`, a one-condition
+custom goal); its conditions are the task's `GoalConditions`, so success, ALFRED's counts, the dense reward and
+the subgoal come from one source. A task kind may bring a goal of its own (`kinds.goto_object.GotoGoal`).
 """
 
 from __future__ import annotations
@@ -14,16 +13,9 @@ from typing import Any, Protocol
 
 import numpy as np
 
-from luminous_sim.cdf.predicates import Atom, Exists, Param
-from luminous_sim.errors import PlanningError
 from luminous_sim.language import Describer
-from luminous_sim.tasks import PLAN_ORDER, PddlParams, TaskInstance
+from luminous_sim.tasks import PLAN_ORDER, TaskInstance
 from luminous_sim.world import World, WorldView
-
-GOTO_TEMPLATE = "go to the {obj}"
-PICKUP_TEMPLATE = "pick up the {obj}"
-ENV_TEMPLATES: tuple[str, ...] = (GOTO_TEMPLATE, PICKUP_TEMPLATE)
-"""The instructions of the env's own task kinds (their words are part of the token vocabulary)."""
 
 
 @dataclass(frozen=True)
@@ -64,7 +56,7 @@ class Goal(Protocol):
         ...
 
     def to_dict(self) -> dict[str, Any]:
-        """Plain data that `goal_from_dict` reads back."""
+        """Plain data that `kinds.goal_from_dict` reads back (`kind`: "task", or the task kind's name)."""
         ...
 
 
@@ -103,71 +95,3 @@ class TaskGoal:
 
     def to_dict(self) -> dict[str, Any]:
         return {"kind": "task", "task": self.task.to_dict()}
-
-
-def pickup_task(object_type: str, scene_seed: int) -> TaskInstance:
-    """`pickup_object`: hold any object of a type."""
-    goal = Exists((Param("?o", object_type),), Atom("holds", ("?o",)))
-    return TaskInstance("pickup_object", PddlParams(object_type), goal, scene_seed,
-                        PICKUP_TEMPLATE.format(obj=object_type.lower()), custom=True)
-
-
-class GotoGoal:
-    """`goto_object`: stand where an object of a type is visible and within reach (ALFRED's visibility)."""
-
-    task_type = "goto_object"
-
-    def __init__(self, object_type: str):
-        self.object_type = object_type
-        self.instruction = GOTO_TEMPLATE.format(obj=object_type.lower())
-        self.name = f"sees({object_type})"
-
-    def weights(self) -> dict[str, int]:
-        return {self.name: 1}
-
-    def stages(self) -> dict[str, str]:
-        return {self.name: "GotoLocation"}
-
-    def scores(self, view: WorldView, visible: set[str]) -> dict[str, int]:
-        state = view.state
-        return {self.name: int(any(state.objects[o].object_type == self.object_type for o in visible
-                                   if o in state.objects))}
-
-    def subgoal(self, scores: dict[str, int]) -> str:
-        return "" if scores[self.name] else self.name
-
-    def expert_plan(self, world: World) -> ExpertPlan | None:
-        from luminous_sim.env.actions import nav_api
-        from luminous_sim.planning import NavGraph, goto_actions
-
-        view = world.view()
-        graph = NavGraph(view.nav)
-        best: list[str] | None = None
-        for oid in view.state.of_type(self.object_type):
-            pose = view.interaction_pose(oid)
-            if pose is None:
-                continue
-            try:
-                steps = goto_actions(graph, view.agent, pose)
-            except PlanningError:  # that one is walled off
-                continue
-            if best is None or len(steps) < len(best):
-                best = steps
-        if best is None:
-            return None
-        actions = tuple(nav_api(a) for a in best)
-        for api in actions:
-            if not world.step(api).success:
-                return None
-        met = self.scores(view, set(view.visible_objects()))[self.name]
-        return ExpertPlan(actions) if met else None
-
-    def to_dict(self) -> dict[str, Any]:
-        return {"kind": "goto", "object_type": self.object_type}
-
-
-def goal_from_dict(data: dict[str, Any]) -> Goal:
-    """A goal from `to_dict` data."""
-    if data["kind"] == "goto":
-        return GotoGoal(data["object_type"])
-    return TaskGoal(TaskInstance.from_dict(data["task"]))

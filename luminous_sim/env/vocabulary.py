@@ -1,5 +1,5 @@
 """A fixed word vocabulary for instructions, built from the project's template language: ALFRED's goal
-templates (`tasks.templates`), the env's own (`env.goals`), the verb table and colour words
+templates (`tasks.templates`), the env's task kinds' own (`env.kinds`), the verb table and colour words
 (`language.verbs`), and every object type both as ALFRED's templates write it ("spraybottle") and as
 the language layer speaks it ("spray bottle"). It depends on code only, so it is the same for everyone.
 """
@@ -10,7 +10,7 @@ import re
 from collections.abc import Iterable
 from functools import cache
 
-from luminous_sim.env.goals import ENV_TEMPLATES
+from luminous_sim.env.kinds import kind_templates
 from luminous_sim.language.names import spoken
 from luminous_sim.language.verbs import COLOUR_NAMES, PREPOSITION, VERBS
 from luminous_sim.tasks import TEMPLATES
@@ -33,7 +33,7 @@ def _template_words(templates: Iterable[str]) -> set[str]:
 def vocabulary() -> tuple[str, ...]:
     """`<pad>` (id 0), `<unk>` (id 1), then the words, sorted."""
     found = _template_words(t for options in TEMPLATES.values() for t in options)
-    found |= _template_words(ENV_TEMPLATES)
+    found |= _template_words(kind_templates())
     found |= {w for verbs in VERBS.values() for v in verbs for w in words(v)}
     found |= set(COLOUR_NAMES) | set(PREPOSITION) | {"on", "a", "the", "then", "and"}
     for t in ALL_TYPES:

@@ -8,12 +8,26 @@ plays exactly as in a new world. Any other world is closed, and the next one is 
 
 from __future__ import annotations
 
+from typing import Protocol
+
 from luminous_sim.env.config import EnvConfig
 from luminous_sim.scene import Scene
 from luminous_sim.world import AgentPose, World, WorldConfig
 
 MAX_IDLE = 2
 """Restored worlds kept for the current scene (the agent's and the expert's; each is a PyBullet client)."""
+
+
+class WorldSource(Protocol):
+    """Where worlds come from, set up for an episode, and go back to when done (`WorldPool` is one)."""
+
+    def get(self, scene: Scene, dirty: tuple[str, ...] = (), start: AgentPose | None = None) -> World:
+        """A world of the scene at its start, with `dirty` made dirty and the agent at `start` (if given)."""
+        ...
+
+    def put(self, world: World) -> None:
+        """Give a world back (the source keeps or closes it)."""
+        ...
 
 
 def world_config(config: EnvConfig) -> WorldConfig:
@@ -46,7 +60,7 @@ class WorldPool:
         if dirty:
             world.set_up_dirty(dirty)
         if start is not None:
-            world.agent = start
+            world.set_start(start)
         return world
 
     @property

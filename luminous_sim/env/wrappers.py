@@ -205,20 +205,23 @@ class NewPlaceBonus(gymnasium.Wrapper, gymnasium.utils.RecordConstructorArgs):
         gymnasium.utils.RecordConstructorArgs.__init__(self, bonus=bonus)
         gymnasium.Wrapper.__init__(self, env)
         self.bonus = float(bonus)
-        self._seen: set[tuple[int, int]] = set()
+        self.seen: set[tuple[int, int]] = set()
+        """The grid positions the agent has stood on in this episode."""
 
-    def _cell(self) -> tuple[int, int]:
+    def place(self) -> tuple[int, int]:
+        """The agent's grid position now (x and y in `STEP` cells)."""
         agent = self.env.unwrapped.world.agent  # type: ignore[attr-defined]
         return round(agent.x / STEP), round(agent.y / STEP)
 
     def reset(self, **kwargs: Any) -> tuple[Any, dict[str, Any]]:
         observation, info = self.env.reset(**kwargs)
-        self._seen = {self._cell()}
+        self.seen = {self.place()}
         return observation, info
 
     def step(self, action: Any) -> tuple[Any, Any, bool, bool, dict[str, Any]]:
         observation, reward, terminated, truncated, info = self.env.step(action)
-        cell = self._cell()
-        new = cell not in self._seen
-        self._seen.add(cell)
-        return observation, reward + (self.bonus if new else 0.0), terminated, truncated, {**info, "new_place": new}
+        cell = self.place()
+        new = cell not in self.seen
+        self.seen.add(cell)
+        return observation, float(reward) + (self.bonus if new else 0.0), terminated, truncated, \
+            {**info, "new_place": new}

@@ -134,6 +134,18 @@ class World:
             self.interactions.set_dirty(oid, True)
         self.invalidate_frame()
 
+    def set_start(self, pose: AgentPose) -> None:
+        """Scene set-up before the first action: the agent starts at `pose` (e.g. a CDF's `task.agent`). Not
+        an action: it raises once the episode has started (`reset_to_start` puts the world back first)."""
+        if self._started:
+            from luminous_sim.errors import LuminousError
+
+            raise LuminousError("set_start is scene set-up: call it before the first World.step (or after "
+                                "World.reset_to_start); to move the agent during an episode, step it (e.g. "
+                                "TeleportFull)")
+        self.agent = pose
+        self.invalidate_frame()
+
     def default_start(self) -> AgentPose:
         """The reachable point nearest the room's centre, facing north, looking 30 degrees down."""
         pts = self.nav.points()

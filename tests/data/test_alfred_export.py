@@ -20,7 +20,7 @@ TASK = "pick_and_place_simple"
 @pytest.fixture(scope="module")
 def exported(tmp_path_factory):
     scene = scene_for_task(TASK, "Bathroom", seed=0)
-    result, record = run_episode(scene, TASK, seed=0, return_record=True)
+    result, record = run_episode(scene, TASK, seed=0)
     assert result.success
     trial = export_alfred(tmp_path_factory.mktemp("alfred"), scene, record, seed=0, video=True)
     return scene, record, trial, json.loads((trial / "traj_data.json").read_text())
@@ -100,7 +100,7 @@ def test_other_task_types_match_every_real_file(task_type, room, tmp_path, real_
     """Heat, cool, clean and look-at bring CleanObject/HeatObject keys, the toggles that carry them,
     object_toggles and dirty_and_empty (about 3-8 s each)."""
     scene = scene_for_task(task_type, room, seed=0)
-    result, record = run_episode(scene, task_type, seed=0, return_record=True)
+    result, record = run_episode(scene, task_type, seed=0)
     assert result.success
     data = json.loads((export_alfred(tmp_path, scene, record, seed=0) / "traj_data.json").read_text())
     problems = structure_differences(structure(data), real_structures)
@@ -115,11 +115,11 @@ def test_open_and_close_subgoals_fold_into_their_interactions():
     assert fold_subgoals(acts) == [0, 1, 1, 1, 2, 2, 3, 4]
 
 
-def test_returning_a_record_changes_nothing_that_is_written(tmp_path: Path, exported):
+def test_extra_annotations_change_nothing_that_is_written(tmp_path: Path, exported):
     scene, record, *_ = exported
-    plain = run_episode(scene, TASK, seed=0, out_dir=tmp_path / "plain", record_frames=False)
-    again, rec = run_episode(scene, TASK, seed=0, out_dir=tmp_path / "rec", record_frames=False,
-                             return_record=True)
+    plain, _ = run_episode(scene, TASK, seed=0, out_dir=tmp_path / "plain", record_frames=False, extra_annotations=0)
+    again, rec = run_episode(scene, TASK, seed=0, out_dir=tmp_path / "rec", record_frames=False)
+    assert len(rec.instructions) == 3
     assert plain.low_actions == again.low_actions == len(record.trajectory.low_actions)
     assert (tmp_path / "rec" / "instructions.txt").read_text().startswith(rec.instructions[0].task_desc + "\n")
     for name in ("trajectory.json", "instructions.txt"):
@@ -130,7 +130,7 @@ def test_sidecar_alone_regenerates_the_same_files(tmp_path: Path, exported):
     *_, trial, _ = exported
     side = json.loads((trial / "luminous.json").read_text())
     scene = Scene.from_json(json.dumps(side["scene"]))
-    _, record = run_episode(scene, side["task"]["task_type"], side["seed"], return_record=True)
+    _, record = run_episode(scene, side["task"]["task_type"], side["seed"])
     again = export_alfred(tmp_path, scene, record, seed=side["seed"])
     for rel in ("traj_data.json", "luminous.json", "pddl_states/problem_0.pddl", "raw_images/000000005.jpg"):
         assert (again / rel).read_bytes() == (trial / rel).read_bytes(), rel

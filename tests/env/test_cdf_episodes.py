@@ -42,7 +42,7 @@ def test_a_cdf_task_is_the_goal_with_its_initial_state_and_agent_start():
     assert not env.world.view().state.objects[fridge].isOpen  # task.initial
     assert info["redraws"] >= 0 and env.episode.expert is not None
     for action in env.episode.expert.actions:  # the proved plan reaches the CDF's goal
-        _, _, terminated, _, info = env.step(env._env_action(action))
+        _, _, terminated, _, info = env.step(env.action_for(action))
     assert terminated and info["success"]
     env.close()
 

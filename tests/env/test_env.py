@@ -64,7 +64,7 @@ def test_observations_lie_in_the_space_and_match_the_world():
     p = env.world.agent
     assert obs["pose"].tolist() == pytest.approx([p.x, p.y, p.rotation, p.horizon])
     assert obs["inventory"] == 0
-    assert np.array_equal(env.render(), obs["rgb"]) if env.render_mode else env.render() is None
+    assert env.render_mode is None and env.render() is None
     env.close()
 
 
@@ -107,7 +107,7 @@ def test_the_alfred_dict_form_with_a_mask_reaches_the_goal_as_the_expert_does():
     env = small()
     env.reset(seed=0)
     while True:
-        api = env._expert.next_api(env)
+        api = env.expert.next_api(env.history)
         if api is None:
             break
         name = api["action"]
@@ -116,7 +116,7 @@ def test_the_alfred_dict_form_with_a_mask_reaches_the_goal_as_the_expert_does():
             action = {"action": name, "mask": interaction_args(mask)["mask"]}
         else:
             action = {"action": name}
-        env._expert.suggested(len(env.history), action)
+        env.expert.suggested(len(env.history), action)
         _, _, terminated, truncated, info = env.step(action)
         assert info["failure_code"] is None, info
         if terminated or truncated:
@@ -145,8 +145,19 @@ def test_a_given_scene_is_played_and_top_down_renders():
 
 def test_render_mode_rgb_array_returns_the_agents_view():
     env = gymnasium.make(SMALL, render_mode="rgb_array")
+    assert env.unwrapped.render() is None  # no world before the first reset
     obs, _ = env.reset(seed=1)
+    frame = env.render()
+    assert frame.dtype == np.uint8 and frame.shape == (64, 64, 3) and np.array_equal(frame, obs["rgb"])
+    obs, *_ = env.step(env.unwrapped.actions.index("RotateLeft"))
     assert np.array_equal(env.render(), obs["rgb"])
+    env.close()
+
+
+def test_without_a_render_mode_render_returns_none():
+    env = small()
+    env.reset(seed=1)
+    assert env.render_mode is None and env.render() is None
     env.close()
 
 
@@ -220,7 +231,7 @@ def test_object_slot_targets_pass_check_env_and_name_visible_objects():
         check_env(env, skip_render_check=True)
     obs, _ = env.reset(seed=0)
     assert env.action_space.n == 6 + 7 * 8 and env.observation_space.contains(obs)
-    slots = env._slots
+    slots = env.slots
     visible = env.world.visible_objects()
     assert all(o in visible for o in slots) and [visible[o] for o in slots] == sorted(visible[o] for o in slots)[::-1]
     assert [ALL_TYPES[k - 1] for k in obs["objects"][: len(slots)]] == [env.world.view().state[o].object_type

@@ -54,7 +54,7 @@ def test_hand_made_moves_earn_the_formula_exactly(seed):
     env = gymnasium.make("Luminous-PickUp-64-v1", reward=ONLY_NAVIGATION).unwrapped
     env.reset(seed=seed)
     graph = NavGraph(env.world.nav)
-    (target,) = env._goto.targets
+    (target,) = env.shaper.goto.targets
     assert target.interactions == ("PickupObject",) and target.walked
     written = Written(graph, target.pose)
     for name in MOVES:  # wander: gains and losses
@@ -64,7 +64,7 @@ def test_hand_made_moves_earn_the_formula_exactly(seed):
     written, rewards = Written(graph, target.pose), []
     for action in env.episode.expert.actions:
         before = env.world.agent
-        _, reward, terminated, _, _ = env.step(env._env_action(action))
+        _, reward, terminated, _, _ = env.step(env.action_for(action))
         rewards.append(reward)
         if action["action"] == "PickupObject":  # the go-to's interaction: no navigation term
             assert reward == 0.0 and terminated
@@ -78,15 +78,15 @@ def test_the_v0_ids_keep_their_reward_and_a_pickled_env_keeps_the_subgoal_state(
     old = gymnasium.make("Luminous-PickUp-64-v0").unwrapped
     env = gymnasium.make("Luminous-PickUp-64-v1").unwrapped
     old.reset(seed=2), env.reset(seed=2)
-    assert old._goto is None and not old.config.navigation_reward
-    written = Written(NavGraph(env.world.nav), env._goto.targets[0].pose)
+    assert old.shaper.goto is None and not old.config.navigation_reward
+    written = Written(NavGraph(env.world.nav), env.shaper.goto.targets[0].pose)
     for name in MOVES:  # the same steps: v1 earns v0's reward plus the navigation term
         before = env.world.agent
         r_old, r_new = old.step(old.actions.index(name))[1], env.step(env.actions.index(name))[1]
         assert r_new == pytest.approx(r_old + written(before, env.world.agent), abs=1e-12)
     copy = pickle.loads(pickle.dumps(env))
-    assert (copy._goto.index, copy._goto.reached, copy._goto.distance) == \
-        (env._goto.index, env._goto.reached, env._goto.distance)
+    assert (copy.shaper.goto.index, copy.shaper.goto.reached, copy.shaper.goto.distance) == \
+        (env.shaper.goto.index, env.shaper.goto.reached, env.shaper.goto.distance)
     for action in env.episode.expert.actions[:6]:
-        assert copy.step(copy._env_action(action))[1:] == env.step(env._env_action(action))[1:]
+        assert copy.step(copy.action_for(action))[1:] == env.step(env.action_for(action))[1:]
     old.close(), env.close(), copy.close()

@@ -51,7 +51,7 @@ def test_the_oracle_replans_after_the_agent_deviates():
     terminated = truncated = False
     while not (terminated or truncated):
         _, _, terminated, truncated, info = env.step(policy())
-    assert info["success"] and env.unwrapped._expert.replans == 1
+    assert info["success"] and env.unwrapped.expert.replans == 1
     env.close()
 
 

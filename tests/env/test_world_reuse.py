@@ -38,7 +38,7 @@ def episode_actions(env: LuminousEnv, seed: int) -> list:
     detours = [("RotateLeft", "RotateRight"), ("LookUp", "LookDown"), ("RotateRight", "RotateLeft")]
     acts: list = []
     for api in env.episode.expert.actions:
-        acts.append(env._env_action(api))
+        acts.append(env.action_for(api))
         if rng.random() < 0.3:
             acts += [env.actions.index(name) for name in detours[int(rng.integers(len(detours)))]]
     return acts
@@ -89,5 +89,5 @@ def test_the_expert_replans_in_kept_worlds_with_the_same_advice():
     assert first == b.reset(seed=6, options={"scene": scene})[1]
     for action in (1, 1, 0, 3, 2):  # off the expert's path: it replans in a shadow world
         assert a.step(action)[1:] == b.step(action)[1:]
-    assert a._expert.replans == b._expert.replans >= 1
+    assert a.expert.replans == b.expert.replans >= 1
     a.close(), b.close()

@@ -197,12 +197,12 @@ def test_new_place_bonus_rewards_each_grid_position_once_per_episode():
     for seed in range(5):
         for e in (plain, env):
             e.reset(seed=seed)
-        seen = {env._cell()}
+        seen = {env.place()}
         action, back = 0, []
         for _ in range(16):  # walk ahead (turning when blocked), then turn round and walk back over the same places
             r0 = plain.step(action)[1]
             _, r1, terminated, _, info = env.step(action)
-            cell = env._cell()
+            cell = env.place()
             assert info["new_place"] == (cell not in seen) and r1 == pytest.approx(r0 + 0.5 * info["new_place"])
             earned += info["new_place"]
             revisits += action == 0 and info["failure_code"] is None and not info["new_place"]
@@ -215,6 +215,6 @@ def test_new_place_bonus_rewards_each_grid_position_once_per_episode():
             break
     assert earned >= 1 and revisits >= 1
     env.reset(seed=3)  # a new episode: nothing carried over
-    assert env._seen == {env._cell()}
+    assert env.seen == {env.place()}
     for e in (plain, env):
         e.close()

@@ -92,8 +92,7 @@ def test_the_oracle_solves_a_task_across_rooms(house: HouseGenerated) -> None:
     from luminous_sim.episode import run_episode
     from luminous_sim.tasks import object_rooms
 
-    result, record = run_episode(house.scene, "pick_and_place_simple", 0, record_frames=False,
-                                 return_record=True, cross_room=True)
+    result, record = run_episode(house.scene, "pick_and_place_simple", 0, record_frames=False, cross_room=True)
     assert result.success, result.failure
     rooms = object_rooms(house.scene)
     p = record.task.params

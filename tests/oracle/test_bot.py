@@ -26,7 +26,8 @@ def _room(task_type: str) -> str:
 
 def _episode(task_type: str) -> tuple[EpisodeResult, Trajectory]:
     scene = scene_for_task(task_type, _room(task_type), SEED)
-    return run_episode(scene, task_type, seed=SEED, record_frames=False, return_trajectory=True)
+    result, record = run_episode(scene, task_type, seed=SEED, record_frames=False, extra_annotations=0)
+    return result, record.trajectory
 
 
 def _low_actions(traj: Trajectory) -> list[dict[str, Any]]:

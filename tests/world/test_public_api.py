@@ -7,6 +7,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 import luminous_sim.language
@@ -50,3 +51,22 @@ def test_set_up_dirty_is_scene_set_up_before_the_first_step(world, kitchen_scene
     with pytest.raises(LuminousError, match="before the first"):
         world.set_up_dirty([apple])
     assert not world.view().state.objects[apple].isDirty
+
+
+def test_set_start_is_scene_set_up_before_the_first_step(world):
+    from luminous_sim.world import AgentPose
+
+    default = world.agent
+    x, y = (float(v) for v in world.nav.points()[0])
+    start = AgentPose(x, y, 90, 0)
+    before = world.frame().rgb.copy()
+    world.set_start(start)
+    assert world.agent == world.view().agent == start
+    assert not np.array_equal(world.frame().rgb, before)  # rendered anew from the start, not the old frame
+    world.step("RotateLeft")
+    with pytest.raises(LuminousError, match="before the first World.step"):
+        world.set_start(start)
+    assert world.agent == start.rotated(-1)
+    assert world.reset_to_start() and world.agent == default  # the start as built; set-up allowed again
+    world.set_start(start)
+    assert world.agent == start

@@ -1,0 +1,78 @@
+"""`TaskKind`: one kind of env task (an ALFRED type, `goto_object`, `pickup_object`) behind fixed hooks, as a
+ManiSkill task overrides a few: the room types it is played in, its set-up before the episode (what to make
+dirty), drawing its goal in a world, and reading that goal back from plain data.
+
+A new kind is one module in this package with a `TaskKind` subclass, and one line in the registry
+(`luminous_sim.env.kinds`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import TYPE_CHECKING, Any
+
+from luminous_sim.errors import LuminousError
+from luminous_sim.vocab import ROOM_TYPES
+
+if TYPE_CHECKING:
+    import numpy as np
+
+    from luminous_sim.env.goals import Goal
+    from luminous_sim.scene import Scene
+    from luminous_sim.world import World
+
+
+class TaskKind:
+    """A kind of task, with default hooks (every room type, no set-up); subclasses override what differs.
+
+    Attributes:
+        name: the kind's name, as `EnvConfig.task_types` and `info["task_type"]` give it.
+        templates: instruction templates of the kind's own goals (their words join the token vocabulary).
+    """
+
+    templates: tuple[str, ...] = ()
+
+    def __init__(self, name: str):
+        self.name = name
+
+    def rooms(self) -> tuple[str, ...]:
+        """The room types an episode of this kind may be generated in."""
+        return ROOM_TYPES
+
+    def set_up(self, world: World) -> tuple[str, ...]:
+        """The objects to make dirty before the episode (in `world`, as built); none by default."""
+        return ()
+
+    def draw_goal(self, world: World, scene: Scene, rng: np.random.Generator) -> Goal:
+        """A goal of this kind that fits `world` (set up), every draw from `rng`.
+
+        Raises:
+            TaskSamplingError: none fits.
+        """
+        raise NotImplementedError(f"task kind {self.name}: draw_goal")
+
+    def goal_from_dict(self, data: dict[str, Any]) -> Goal:
+        """The goal of `Goal.to_dict` data whose `kind` is this kind's name (a `TaskGoal` reads back as a task
+        and never comes here)."""
+        raise LuminousError(f"task kind {self.name}: its goals are tasks (kind 'task'), got {data.get('kind')!r}")
+
+
+def unseen_type(world: World, scene: Scene, kind: str, worthy: Callable[[str], bool],
+                rng: np.random.Generator) -> str:
+    """An object type to find: one of the `worthy` types of the objects that can be seen from somewhere but
+    that no object in view at the start has (drawn uniformly from their sorted list).
+
+    Raises:
+        TaskSamplingError: no type qualifies.
+    """
+    from luminous_sim.planning import unseeable
+    from luminous_sim.tasks import TaskSamplingError
+
+    view = world.view()
+    hidden = unseeable(view)
+    seen = {view.state.objects[o].object_type for o in view.visible_objects() if o in view.state.objects}
+    types = sorted({st.object_type for oid, st in view.state.objects.items() if oid not in hidden
+                    and st.object_type not in seen and worthy(st.object_type)})
+    if not types:
+        raise TaskSamplingError(f"no {kind} target in {scene.room.name} (seed {scene.seed})")
+    return types[int(rng.integers(len(types)))]
