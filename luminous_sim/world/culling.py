@@ -8,6 +8,13 @@ set to alpha 0, and they get their colour back right after. A culled link has no
 the frame is the same, pixel for pixel (tests/world/test_culling.py checks RGB, depth and segmentation).
 The floor, walls and ceiling are never culled; the outdoors is, when no doorway or window can show it
 (`world.portals`). Only TinyRenderer is culled: the EGL path draws on the GPU.
+
+The test is vectorised: a table of every object link's box (`_Boxes`, made again when an object is added,
+removed or replaced), every pose asked of PyBullet into one array, the corners transformed again only for
+the boxes whose pose changed, and one product against the frustum's planes for all of them. What a culled
+64x64 frame still pays for culling (measured on the bench_world kitchen, 59 boxes, about 49 culled a frame:
+about 0.6 ms of a 2.8 ms frame, against 0.8 ms before) is mostly PyBullet calls that cannot be batched:
+about 180 `changeVisualShape` calls to hide and put back (0.25 ms) and 58 pose queries (0.1 ms).
 """
 
 from __future__ import annotations
@@ -194,26 +201,27 @@ class FrustumCuller:
             table = self._table = _Boxes(self._client, list(objects))
         return table
 
-    def _outside(self, view: list[float], proj: list[float], width: int, height: int) -> tuple[_Boxes, np.ndarray]:
+    def _outside(self, view_proj: np.ndarray, margin: tuple[float, float]) -> tuple[_Boxes, np.ndarray]:
         table = self._boxes()
         if not table.keys:
             return table, np.zeros(0, dtype=bool)
-        corners = table.update(self._client)
-        return table, outside_view(corners, _view_proj(view, proj), _margin(width, height))
+        return table, outside_view(table.update(self._client), view_proj, margin)
+
+    def _away(self, view: list[float], view_proj: np.ndarray, margin: tuple[float, float]) -> list[int]:
+        if self._outdoors is None:
+            return []
+        v = np.asarray(view, dtype=float).reshape(4, 4).T
+        hidden = self._outdoors.hidden(-v[:3, :3].T @ v[:3, 3], view_proj, margin)
+        return [body for (body, _), h in zip(self._outdoor_bodies, hidden.tolist(), strict=True) if h]
 
     def outside(self, view: list[float], proj: list[float], width: int, height: int) -> list[tuple[LoadedAsset, str]]:
         """The object links whose visual box lies wholly beyond one plane of this camera's frustum."""
-        table, out = self._outside(view, proj, width, height)
+        table, out = self._outside(_view_proj(view, proj), _margin(width, height))
         return [table.keys[k] for k in np.flatnonzero(out)]
 
     def outdoors_hidden(self, view: list[float], proj: list[float], width: int, height: int) -> list[int]:
         """The outdoor bodies that no doorway or window shows to this camera."""
-        if self._outdoors is None:
-            return []
-        v = np.asarray(view, dtype=float).reshape(4, 4).T
-        eye = -v[:3, :3].T @ v[:3, 3]
-        hidden = self._outdoors.hidden(eye, _view_proj(view, proj), _margin(width, height))
-        return [body for (body, _), h in zip(self._outdoor_bodies, hidden, strict=True) if h]
+        return self._away(view, _view_proj(view, proj), _margin(width, height))
 
     @contextmanager
     def culled(self, view: list[float], proj: list[float], width: int, height: int) -> Iterator[int]:
@@ -223,15 +231,17 @@ class FrustumCuller:
         gets its own colour and alpha back afterwards (those already at alpha 0 stay so), the link's
         last-set visual last, as `getVisualShapeData` reports the last colour set on a link."""
         change = self._client.changeVisualShape
-        away = self.outdoors_hidden(view, proj, width, height)
-        table, out = self._outside(view, proj, width, height)
+        view_proj, margin = _view_proj(view, proj), _margin(width, height)
+        away = self._away(view, view_proj, margin)
+        table, out = self._outside(view_proj, margin)
         hidden = []
+        keys, links, visuals = table.keys, table.links, table.visuals
         for k in np.flatnonzero(out).tolist():
-            loaded, name = table.keys[k]
+            loaded, name = keys[k]
             alphas = loaded.alphas
-            showing = [i for i in table.visuals[k] if alphas[(name, i)] > 0]
+            showing = [i for i in visuals[k] if alphas[name, i] > 0]
             if showing:
-                hidden.append((loaded, name, table.links[k], showing))
+                hidden.append((loaded, name, links[k], showing))
         try:
             for body in away:
                 change(body, -1, rgbaColor=[0.0, 0.0, 0.0, 0.0])

@@ -49,8 +49,10 @@ def outside_view(corners: np.ndarray, view_proj: np.ndarray, margin: tuple[float
     mx, my = margin
     planes = np.array([[1.0, 0.0, 0.0, mx], [-1.0, 0.0, 0.0, mx], [0.0, 1.0, 0.0, my], [0.0, -1.0, 0.0, my],
                        [0.0, 0.0, 1.0, 1.0], [0.0, 0.0, -1.0, 1.0], [0.0, 0.0, 0.0, 1.0]]) @ view_proj
-    d = corners @ planes[:, :3].T + planes[:, 3]  # (n, 8, 7)
-    return (d[..., :6] < 0).all(axis=-2).any(axis=-1) | (d[..., 6] <= 0).all(axis=-1)
+    d = corners.reshape(-1, 3) @ planes[:, :3].T + planes[:, 3]  # one 2-D product: a stack of small ones is slower
+    beyond = d < 0
+    beyond[:, 6] = d[:, 6] <= 0
+    return beyond.reshape(corners.shape[:-2] + (8, 7)).all(axis=-2).any(axis=-1)
 
 
 class Opening:
@@ -109,6 +111,8 @@ class OutdoorCuller:
         self._normals = np.stack([op.normal for op in ops]) if ops else np.zeros((0, 3))
         self._room = room.polygon()
         self._corners = np.stack([box_corners(lo, hi) for lo, hi in boxes]) if boxes else np.zeros((0, 8, 3))
+        self._all_corners = np.concatenate([self._corners, self._opening_corners])
+        """The boxes' corners, then the openings': both tested against the view in one call."""
 
     def hidden(self, eye: np.ndarray, view_proj: np.ndarray, margin: tuple[float, float]) -> np.ndarray:
         """Whether each outdoor box is out of sight from `eye` for this camera (a bool per box): out of the
@@ -117,8 +121,8 @@ class OutdoorCuller:
         n = len(self._corners)
         if n == 0 or not contains_xy(self._room, float(eye[0]), float(eye[1])):
             return np.zeros(n, dtype=bool)
-        seen = outside_view(self._corners, view_proj, margin)  # start: only boxes out of the view are hidden
-        shown = ~outside_view(self._opening_corners, view_proj, margin)
+        out = outside_view(self._all_corners, view_proj, margin)
+        seen, shown = out[:n], ~out[n:]  # start: only boxes out of the view are hidden
         if not shown.any():
             return np.ones(n, dtype=bool)
         if (((eye - self._origins[shown]) * self._normals[shown]).sum(axis=-1) < MIN_EYE_DEPTH).any():
