@@ -4,6 +4,7 @@
     python benchmarks/bench_world.py --repeats 9 --seconds 10 --worlds 8   # longer, tighter figures
     python benchmarks/bench_world.py --sizes 64 --only-frames               # one frame size, frames only
     python benchmarks/bench_world.py --only-frames --ablation               # and each optimisation alone
+    python benchmarks/bench_world.py --size-ratio 300,64                    # one step's cost, small vs large
 
 Prints the machine load at the start, then each figure as the median over repeats with its spread
 (min..max):
@@ -20,6 +21,9 @@ Prints the machine load at the start, then each figure as the median over repeat
   the camera pose of every frame it renders; the raw loop renders exactly those views with
   `getCameraImage` (same size, renderer, flags, light) in the same World, the environment loop replays
   the cycle with `World.step` + `World.frame()` (goal >= 0.9x);
+- with `--size-ratio BIG,SMALL` (only that): the default World at two frame sizes on the same views,
+  interleaved: CPU and wall-clock milliseconds per navigation step (World.step + World.frame()) at each,
+  and the BIG/SMALL ratio of CPU time per repeat (how much cheaper a small frame is);
 - navigation steps/s with rendering off (goal >= 1,000) and interaction actions/s;
 - memory: N Worlds of the same scene built and held at once in a fresh process; RSS per World held
   (goal <= 150 MB per World process);
@@ -198,6 +202,33 @@ def frame_figures(seed: int, size: int, steps: int, repeats: int) -> None:
               f"environment / raw: {spread(ratio, '.2f')}x (goal >= 0.9x)")
 
 
+def size_ratio(seed: int, big: int, small: int, steps: int, repeats: int) -> None:
+    """Milliseconds per step of the default World at two frame sizes on the same views, interleaved."""
+    from luminous_sim.world.config import WorldConfig
+    from luminous_sim.world.world import World
+
+    scene = _scene(seed)
+    with World(scene, WorldConfig(width=big, height=big)) as large, \
+            World(scene, WorldConfig(width=small, height=small)) as little:
+        views, failed = record_views(large, steps)
+        assert record_views(little, steps)[0] == views, "the two Worlds took different views"
+        env_steps_per_s(large, steps)  # warm both (caches, first renders)
+        env_steps_per_s(little, steps)
+        ms: dict[int, tuple[list[float], list[float]]] = {big: ([], []), small: ([], [])}
+        for _ in range(repeats):
+            for size, world in ((big, large), (small, little)):
+                wall, cpu = env_steps_per_s(world, steps)
+                ms[size][0].append(1e3 / cpu)
+                ms[size][1].append(1e3 / wall)
+        print(f"default World, {steps} navigation steps ({failed} failed, {len(views)} distinct views), "
+              f"the same views at both sizes, ms per step:")
+        for size in (big, small):
+            print(f"  {size}x{size}: {spread(ms[size][0], '.3f')} ms of CPU time, {spread(ms[size][1], '.3f')} ms "
+                  f"wall clock")
+        ratio = [b / s for b, s in zip(ms[big][0], ms[small][0], strict=True)]
+        print(f"  {big}/{small} CPU time per step, per repeat: {spread(ratio, '.2f')}x")
+
+
 def nav_unrendered(world, seconds: float) -> float:
     start, n, t0 = world.agent, 0, time.perf_counter()
     while time.perf_counter() - t0 < seconds:
@@ -283,12 +314,20 @@ def main(argv: list[str] | None = None) -> None:
     ap.add_argument("--worlds", type=int, default=4, help="Worlds held at once for the memory figure")
     ap.add_argument("--sizes", default="300,128,64", help="frame sizes for the before/after frame figures")
     ap.add_argument("--only-frames", action="store_true", help="only the before/after frame figures")
+    ap.add_argument("--size-ratio", default="", metavar="BIG,SMALL",
+                    help="only the ms per step at two frame sizes on the same views, and their ratio")
     ap.add_argument("--ablation", action="store_true", help="also each render optimisation alone, per size")
     args = ap.parse_args(argv)
 
     load = os.getloadavg()
     print(f"machine: {os.cpu_count()} cores; load average at start {load[0]:.2f} {load[1]:.2f} {load[2]:.2f} "
           f"(1/5/15 min)")
+    if args.size_ratio:
+        big, small = (int(x) for x in args.size_ratio.split(","))
+        size_ratio(args.seed, big, small, args.steps, args.repeats)
+        load = os.getloadavg()
+        print(f"load average at the end {load[0]:.2f} {load[1]:.2f} {load[2]:.2f}")
+        return
     for size in (int(x) for x in args.sizes.split(",")):
         frame_figures(args.seed, size, args.steps, args.repeats)
         if args.ablation:

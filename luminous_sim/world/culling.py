@@ -8,6 +8,13 @@ set to alpha 0, and they get their colour back right after. A culled link has no
 the frame is the same, pixel for pixel (tests/world/test_culling.py checks RGB, depth and segmentation).
 The floor, walls and ceiling are never culled; the outdoors is, when no doorway or window can show it
 (`world.portals`). Only TinyRenderer is culled: the EGL path draws on the GPU.
+
+The test is vectorised: a table of every object link's box (`_Boxes`, made again when an object is added,
+removed or replaced), every pose asked of PyBullet into one array, the corners transformed again only for
+the boxes whose pose changed, and one product against the frustum's planes for all of them. What a culled
+64x64 frame still pays for culling (measured on the bench_world kitchen, 59 boxes, about 49 culled a frame:
+about 0.6 ms of a 2.8 ms frame, against 0.8 ms before) is mostly PyBullet calls that cannot be batched:
+about 180 `changeVisualShape` calls to hide and put back (0.25 ms) and 58 pose queries (0.1 ms).
 """
 
 from __future__ import annotations
@@ -84,45 +91,75 @@ def _rotations(quats: np.ndarray) -> np.ndarray:
     ], axis=1)
 
 
-class _BodyBoxes:
-    """One loaded asset's link boxes (8 corners each, in the link frame, at the asset's scale)."""
+class _Boxes:
+    """Every object link with a bounded visual, as flat arrays: the corners of its box in the frame PyBullet
+    reports the link's pose in (for a base, its inertial frame), where its pose is asked for, and its world
+    corners for the poses last seen. Made for one set of loaded assets (`loaded`); made again when it changes."""
 
-    def __init__(self, client: BulletClient, loaded: LoadedAsset):
-        bounds = link_visual_bounds(str(loaded.entry.urdf_for(loaded.lod)))
-        s = loaded.entry.scale
-        self.loaded = loaded
-        self.has_base = "base" in bounds
-        self.base_corners = _corners(bounds["base"][0] * s, bounds["base"][1] * s) if self.has_base else None
-        self.links = [(name, j) for name, j in loaded.link_index.items() if name != "base" and name in bounds]
-        self.link_ids = [j for _, j in self.links]
-        self.visuals: dict[str, list[int]] = {}
-        """Each link's visual indices."""
-        for vis in loaded.entry.visuals:
-            self.visuals.setdefault(vis["link"], []).append(vis["index"])
-        self.link_corners = [_corners(bounds[name][0] * s, bounds[name][1] * s) for name, _ in self.links]
-        # PyBullet reports the base's inertial frame; the visuals hang off the base link frame
-        local_pos, local_orn = client.getDynamicsInfo(loaded.body, -1)[3:5]
-        inv_pos, inv_orn = client.invertTransform(local_pos, local_orn)
-        self.inv_rot = _rotations(np.array([inv_orn]))[0]
-        self.inv_pos = np.array(inv_pos)
-        self._seen: dict[str, tuple[tuple, np.ndarray]] = {}
+    def __init__(self, client: BulletClient, objects: Sequence[LoadedAsset]):
+        self.loaded = tuple(objects)
+        self.keys: list[tuple[LoadedAsset, str]] = []
+        """Each box's asset and link name, in the order of the arrays."""
+        self.links: list[int] = []
+        """Each box's PyBullet link index."""
+        self.visuals: list[list[int]] = []
+        """Each box's visual indices."""
+        self.queries: list[tuple[int, bool, list[int]]] = []
+        """Per body with a box: its id, whether its base has one, the link indices of its other boxes."""
+        local: list[np.ndarray] = []
+        for loaded in objects:
+            bounds = link_visual_bounds(str(loaded.entry.urdf_for(loaded.lod)))
+            s = loaded.entry.scale
+            visuals: dict[str, list[int]] = {}
+            for vis in loaded.entry.visuals:
+                visuals.setdefault(vis["link"], []).append(vis["index"])
+            has_base = "base" in bounds
+            if has_base:
+                # PyBullet reports the base's inertial frame; the visuals hang off the base link frame
+                local_pos, local_orn = client.getDynamicsInfo(loaded.body, -1)[3:5]
+                inv_pos, inv_orn = client.invertTransform(local_pos, local_orn)
+                corners = _corners(bounds["base"][0] * s, bounds["base"][1] * s)
+                local.append(corners @ _rotations(np.array([inv_orn]))[0].T + np.array(inv_pos))
+                self._add(loaded, "base", -1, visuals)
+            ids = []
+            for name, j in loaded.link_index.items():
+                if name != "base" and name in bounds:
+                    local.append(_corners(bounds[name][0] * s, bounds[name][1] * s))
+                    self._add(loaded, name, j, visuals)
+                    ids.append(j)
+            if has_base or ids:
+                self.queries.append((loaded.body, has_base, ids))
+        self.local = np.array(local, dtype=float).reshape(-1, 8, 3)
+        self.poses = np.full((len(self.keys), 7), np.nan)
+        """The pose (position, quaternion) each box's world corners were computed for."""
+        self.world = np.zeros_like(self.local)
 
-    def world(self, link: str, pose: tuple) -> np.ndarray:
-        """The link box's corners in world coordinates for the link's `pose` as PyBullet reports it (for the
-        base, its inertial frame); cached until the pose changes."""
-        seen = self._seen.get(link)
-        if seen is not None and seen[0] == pose:
-            return seen[1]
-        rot = _rotations(np.asarray([pose[1]], dtype=float))[0]
-        pos = np.asarray(pose[0], dtype=float)
-        if link == "base":  # world <- inertial <- base link
-            pos, rot = rot @ self.inv_pos + pos, rot @ self.inv_rot
-            local = self.base_corners
-        else:
-            local = self.link_corners[[name for name, _ in self.links].index(link)]
-        out = local @ rot.T + pos
-        self._seen[link] = (pose, out)
-        return out
+    def _add(self, loaded: LoadedAsset, name: str, link: int, visuals: dict[str, list[int]]) -> None:
+        self.keys.append((loaded, name))
+        self.links.append(link)
+        self.visuals.append(visuals.get(name, []))
+
+    def update(self, client: BulletClient) -> np.ndarray:
+        """Every box's 8 corners in world coordinates now, shape (n, 8, 3): each pose is asked for (PyBullet
+        tells no one when a body moves), and only the boxes whose pose changed are transformed again."""
+        base_pose, link_states = client.getBasePositionAndOrientation, client.getLinkStates  # lookup is slow
+        flat: list[float] = []
+        for body, has_base, ids in self.queries:
+            if has_base:
+                pos, orn = base_pose(body)
+                flat += pos
+                flat += orn
+            if ids:
+                for st in link_states(body, ids, computeForwardKinematics=1):
+                    flat += st[4]
+                    flat += st[5]
+        poses = np.array(flat, dtype=float).reshape(-1, 7)
+        moved = (poses != self.poses).any(axis=1)
+        if moved.any():
+            rot = _rotations(poses[moved, 3:])
+            self.world[moved] = np.einsum("nij,nkj->nki", rot, self.local[moved]) + poses[moved, None, :3]
+            self.poses = poses
+        return self.world
 
 
 def _view_proj(view: list[float], proj: list[float]) -> np.ndarray:
@@ -142,7 +179,7 @@ class FrustumCuller:
         seen only through the openings of `room`, a `rooms.RoomShell`) by the view and the openings."""
         self._client = client
         self._objects = objects
-        self._boxes_of: dict[int, _BodyBoxes] = {}
+        self._table: _Boxes | None = None
         self._outdoor_bodies: list[tuple[int, list[float]]] = []
         boxes = []
         for body in outdoors if room is not None else ():
@@ -151,50 +188,40 @@ class FrustumCuller:
             half = np.array(shape[3]) / 2
             boxes.append((pos - half, pos + half))
             self._outdoor_bodies.append((body, list(shape[7])))
+        self._outdoor_colors = dict(self._outdoor_bodies)
         self._outdoors = OutdoorCuller(room, boxes) if boxes else None
 
-    def _body(self, loaded: LoadedAsset) -> _BodyBoxes:
-        boxes = self._boxes_of.get(loaded.body)
-        if boxes is None or boxes.loaded is not loaded:  # a body id can be reused after removeBody
-            boxes = self._boxes_of[loaded.body] = _BodyBoxes(self._client, loaded)
-        return boxes
+    def _boxes(self) -> _Boxes:
+        """The box table for the objects now (made again when an object was added, removed or replaced: a body
+        id can be reused after removeBody, so the assets themselves are compared)."""
+        table = self._table
+        objects = self._objects.values()
+        if table is None or len(table.loaded) != len(objects) \
+                or any(a is not b for a, b in zip(table.loaded, objects, strict=True)):
+            table = self._table = _Boxes(self._client, list(objects))
+        return table
 
-    def _boxes(self) -> tuple[list[tuple[LoadedAsset, str]], np.ndarray]:
-        """Every object link with a visual, and its box's 8 corners in world coordinates, shape (n, 8, 3).
+    def _outside(self, view_proj: np.ndarray, margin: tuple[float, float]) -> tuple[_Boxes, np.ndarray]:
+        table = self._boxes()
+        if not table.keys:
+            return table, np.zeros(0, dtype=bool)
+        return table, outside_view(table.update(self._client), view_proj, margin)
 
-        Each link's pose is asked for every time; its corners are recomputed only when that pose changed."""
-        c = self._client
-        base_pose, link_states = c.getBasePositionAndOrientation, c.getLinkStates  # BulletClient's lookup is slow
-        keys: list[tuple[LoadedAsset, str]] = []
-        corners: list[np.ndarray] = []
-        for loaded in self._objects.values():
-            boxes = self._body(loaded)
-            if boxes.has_base:
-                keys.append((loaded, "base"))
-                corners.append(boxes.world("base", base_pose(loaded.body)))
-            if boxes.links:
-                states = link_states(loaded.body, boxes.link_ids, computeForwardKinematics=1)
-                for (name, _), st in zip(boxes.links, states, strict=True):
-                    keys.append((loaded, name))
-                    corners.append(boxes.world(name, (st[4], st[5])))
-        return keys, np.array(corners).reshape(-1, 8, 3)
-
-    def outside(self, view: list[float], proj: list[float], width: int, height: int) -> list[tuple[LoadedAsset, str]]:
-        """The object links whose visual box lies wholly beyond one plane of this camera's frustum."""
-        keys, corners = self._boxes()
-        if not keys:
-            return []
-        out = outside_view(corners, _view_proj(view, proj), _margin(width, height))
-        return [k for k, o in zip(keys, out, strict=True) if o]
-
-    def outdoors_hidden(self, view: list[float], proj: list[float], width: int, height: int) -> list[int]:
-        """The outdoor bodies that no doorway or window shows to this camera."""
+    def _away(self, view: list[float], view_proj: np.ndarray, margin: tuple[float, float]) -> list[int]:
         if self._outdoors is None:
             return []
         v = np.asarray(view, dtype=float).reshape(4, 4).T
-        eye = -v[:3, :3].T @ v[:3, 3]
-        hidden = self._outdoors.hidden(eye, _view_proj(view, proj), _margin(width, height))
-        return [body for (body, _), h in zip(self._outdoor_bodies, hidden, strict=True) if h]
+        hidden = self._outdoors.hidden(-v[:3, :3].T @ v[:3, 3], view_proj, margin)
+        return [body for (body, _), h in zip(self._outdoor_bodies, hidden.tolist(), strict=True) if h]
+
+    def outside(self, view: list[float], proj: list[float], width: int, height: int) -> list[tuple[LoadedAsset, str]]:
+        """The object links whose visual box lies wholly beyond one plane of this camera's frustum."""
+        table, out = self._outside(_view_proj(view, proj), _margin(width, height))
+        return [table.keys[k] for k in np.flatnonzero(out)]
+
+    def outdoors_hidden(self, view: list[float], proj: list[float], width: int, height: int) -> list[int]:
+        """The outdoor bodies that no doorway or window shows to this camera."""
+        return self._away(view, _view_proj(view, proj), _margin(width, height))
 
     @contextmanager
     def culled(self, view: list[float], proj: list[float], width: int, height: int) -> Iterator[int]:
@@ -204,25 +231,30 @@ class FrustumCuller:
         gets its own colour and alpha back afterwards (those already at alpha 0 stay so), the link's
         last-set visual last, as `getVisualShapeData` reports the last colour set on a link."""
         change = self._client.changeVisualShape
-        outdoors = dict(self._outdoor_bodies)
-        away = self.outdoors_hidden(view, proj, width, height)
+        view_proj, margin = _view_proj(view, proj), _margin(width, height)
+        away = self._away(view, view_proj, margin)
+        table, out = self._outside(view_proj, margin)
         hidden = []
-        for loaded, name in self.outside(view, proj, width, height):
-            showing = [i for i in self._body(loaded).visuals.get(name, ()) if loaded.alphas[(name, i)] > 0]
+        keys, links, visuals = table.keys, table.links, table.visuals
+        for k in np.flatnonzero(out).tolist():
+            loaded, name = keys[k]
+            alphas = loaded.alphas
+            showing = [i for i in visuals[k] if alphas[name, i] > 0]
             if showing:
-                hidden.append((loaded, name, showing))
+                hidden.append((loaded, name, links[k], showing))
         try:
             for body in away:
                 change(body, -1, rgbaColor=[0.0, 0.0, 0.0, 0.0])
-            for loaded, name, _ in hidden:
-                change(loaded.body, loaded.link_index[name], rgbaColor=[0.0, 0.0, 0.0, 0.0])
+            for loaded, _, link, _ in hidden:
+                change(loaded.body, link, rgbaColor=[0.0, 0.0, 0.0, 0.0])
             yield len(hidden) + len(away)
         finally:
             for body in away:
-                change(body, -1, rgbaColor=outdoors[body])
-            for loaded, name, showing in hidden:
-                link = loaded.link_index[name]
+                change(body, -1, rgbaColor=self._outdoor_colors[body])
+            for loaded, name, link, showing in hidden:
                 last = loaded.last_set.get(name)  # set last again, so that PyBullet reports what it did before
-                for i in [i for i in showing if i != last] + ([] if last is None else [last]):
-                    change(loaded.body, link, shapeIndex=i, rgbaColor=[*loaded.colors[(name, i)][:3],
-                                                                       loaded.alphas[(name, i)]])
+                if last is not None:
+                    showing = [i for i in showing if i != last] + [last]
+                colors, alphas = loaded.colors, loaded.alphas
+                for i in showing:
+                    change(loaded.body, link, shapeIndex=i, rgbaColor=[*colors[(name, i)][:3], alphas[(name, i)]])

@@ -40,13 +40,19 @@ def box_corners(lo: Point3, hi: Point3) -> np.ndarray:
 def outside_view(corners: np.ndarray, view_proj: np.ndarray, margin: tuple[float, float]) -> np.ndarray:
     """For boxes given by their corners (n, 8, 3): whether each lies wholly beyond one plane of the view
     frustum (`view_proj` the 4x4 projection @ view matrix; the side planes moved out by `margin`, in
-    normalised device units, x and y)."""
-    homo = np.concatenate([corners, np.ones(corners.shape[:-1] + (1,))], axis=-1)
-    clip = homo @ view_proj.T
-    x, y, z, w = clip[..., 0], clip[..., 1], clip[..., 2], clip[..., 3]
+    normalised device units, x and y).
+
+    In clip coordinates (x, y, z, w) a box is out when all its corners have x < -mx w, or all x > mx w, (y
+    likewise), z < -w, z > w, or w <= 0; each of these is one linear function of the corner below 0 (at or
+    below, for w), so the seven functions are taken back to world coordinates once and applied to every
+    corner in one product."""
     mx, my = margin
-    return ((x < -mx * w).all(axis=-1) | (x > mx * w).all(axis=-1) | (y < -my * w).all(axis=-1)
-            | (y > my * w).all(axis=-1) | (z < -w).all(axis=-1) | (z > w).all(axis=-1) | (w <= 0).all(axis=-1))
+    planes = np.array([[1.0, 0.0, 0.0, mx], [-1.0, 0.0, 0.0, mx], [0.0, 1.0, 0.0, my], [0.0, -1.0, 0.0, my],
+                       [0.0, 0.0, 1.0, 1.0], [0.0, 0.0, -1.0, 1.0], [0.0, 0.0, 0.0, 1.0]]) @ view_proj
+    d = corners.reshape(-1, 3) @ planes[:, :3].T + planes[:, 3]  # one 2-D product: a stack of small ones is slower
+    beyond = d < 0
+    beyond[:, 6] = d[:, 6] <= 0
+    return beyond.reshape(corners.shape[:-2] + (8, 7)).all(axis=-2).any(axis=-1)
 
 
 class Opening:
@@ -98,21 +104,33 @@ class OutdoorCuller:
         """`room`: the scene's room (a `rooms.RoomShell`); `boxes`: each outdoor box's world (lo, hi) corners,
         axis-aligned, in the order of `hidden`'s answer."""
         self._openings = openings(room)
-        self._opening_corners = np.stack([op.corners for op in self._openings]) if self._openings \
-            else np.zeros((0, 8, 3))
+        ops = self._openings
+        self._opening_corners = np.stack([op.corners for op in ops]) if ops else np.zeros((0, 8, 3))
+        self._faces = np.stack([op.faces for op in ops]) if ops else np.zeros((0, 2, 4, 3))
+        self._origins = np.stack([op.origin for op in ops]) if ops else np.zeros((0, 3))
+        self._normals = np.stack([op.normal for op in ops]) if ops else np.zeros((0, 3))
         self._room = room.polygon()
         self._corners = np.stack([box_corners(lo, hi) for lo, hi in boxes]) if boxes else np.zeros((0, 8, 3))
+        self._all_corners = np.concatenate([self._corners, self._opening_corners])
+        """The boxes' corners, then the openings': both tested against the view in one call."""
 
     def hidden(self, eye: np.ndarray, view_proj: np.ndarray, margin: tuple[float, float]) -> np.ndarray:
-        """Whether each outdoor box is out of sight from `eye` for this camera (a bool per box)."""
+        """Whether each outdoor box is out of sight from `eye` for this camera (a bool per box): out of the
+        view, or, for every opening in the view, beyond one side of one of its two cones (`Opening.hides`,
+        for all openings at once)."""
         n = len(self._corners)
         if n == 0 or not contains_xy(self._room, float(eye[0]), float(eye[1])):
             return np.zeros(n, dtype=bool)
-        seen = outside_view(self._corners, view_proj, margin)  # start: only boxes out of the view are hidden
-        hidden = np.ones(n, dtype=bool)
-        away = outside_view(self._opening_corners, view_proj, margin)
-        for op in (op for op, out in zip(self._openings, away, strict=True) if not out):
-            if op.depth(eye) < MIN_EYE_DEPTH:
-                return seen
-            hidden &= op.hides(eye, self._corners)
-        return hidden | seen
+        out = outside_view(self._all_corners, view_proj, margin)
+        seen, shown = out[:n], ~out[n:]  # start: only boxes out of the view are hidden
+        if not shown.any():
+            return np.ones(n, dtype=bool)
+        if (((eye - self._origins[shown]) * self._normals[shown]).sum(axis=-1) < MIN_EYE_DEPTH).any():
+            return seen
+        edges = self._faces[shown] - eye  # (m, 2, 4, 3)
+        planes = np.cross(edges, np.roll(edges, -1, axis=2))
+        inward = np.einsum("mfpc,mfc->mfp", planes, edges.mean(axis=2))
+        planes = (planes * np.where(inward < 0, -1.0, 1.0)[..., None]).reshape(-1, 8, 3)  # (m, 8, 3)
+        d = (self._corners - eye) @ planes.reshape(-1, 3).T  # (n, 8, m * 8)
+        beyond = (d < 0).all(axis=1).reshape(n, -1, 8).any(axis=2)  # (n, m): beyond a side of a cone of each
+        return beyond.all(axis=1) | seen
