@@ -11,8 +11,9 @@ import tomllib
 from pathlib import Path
 from typing import Any
 
-from luminous_sim.cli.args import int_range, non_negative_int, output_dir, positive_int, seed
+from luminous_sim.cli.args import int_range, output_dir, positive_int, seed
 from luminous_sim.data.backends import BACKENDS
+from luminous_sim.limits import MAX_BUILD_JOBS
 from luminous_sim.splits import PLUS_SPLITS
 
 EPILOG = ("example: luminous dataset minari --env Luminous-NavToObject-64-v1 --episodes 100 --out out/minari   "
@@ -48,9 +49,10 @@ def register(sub: argparse._SubParsersAction) -> None:
     source.add_argument("--from-alfred", type=Path, default=None, metavar="ALFRED_SPLIT_DIR",
                         help="an ALFRED split folder of <task>/<trial>/traj_data.json, e.g. valid_seen (method "
                              "(b)); its trials are written under OUT/<its folder name>/")
-    b.add_argument("--count", type=non_negative_int, default=None,
-                   help="episodes 0..COUNT-1 of the split (required with --split); with --from-alfred, the first "
-                        "COUNT designs in path order (default all)")
+    b.add_argument("--count", type=int_range(0, MAX_BUILD_JOBS), default=None,
+                   help=f"episodes 0..COUNT-1 of the split (required with --split; at most {MAX_BUILD_JOBS}); with "
+                        "--from-alfred, the first COUNT designs in path order (default all). A rerun may extend a "
+                        "build, never shrink it")
     b.add_argument("--out", required=True, type=output_dir, help="build folder (new, empty, or an earlier build)")
     b.add_argument("--workers", type=positive_int, default=1, help="worker processes (default 1)")
     b.add_argument("--backend", choices=BACKENDS, default="local",

@@ -8,8 +8,9 @@ import os
 import sys
 from pathlib import Path
 
-from luminous_sim.cli.args import output_dir, positive_int, seed
+from luminous_sim.cli.args import int_range, output_dir, positive_int, seed
 from luminous_sim.data.backends import BACKENDS
+from luminous_sim.limits import MAX_EVAL_EPISODES
 
 SPLITS: tuple[str, ...] = ("S+", "U+", "U+test")
 """The split names (`luminous_sim.splits.PLUS_SPLITS`; a test keeps the two in step)."""
@@ -24,9 +25,10 @@ def register(sub: argparse._SubParsersAction) -> None:
     parser.add_argument("--policy", required=True, metavar="POLICY",
                         help="oracle, random, or MODULE:CALLABLE, a factory of your agent (docs/evaluation.md)")
     parser.add_argument("--split", required=True, choices=SPLITS, help="the evaluation split")
-    parser.add_argument("--episodes", type=positive_int, required=True, metavar="N",
-                        help="evaluate the split's episodes 0 .. N-1")
-    parser.add_argument("--out", type=output_dir, required=True, help="output folder")
+    parser.add_argument("--episodes", type=int_range(1, MAX_EVAL_EPISODES), required=True, metavar="N",
+                        help=f"evaluate the split's episodes 0 .. N-1 (at most {MAX_EVAL_EPISODES})")
+    parser.add_argument("--out", type=output_dir, required=True,
+                        help="output folder: new, empty, or one this same evaluation was run in (it resumes)")
     parser.add_argument("--workers", type=positive_int, default=1,
                         help="worker processes, or Ray CPUs of a local cluster (default 1)")
     parser.add_argument("--backend", choices=BACKENDS, default="local",
@@ -80,6 +82,8 @@ def _run(args: argparse.Namespace) -> int:
         os.environ["PYTHONPATH"] = os.pathsep.join(p for p in (os.getcwd(), os.environ.get("PYTHONPATH")) if p)
         with make_backend(args.backend, args.workers, args.address) as backend:
             report = run(backend)
+    for why in report.replayed:
+        print(f"played again (its file was damaged): {why}", file=sys.stderr)
     paths = write_reports(report, Path(args.out))
     print(markdown_table([report]), end="")
     print(f"wrote {paths['json']}, {paths['table']}, {paths['plot']}")

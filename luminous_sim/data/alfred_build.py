@@ -26,6 +26,7 @@ from luminous_sim.data.alfred_export import GENERATED, ExportError, export_alfre
 from luminous_sim.data.backends import Backend
 from luminous_sim.data.build import ANNOTATIONS, BuildError, BuildOptions, BuildReport, JobOutcome, build
 from luminous_sim.errors import LuminousError
+from luminous_sim.limits import MAX_BUILD_JOBS
 
 DESIGN_SEED = 0
 """The seed of every design's scene and instructions by default (`benchmarks/bench_alfred_designs.py`'s)."""
@@ -101,8 +102,8 @@ def design_jobs(split_dir: Path, count: int | None = None, seed: int = DESIGN_SE
         DesignError: the folder is missing or empty, or a traj_data.json in it is malformed (named).
         BuildError: a negative count.
     """
-    if count is not None and count < 0:
-        raise BuildError(f"count must be at least 0, got {count}")
+    if count is not None and not 0 <= count <= MAX_BUILD_JOBS:
+        raise BuildError(f"count must be from 0 to {MAX_BUILD_JOBS} (luminous_sim.limits.MAX_BUILD_JOBS), got {count}")
     split_dir = Path(split_dir)
     designs = read_designs(split_dir)[:count]
     split = split_dir.resolve().name

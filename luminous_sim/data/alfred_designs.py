@@ -8,7 +8,6 @@ which the task is feasible, symbolically and physically, and its goal does not a
 
 from __future__ import annotations
 
-import json
 from collections.abc import Collection, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -18,6 +17,7 @@ import numpy as np
 
 from luminous_sim.assets.catalog import Catalog
 from luminous_sim.cdf import ChallengeDefinition
+from luminous_sim.data.alfred_parser import AlfredParseError, read_traj
 from luminous_sim.errors import InfeasibleSceneError, LuminousError
 from luminous_sim.scene import Scene
 from luminous_sim.tasks import (
@@ -77,8 +77,10 @@ def read_design(path: str | Path) -> AlfredDesign:
     """
     path = Path(path)
     try:
-        data = json.loads(path.read_text())
-    except (OSError, json.JSONDecodeError) as exc:
+        data = read_traj(path)  # the reader `luminous alfred parse` uses: the same refusals
+    except AlfredParseError as exc:
+        raise DesignError(str(exc)) from None
+    except OSError as exc:
         raise DesignError(f"{path}: not a readable traj_data.json ({exc})") from exc
     try:
         scene = data["scene"]

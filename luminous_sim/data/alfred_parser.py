@@ -191,6 +191,74 @@ def snake(object_type: str) -> str:
 # -- reading the file -----------------------------------------------------------------------------
 
 
+MAX_TRAJ_BYTES = 64 * 1024 * 1024
+"""Largest traj_data.json read (ALFRED's largest is under 2 MB)."""
+
+
+def _first_not_finite(value: Any, where: str = "") -> str | None:
+    """The key path of the first NaN or infinite number in `value`, if any."""
+    if isinstance(value, float) and not math.isfinite(value):
+        return where or "(top)"
+    if isinstance(value, Mapping):
+        items: Iterator[tuple[str, Any]] = ((f"{where}.{k}" if where else str(k), v) for k, v in value.items())
+    elif isinstance(value, list | tuple):
+        items = ((f"{where}[{i}]", v) for i, v in enumerate(value))
+    else:
+        return None
+    for path, item in items:
+        found = _first_not_finite(item, path)
+        if found:
+            return found
+    return None
+
+
+def read_traj(path: str | Path, source: str | None = None) -> Mapping[str, Any]:
+    """A traj_data.json's content, checked as both ALFRED readers (`parse_alfred`, `data.read_design`) need
+    it: a regular file (a folder or a device is named as such) within `MAX_TRAJ_BYTES`, JSON without NaN or
+    infinities, an object at the top, and `check_traj`'s fields.
+
+    Raises:
+        AlfredParseError: the first problem, naming the file and the key.
+    """
+    path = Path(path)
+    source = source or str(path)
+    if not path.exists():
+        raise AlfredParseError(f"{source}: no such file")
+    if path.is_dir():
+        raise AlfredParseError(f"{source}: a folder; expected a traj_data.json file")
+    if not path.is_file():
+        raise AlfredParseError(f"{source}: not a regular file (a device or a pipe?); expected a traj_data.json file")
+    size = path.stat().st_size
+    if size > MAX_TRAJ_BYTES:
+        raise AlfredParseError(f"{source}: {size} bytes; a traj_data.json may hold at most {MAX_TRAJ_BYTES}")
+    try:
+        data = json.loads(path.read_bytes())  # NaN and Infinity parse: `check_traj` names where they are
+    except (ValueError, RecursionError) as exc:
+        raise AlfredParseError(f"{source}: not JSON: {exc}") from None
+    check_traj(data, source)
+    return data
+
+
+def check_traj(data: Any, source: str) -> None:
+    """Refuse trajectory data that is not an object, lacks ALFRED's task_type, pddl_params, scene.floor_plan,
+    scene.scene_num, plan.high_pddl or plan.low_actions, or holds a NaN or infinite number anywhere.
+
+    Raises:
+        AlfredParseError: naming `source` and the key.
+    """
+    if not isinstance(data, Mapping):
+        raise AlfredParseError(f"{source}: expected a JSON object at the top, got {type(data).__name__}")
+    _get(data, "task_type", str, source)
+    _get(data, "pddl_params", Mapping, source)
+    _get(data, "scene.floor_plan", str, source)
+    _get(data, "scene.scene_num", int, source)
+    _get(data, "plan.high_pddl", list, source)
+    _get(data, "plan.low_actions", list, source)
+    bad = _first_not_finite(data)
+    if bad:
+        raise AlfredParseError(f"{source}: {bad}: expected a finite number, got NaN or infinity")
+
+
 def _get(data: Mapping[str, Any], path: str, kind: type | tuple[type, ...], source: str, within: str = "") -> Any:
     """`data[a][b]...` for `path` "a.b", checked to be of `kind`; `within` prefixes the path in messages."""
     value: Any = data
@@ -525,16 +593,11 @@ def parse_alfred(traj: Mapping[str, Any] | str | Path, source: str | None = None
             plan or task parameters ALFRED would not draw; the message names the file and the key.
     """
     if isinstance(traj, (str, Path)):
-        path = Path(traj)
-        source = source or str(path)
-        try:
-            data = json.loads(path.read_text())
-        except json.JSONDecodeError as exc:
-            raise AlfredParseError(f"{source}: not JSON: {exc}") from None
+        source = source or str(traj)
+        data = read_traj(traj, source)
     else:
         data, source = traj, source or "<traj_data>"
-    if not isinstance(data, Mapping):
-        raise AlfredParseError(f"{source}: expected a JSON object at the top, got {type(data).__name__}")
+        check_traj(data, source)
     task_type = _get(data, "task_type", str, source)
     task_id = str(data.get("task_id", ""))
     try:

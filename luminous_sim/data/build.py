@@ -20,6 +20,15 @@ then sees a new run id in `.partial/RUN` and does nothing more), removes `.parti
 folder that the manifest does not list (one renamed into place just before the kill), and runs the
 jobs the manifest lacks. Each job depends on
 its own key alone, so the files are the same whatever the worker count, backend or interruptions.
+
+What a resumed build trusts: nothing it has not checked. The manifest is validated line by line
+(`manifest.check_record`: a forged trial path is refused, never followed); each finished trial's digest
+is recomputed from its files and compared with its record, and a trial that is missing, damaged or
+holds a symbolic link is done again (a record that disagrees with its job too); nothing is followed
+through a symbolic link, so a build writes and deletes inside its folder only. A build is extended,
+never shrunk: a job list that leaves out finished jobs of a split it builds (a smaller `--count`) is
+refused. One folder may hold several splits (each its own folder, its own records and its own entry
+of `splits.json`).
 """
 
 from __future__ import annotations
@@ -44,8 +53,9 @@ import numpy as np
 from luminous_sim.assets.objio import write_atomic
 from luminous_sim.data.alfred_export import ExportError, export_alfred
 from luminous_sim.data.backends import Backend, map_jobs
-from luminous_sim.data.manifest import Manifest, Record
+from luminous_sim.data.manifest import Manifest, Record, plain_name
 from luminous_sim.errors import LuminousError
+from luminous_sim.limits import MAX_BUILD_JOBS
 from luminous_sim.scene import Scene
 from luminous_sim.splits import SplitEntry, oct21_document, split_entry
 
@@ -213,9 +223,10 @@ class SplitJob:
 
 
 def split_jobs(split: str, count: int, start: int = 0) -> list[SplitJob]:
-    """Jobs for episodes `start .. start + count - 1` of `split` (checked: unknown split, negative index)."""
-    if count < 0:
-        raise BuildError(f"count must be at least 0, got {count}")
+    """Jobs for episodes `start .. start + count - 1` of `split` (checked: unknown split, negative index,
+    a count over `limits.MAX_BUILD_JOBS`)."""
+    if not 0 <= count <= MAX_BUILD_JOBS:
+        raise BuildError(f"count must be from 0 to {MAX_BUILD_JOBS} (luminous_sim.limits.MAX_BUILD_JOBS), got {count}")
     jobs = [SplitJob(split, i) for i in range(start, start + count)]
     for job in jobs[:1]:
         split_entry(job.split, job.index)  # raises SplitError for an unknown split or a negative start
@@ -223,13 +234,32 @@ def split_jobs(split: str, count: int, start: int = 0) -> list[SplitJob]:
 
 
 def tree_digest(root: Path) -> tuple[int, str]:
-    """(number of files, sha256 over their relative paths and contents, in sorted order) under `root`."""
+    """(number of files, sha256 over their relative paths and contents, in sorted order) under `root`.
+
+    A symbolic link is hashed as a link (its target's name, never what it points to), so a trial in which
+    one was planted never matches the digest recorded for the files a job wrote."""
     outer = hashlib.sha256()
-    files = sorted(p for p in root.rglob("*") if p.is_file())
+    files = sorted(p for p in root.rglob("*") if p.is_symlink() or p.is_file())
     for p in files:
         outer.update(p.relative_to(root).as_posix().encode() + b"\0")
-        outer.update(hashlib.sha256(p.read_bytes()).digest())
+        content = b"symlink\0" + os.readlink(p).encode() if p.is_symlink() else p.read_bytes()
+        outer.update(hashlib.sha256(content).digest())
     return len(files), outer.hexdigest()
+
+
+def _remove(path: Path) -> None:
+    """Remove a file, a symbolic link (the link itself, never its target) or a folder (whose links
+    `shutil.rmtree` removes without following them)."""
+    if path.is_symlink() or (path.exists() and not path.is_dir()):
+        path.unlink()
+    elif path.is_dir():
+        shutil.rmtree(path)
+
+
+def _open_nofollow(path: Path) -> Any:
+    """`path` opened for appending, created if missing, refused (OSError) if it is a symbolic link: a lock
+    file planted as a link must not make the build create or touch a file elsewhere."""
+    return os.fdopen(os.open(path, os.O_RDWR | os.O_CREAT | os.O_APPEND | os.O_NOFOLLOW, 0o644), "a")
 
 
 def _fsync_dir(path: Path) -> None:
@@ -289,7 +319,7 @@ def _workers_lock(out: Path, exclusive: bool) -> Iterator[None]:
     it waits for the current job of any worker a killed build left running before it cleans up."""
     import fcntl
 
-    with open(out / WORKERS_LOCK, "a") as fh:
+    with _open_nofollow(out / WORKERS_LOCK) as fh:
         fcntl.flock(fh, fcntl.LOCK_EX if exclusive else fcntl.LOCK_SH)
         try:
             yield
@@ -346,8 +376,8 @@ def _run_job(job: Any, out: Path, options: BuildOptions) -> Record:
         _fsync_tree(written)
         dest = out / job.split / rel
         dest.parent.mkdir(parents=True, exist_ok=True)
-        if dest.exists():  # renamed into place by a killed build that never recorded it
-            shutil.rmtree(dest)
+        if dest.exists() or dest.is_symlink():  # renamed into place by a killed build that never recorded it
+            _remove(dest)
         os.replace(written, dest)
         _fsync_dir(dest.parent)
         record["trial"] = rel.as_posix()
@@ -366,6 +396,16 @@ class BuildReport:
     """Jobs run by this call (the others were finished before it started)."""
     seconds: float
     workers: int
+    redone: tuple[str, ...] = ()
+    """Keys of finished jobs done again because their trial was missing or damaged (or their record
+    disagreed with the job)."""
+    dropped: tuple[str, ...] = ()
+    """Keys of finished jobs of other splits in the folder (not asked for now) whose trial was missing or
+    damaged: no longer listed; building their split again restores them."""
+    others: dict[str, int] = field(default_factory=dict)
+    """Trials per split that the folder also holds, beside those asked for (each split kept apart)."""
+    rejected: tuple[str, ...] = ()
+    """Manifest lines left out as unreadable or altered (their jobs were done again), each with its cause."""
 
     @property
     def built(self) -> int:
@@ -399,6 +439,19 @@ class BuildReport:
             if len(row["causes"]) > CAUSES_SHOWN:
                 rest = sum(n for _, n in row["causes"][CAUSES_SHOWN:])
                 lines.append(f"  {t}: {rest} more failures with other causes (manifest.jsonl has each)")
+        if self.rejected:
+            lines.append(f"{len(self.rejected)} manifest line(s) unreadable or altered, left out and their jobs done "
+                         f"again; the first: {_shorten(self.rejected[0], 300)}")
+        if self.redone:
+            lines.append(f"{len(self.redone)} finished trial(s) missing or damaged, done again: "
+                         f"{', '.join(self.redone[:5])}{' ...' if len(self.redone) > 5 else ''}")
+        if self.dropped:
+            lines.append(f"{len(self.dropped)} trial(s) of other splits missing or damaged and no longer listed "
+                         f"(build their split again to restore them): {', '.join(self.dropped[:5])}"
+                         f"{' ...' if len(self.dropped) > 5 else ''}")
+        if self.others:
+            lines.append("the folder also holds " + ", ".join(f"{n} trial(s) of {s}" for s, n in self.others.items())
+                         + " (each split listed apart in splits.json)")
         if self.ran:
             rate = self.ran / self.seconds * 60 if self.seconds > 0 else float("inf")
             lines.append(f"ran {self.ran} jobs in {self.seconds:.1f} s on {self.workers} worker(s): "
@@ -420,7 +473,7 @@ class _Lock:
     def __enter__(self) -> _Lock:
         import fcntl
 
-        self._fh = open(self.path, "a")  # held until __exit__
+        self._fh = _open_nofollow(self.path)  # held until __exit__
         try:
             fcntl.flock(self._fh, fcntl.LOCK_EX | fcntl.LOCK_NB)
         except BlockingIOError:
@@ -436,11 +489,15 @@ def _check_settings(out: Path, options: BuildOptions) -> None:
     """Write build.json in a fresh folder; in one that holds a build, refuse different settings."""
     path = out / SETTINGS
     wanted = options.settings()
-    if path.exists():
+    if path.exists() or path.is_symlink():
+        if path.is_symlink() or not path.is_file():
+            raise BuildError(f"{path}: not a regular file; expected the build's settings")
         try:
-            have = json.loads(path.read_text())
-        except ValueError as exc:
+            have = json.loads(path.read_bytes()[:1_000_000])
+        except (ValueError, RecursionError) as exc:
             raise BuildError(f"{path}: not JSON ({exc})") from None
+        if not isinstance(have, dict):
+            raise BuildError(f"{path}: expected a JSON object of build settings, got {type(have).__name__}")
         if have != wanted:
             diff = ", ".join(f"{k}: {have.get(k)!r} there, {wanted.get(k)!r} now" for k in sorted(wanted)
                              if have.get(k) != wanted.get(k))
@@ -454,22 +511,69 @@ def _check_settings(out: Path, options: BuildOptions) -> None:
     write_atomic(path, json.dumps(wanted, indent=1, sort_keys=True) + "\n")
 
 
-def _clean(out: Path, manifest: Manifest) -> int:
+def _clean(out: Path, manifest: Manifest, splits: set[str]) -> int:
     """Remove what a killed build left: `.partial/`, trial folders (`<split>/<task>/<trial>`) the
-    manifest does not list, and task folders left empty. The number of trial folders removed."""
-    shutil.rmtree(out / PARTIAL, ignore_errors=True)
+    manifest does not list, and task folders left empty, in the folders of `splits` and any other real
+    folder of `out`; a symbolic link or a file where a split, task or trial folder belongs is removed
+    itself, never followed. The number of trial folders removed."""
+    _remove(out / PARTIAL)
     listed = {(r["split"], r["trial"]) for r in manifest if r.get("trial")}
     removed = 0
-    for root in sorted(p for p in out.iterdir() if p.is_dir() and not p.name.startswith(".")):
+    for split in sorted(splits):
+        root = out / split
+        if root.is_symlink() or (root.exists() and not root.is_dir()):
+            _remove(root)
+    for root in sorted(p for p in out.iterdir() if not p.is_symlink() and p.is_dir() and not p.name.startswith(".")):
         split = root.name
-        for task in sorted(p for p in root.iterdir() if p.is_dir()):
-            for trial in sorted(p for p in task.iterdir() if p.is_dir()):
-                if (split, f"{task.name}/{trial.name}") not in listed:
-                    shutil.rmtree(trial)
+        for task in sorted(root.iterdir()):
+            if task.is_symlink() or not task.is_dir():
+                _remove(task)
+                continue
+            for trial in sorted(task.iterdir()):
+                if (split, f"{task.name}/{trial.name}") not in listed or trial.is_symlink() or not trial.is_dir():
+                    _remove(trial)
                     removed += 1
             if not any(task.iterdir()):
                 task.rmdir()
     return removed
+
+
+def _intact(out: Path, record: Record) -> bool:
+    """Whether a built record's trial is a real folder (no link on the way) whose files have the digest
+    the record holds (recomputed from the files, not taken from the record)."""
+    split, trial = out / record["split"], out / record["split"] / record["trial"]
+    if any(p.is_symlink() for p in (split, trial.parent, trial)) or not trial.is_dir():
+        return False
+    return tree_digest(trial) == (record["files"], record["sha256"])
+
+
+def _verify(out: Path, manifest: Manifest, jobs: Sequence[Job]) -> tuple[list[str], list[str]]:
+    """The finished jobs to do again: (keys of `jobs` whose record disagrees with the job or whose trial is
+    missing or damaged, keys of other records whose trial is missing or damaged)."""
+    by_key = {j.key: j for j in jobs}
+    redo: list[str] = []
+    drop: list[str] = []
+    for r in manifest:
+        job = by_key.get(r["key"])
+        if job is not None and (r["split"], r["order"], r["task_type"]) != (job.split, job.order, job.task_type):
+            redo.append(r["key"])
+        elif r["status"] == "built" and not _intact(out, r):
+            (redo if job is not None else drop).append(r["key"])
+    return redo, drop
+
+
+def _check_scope(out: Path, manifest: Manifest, jobs: Sequence[Job]) -> None:
+    """Refuse a job list that leaves out finished jobs of a split it builds (a build is extended, never
+    shrunk: its splits.json would silently keep listing them)."""
+    keys = {j.key for j in jobs}
+    for split in sorted({j.split for j in jobs}):
+        left = sorted((r["order"], r["key"]) for r in manifest if r["split"] == split and r["key"] not in keys)
+        if left:
+            mine = [j.order for j in jobs if j.split == split]
+            raise BuildError(
+                f"{out / MANIFEST} holds {len(left)} finished job(s) of split {split} that this build does not "
+                f"ask for (e.g. {left[0][1]}); a build is extended, never shrunk: ask for all of them (a count of "
+                f"at least {max(o for o, _ in left) + 1}, not {len(mine)}) or use another folder")
 
 
 def _check_jobs(jobs: Sequence[Job]) -> None:
@@ -478,7 +582,7 @@ def _check_jobs(jobs: Sequence[Job]) -> None:
     if twice:
         raise BuildError(f"job keys must be unique; repeated: {', '.join(sorted(twice)[:5])}")
     for split in {j.split for j in jobs}:
-        if not split or "/" in split or split.startswith(".") or split in (SETTINGS, MANIFEST, SPLITS):
+        if not plain_name(split) or split in (SETTINGS, MANIFEST, SPLITS):
             raise BuildError(f"a split's folder name must be a plain name, got {split!r}")
 
 
@@ -509,10 +613,13 @@ def build(out: Path, jobs: Sequence[Job], backend: Backend | None = None, option
     out.mkdir(parents=True, exist_ok=True)
     with _Lock(out):
         _check_settings(out, options)
-        manifest = Manifest(out / MANIFEST)
+        manifest = Manifest(out / MANIFEST, repair=True)
+        _check_scope(out, manifest, jobs)
         run = uuid.uuid4().hex
         with _workers_lock(out, exclusive=True):  # waits for the job of any orphaned worker to end
-            _clean(out, manifest)
+            redone, dropped = _verify(out, manifest, jobs)
+            manifest.remove(redone + dropped)
+            _clean(out, manifest, {j.split for j in jobs} | {r["split"] for r in manifest})
             write_atomic(out / PARTIAL / RUN, run)
         todo = [j for j in jobs if j.key not in manifest]
         workers = backend.workers if backend is not None else 1
@@ -531,7 +638,10 @@ def build(out: Path, jobs: Sequence[Job], backend: Backend | None = None, option
         manifest.sorted_rewrite(lambda r: (r["split"], r["order"], r["key"]))
         write_atomic(out / SPLITS, json.dumps(splits_document(manifest), indent=1, sort_keys=True) + "\n")
         shutil.rmtree(out / PARTIAL, ignore_errors=True)
-        return BuildReport(out, tuple(manifest[j.key] for j in jobs), len(todo), seconds, workers)
+        asked = {j.split for j in jobs}
+        others = dict(sorted(Counter(r["split"] for r in manifest if r["trial"] and r["split"] not in asked).items()))
+        return BuildReport(out, tuple(manifest[j.key] for j in jobs), len(todo), seconds, workers,
+                           tuple(redone), tuple(dropped), others, tuple(manifest.rejected))
 
 
 def build_split(out: Path, split: str, count: int, backend: Backend | None = None,

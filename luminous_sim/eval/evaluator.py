@@ -6,12 +6,23 @@ Each episode is one job: the split's entry played in a `LuminousEnv` at ALFRED's
 agent stops, or a limit cuts it off. An entry whose episode cannot be drawn is an outcome too (`end`
 "unavailable", with its cause), never dropped. With an output folder every outcome is written as it
 finishes (`episodes/<split>-<index>.json`, atomically), so an interrupted evaluation resumes where it
-stopped; `run.json` records what the folder holds, and a folder of another evaluation is refused.
+stopped; `run.json` records what the folder holds, and a folder of another evaluation, or a non-empty one
+that holds no evaluation, is refused. On resume an episode file is read back only if it is what this
+evaluation writes (a regular file within `limits.MAX_EPISODE_FILE_BYTES`, every field checked, the job's
+own split entry); a damaged one (truncated, `[]`, `{}`, a field of the wrong kind, another episode's) is
+played again and overwritten, and counted in `EvalReport.replayed`.
+
+An agent that raises stops the evaluation (`PolicyError`). An agent that returns something that is not an
+action (None, an index outside the space, an unknown action, arguments the env cannot decode such as a
+malformed mask) ends its episode as `invalid_action` with cause `AGENT_FAULT` and the step and the env's
+message in `detail`; a mask that decodes but hits nothing is an ordinary failed action, as in ALFRED.
 """
 
 from __future__ import annotations
 
+import itertools
 import json
+import shutil
 from collections import Counter
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
@@ -24,14 +35,23 @@ from luminous_sim.assets.objio import write_atomic
 from luminous_sim.data.backends import Backend
 from luminous_sim.env import EnvConfig, EpisodeUnavailable, LuminousEnv
 from luminous_sim.errors import LuminousError
-from luminous_sim.eval.metrics import EpisodeOutcome, Metrics, metrics, metrics_by_type
+from luminous_sim.eval.metrics import AGENT_FAULT, EpisodeOutcome, Metrics, metrics, metrics_by_type
 from luminous_sim.eval.policies import Agent, PolicyError, check_policy, make_agent
 from luminous_sim.eval.workers import map_local, map_ordered
+from luminous_sim.limits import MAX_EPISODE_FILE_BYTES, MAX_EVAL_EPISODES
 from luminous_sim.splits import plus_split, split_entry
 
 EVAL_ENV: dict[str, Any] = {"width": 300, "height": 300, "max_steps": 1000, "max_failures": 10,
                             "verify_expert": True, "expert_in_info": False}
 """ALFRED's camera and limits; the expert is proved at reset (it gives L*, the path-length weight)."""
+EVAL_SETS = ("split", "cdf")
+"""Env options the evaluation sets itself for each episode (`--split`, the split's entries): a value for
+them in `env_kwargs` other than the evaluation's own is refused, never silently overridden."""
+NOT_AN_ACTION = frozenset({"invalid_argument", "unknown_action"})
+"""`info["failure_code"]`s that say the agent's output was not an action at all (see the module docstring)."""
+RUN_FILE = "run.json"
+EVAL_FILES = frozenset({RUN_FILE, "episodes", "report.json", "table.md", "metrics.png"})
+"""What an evaluation folder holds."""
 
 
 @dataclass(frozen=True)
@@ -60,6 +80,8 @@ class EvalReport:
     seed: int
     env_kwargs: dict[str, Any]
     outcomes: tuple[EpisodeOutcome, ...]
+    replayed: tuple[str, ...] = ()
+    """Episode files found damaged on resume and played again (each with why)."""
     per_type: dict[str, Metrics] = field(init=False)
     overall: Metrics = field(init=False)
 
@@ -106,17 +128,30 @@ def play(env: LuminousEnv, agent: Agent, split: str, index: int, seed: int = 0) 
                               cause=exc.cause, detail=exc.detail)
     assert env.episode is not None and env.episode.expert is not None, "the evaluation env proves the expert"
     steps, terminated, truncated = 0, False, False
+    fault = ""
     try:
         agent.reset(obs["instruction"], {**info, "episode_seed": own_seed})
-        while not (terminated or truncated):
-            action = agent.act(obs, info)
-            obs, _, terminated, truncated, info = env.step(action)
-            steps += 1
     except Exception as exc:
-        raise PolicyError(f"the agent raised on {split} episode {index} at step {steps}: "
-                          f"{type(exc).__name__}: {exc}") from exc
+        raise PolicyError(f"the agent raised on {split} episode {index} at reset: {type(exc).__name__}: {exc}") from exc
+    while not (terminated or truncated):
+        try:
+            action = agent.act(obs, info)
+        except Exception as exc:
+            raise PolicyError(f"the agent raised on {split} episode {index} at step {steps}: "
+                              f"{type(exc).__name__}: {exc}") from exc
+        fault = _not_an_action(action)
+        if not fault:
+            obs, _, terminated, truncated, info = env.step(action)
+            if info.get("failure_code") in NOT_AN_ACTION:
+                fault = str(info.get("error") or info["failure_code"])
+        steps += 1
+        if fault:
+            fault = f"step {steps}: the agent returned {_shown(action)}, not an action of the env: {fault}"
+            break
     stopped = terminated and not info["success"]
-    if info["success"]:
+    if fault:
+        end = "invalid_action"
+    elif info["success"]:
         end = "success"
     elif stopped:
         end = "stop"
@@ -124,20 +159,83 @@ def play(env: LuminousEnv, agent: Agent, split: str, index: int, seed: int = 0) 
         end = "max_failures" if info["failures"] >= env.config.max_failures else "max_steps"
     met, total = info["goal_conditions"]
     return EpisodeOutcome(split, index, entry.task_type, entry.floor_plan, entry.layout, end=end,
-                          success=bool(info["success"]), goal_conditions=(int(met), int(total)),
+                          success=bool(info["success"]) and not fault, goal_conditions=(int(met), int(total)),
                           steps=steps - stopped, expert_length=len(env.episode.expert.actions),
-                          failures=int(info["failures"]), instruction=str(obs["instruction"]))
+                          failures=int(info["failures"]), instruction=str(obs["instruction"]),
+                          cause=AGENT_FAULT if fault else "", detail=fault)
+
+
+def _not_an_action(action: Any) -> str:
+    """Why `action` cannot be an action of any Luminous env (checked before the env sees it), or ""."""
+    if isinstance(action, np.ndarray) and action.shape == () and action.dtype.kind in "iu":
+        return ""
+    if isinstance(action, (int, np.integer)) and not isinstance(action, bool):
+        return ""
+    if isinstance(action, dict) and isinstance(action.get("action"), str):
+        return ""
+    return "an action is an index of the action space or a dict with an 'action' name"
+
+
+def _shown(action: Any) -> str:
+    text = repr(action)
+    return text if len(text) <= 80 else text[:77] + "..."
 
 
 _RUNNERS: dict[tuple[str, str], tuple[LuminousEnv, Agent]] = {}
 """This process's env and agent per (policy, env options): a user's agent is made once per worker."""
 
 
+def read_outcome(path: Path, split: str, index: int) -> EpisodeOutcome:
+    """The outcome an earlier run wrote at `path` for episode `index` of `split`.
+
+    Raises:
+        LuminousError: not a regular file (a folder, a link, a device), over `MAX_EPISODE_FILE_BYTES`, not
+            JSON, a field missing or of the wrong kind, or another episode's outcome; the message names the
+            file and the field.
+    """
+    if path.is_symlink() or not path.is_file():
+        kind = "a symbolic link" if path.is_symlink() else "a folder" if path.is_dir() else "not a regular file"
+        raise LuminousError(f"{path}: {kind}; expected an episode outcome file")
+    size = path.stat().st_size
+    if size > MAX_EPISODE_FILE_BYTES:
+        raise LuminousError(f"{path}: {size} bytes; an episode outcome file holds at most {MAX_EPISODE_FILE_BYTES} "
+                            "(luminous_sim.limits.MAX_EPISODE_FILE_BYTES)")
+    try:
+        data = json.loads(path.read_bytes())
+    except (ValueError, RecursionError) as exc:
+        raise LuminousError(f"{path}: not JSON ({exc})") from None
+    outcome = EpisodeOutcome.from_dict(data, str(path))
+    entry = split_entry(split, index)
+    mine = (split, index, entry.task_type, entry.floor_plan, entry.layout)
+    for name, value, want in zip(("split", "index", "task_type", "floor_plan", "layout"),
+                                 (outcome.split, outcome.index, outcome.task_type, outcome.floor_plan, outcome.layout),
+                                 mine):
+        if value != want:
+            raise LuminousError(f"{path}: field {name!r}: {value!r}, but the file is episode {index} of {split}, "
+                                f"whose {name} is {want!r}")
+    return outcome
+
+
 def run_job(job: EpisodeJob) -> EpisodeOutcome:
-    """One job's outcome: read back from the output folder if an earlier run finished it, else played."""
+    """One job's outcome: read back from the output folder if an earlier run finished it (and its file is
+    intact), else played."""
+    return _run_job(job)[0]
+
+
+def _run_job(job: EpisodeJob) -> tuple[EpisodeOutcome, str]:
+    """`run_job`, and why the file an earlier run left was damaged and the episode played again ("": it was
+    not)."""
     path = job.path
-    if path is not None and path.is_file():
-        return EpisodeOutcome.from_dict(json.loads(path.read_text()))
+    damaged = ""
+    if path is not None and (path.exists() or path.is_symlink()):
+        try:
+            return read_outcome(path, job.split, job.index), ""
+        except LuminousError as exc:
+            damaged = str(exc)
+            if path.is_dir() and not path.is_symlink():
+                shutil.rmtree(path)
+            else:
+                path.unlink()
     key = (job.policy, job.env_json)
     if key not in _RUNNERS:
         env = LuminousEnv(**json.loads(job.env_json))
@@ -149,22 +247,42 @@ def run_job(job: EpisodeJob) -> EpisodeOutcome:
         env.close()  # frees the episode's simulator; the next reset builds a new one
     if path is not None:
         write_atomic(path, json.dumps(outcome.to_dict(), indent=1) + "\n")
-    return outcome
+    return outcome, damaged
 
 
 def _claim(out_dir: Path, run: dict[str, Any]) -> None:
-    """Record what `out_dir` holds, or refuse a folder that holds another evaluation."""
-    path = out_dir / "run.json"
-    if path.is_file():
+    """Record what `out_dir` holds, or refuse a folder that holds another evaluation, one that is not empty
+    and holds no evaluation, and one whose files are not what an evaluation writes (a folder or a link
+    where `run.json` belongs, `episodes` a link or a file)."""
+    out_dir = Path(out_dir)
+    if out_dir.exists() and not out_dir.is_dir():
+        raise LuminousError(f"{out_dir}: exists and is not a folder; expected an evaluation's output folder")
+    path = out_dir / RUN_FILE
+    episodes = out_dir / "episodes"
+    if episodes.is_symlink() or (episodes.exists() and not episodes.is_dir()):
+        raise LuminousError(f"{episodes}: {'a symbolic link' if episodes.is_symlink() else 'not a folder'}; "
+                            "expected the folder of episode outcomes")
+    if path.exists() or path.is_symlink():
+        if path.is_symlink() or not path.is_file():
+            raise LuminousError(f"{path}: {'a symbolic link' if path.is_symlink() else 'not a regular file'}; "
+                                "expected the evaluation's run.json")
         try:
-            old = json.loads(path.read_text())
-        except json.JSONDecodeError as exc:
+            old = json.loads(path.read_bytes()[:MAX_EPISODE_FILE_BYTES])
+        except (ValueError, RecursionError) as exc:
             raise LuminousError(f"{path}: not JSON ({exc}); is this an evaluation folder?") from None
+        if not isinstance(old, dict):
+            raise LuminousError(f"{path}: expected a JSON object (what the folder's evaluation ran), "
+                                f"got {type(old).__name__}")
         if old != run:
             diff = ", ".join(f"{k} {old.get(k)!r} (asked {run[k]!r})" for k in run if old.get(k) != run[k])
             raise LuminousError(f"{out_dir} holds another evaluation ({diff}); choose another output folder")
-    else:
-        write_atomic(path, json.dumps(run, indent=1) + "\n")
+        return
+    others = sorted(p.name for p in out_dir.iterdir() if p.name not in EVAL_FILES) if out_dir.is_dir() else []
+    if others:
+        more = " ..." if len(others) > 5 else ""
+        raise LuminousError(f"{out_dir} is not empty and holds no evaluation ({RUN_FILE} missing; it has "
+                            f"{', '.join(others[:5])}{more}); choose a new or empty folder")
+    write_atomic(path, json.dumps(run, indent=1) + "\n")
 
 
 def evaluate(policy: str, split: str, episodes: int | Iterable[int], *, seed: int = 0, workers: int = 1,
@@ -191,11 +309,25 @@ def evaluate(policy: str, split: str, episodes: int | Iterable[int], *, seed: in
     """
     check_policy(policy)
     plus_split(split)
-    indices: Sequence[int] = range(episodes) if isinstance(episodes, int) else list(episodes)
+    if isinstance(episodes, int) and not 1 <= episodes <= MAX_EVAL_EPISODES:
+        raise LuminousError(f"episodes: expected 1 to {MAX_EVAL_EPISODES} (luminous_sim.limits.MAX_EVAL_EPISODES), "
+                            f"got {episodes}")
+    indices: Sequence[int] = range(episodes) if isinstance(episodes, int) else list(
+        itertools.islice(episodes, MAX_EVAL_EPISODES + 1))
     if not indices:
         raise LuminousError("episodes: expected at least one episode")
+    if len(indices) > MAX_EVAL_EPISODES:
+        raise LuminousError(f"episodes: more than {MAX_EVAL_EPISODES} (luminous_sim.limits.MAX_EVAL_EPISODES)")
     for i in indices:
         split_entry(split, i)
+    for name in EVAL_SETS:
+        value = (env_kwargs or {}).get(name)
+        if name == "split" and value not in (None, "", split):
+            raise LuminousError(f"env option split={value!r}: the evaluation plays split {split} (its --split); "
+                                "leave the env option out or give the same split")
+        if name == "cdf" and value not in (None, "", [], ()):
+            raise LuminousError(f"env option cdf={value!r}: an evaluation plays the entries of split {split}, "
+                                "not CDF scenes; leave the env option out")
     kwargs = {**EVAL_ENV, **(env_kwargs or {})}
     config = EnvConfig.from_kwargs(kwargs)
     if not config.verify_expert:
@@ -204,10 +336,12 @@ def evaluate(policy: str, split: str, episodes: int | Iterable[int], *, seed: in
     if out_dir is not None:
         _claim(out_dir, {"policy": policy, "split": split, "seed": seed, "env": config.to_kwargs()})
     jobs = [EpisodeJob(policy, split, i, seed, env_json, None if out_dir is None else str(out_dir)) for i in indices]
-    outcomes = []
-    runs = map_local(run_job, jobs, workers) if backend is None else map_ordered(run_job, jobs, backend)
-    for outcome in runs:
+    outcomes, replayed = [], []
+    runs = map_local(_run_job, jobs, workers) if backend is None else map_ordered(_run_job, jobs, backend)
+    for outcome, damaged in runs:
         outcomes.append(outcome)
+        if damaged:
+            replayed.append(damaged)
         if progress is not None:
             progress(outcome)
-    return EvalReport(policy, split, seed, config.to_kwargs(), tuple(outcomes))
+    return EvalReport(policy, split, seed, config.to_kwargs(), tuple(outcomes), tuple(replayed))

@@ -23,9 +23,14 @@ from typing import Any
 from luminous_sim.errors import LuminousError
 from luminous_sim.vocab import ALFRED_TASK_TYPES
 
-ENDS: tuple[str, ...] = ("success", "stop", "max_steps", "max_failures", "unavailable")
-"""How an episode ended: the goal held, the agent stopped, ALFRED's step or failed-action limit, or the
-entry's episode could not be drawn."""
+ENDS: tuple[str, ...] = ("success", "stop", "max_steps", "max_failures", "invalid_action", "unavailable")
+"""How an episode ended: the goal held, the agent stopped, ALFRED's step or failed-action limit, the agent
+returned something that is not an action (the agent's fault, `AGENT_FAULT`), or the entry's episode could
+not be drawn."""
+AGENT_FAULT = "agent_fault"
+"""The `cause` of an `invalid_action` end: the agent returned None, an index outside the action space, an
+unknown action name or arguments the env cannot decode (a malformed mask); `detail` says which, at which
+step. A mask that decodes but hits nothing is an ordinary failed action, as in ALFRED."""
 
 
 @dataclass(frozen=True)
@@ -48,12 +53,15 @@ class EpisodeOutcome:
     failures: int = 0
     instruction: str = ""
     cause: str = ""
-    """Why an unavailable entry has no episode (`env.UNAVAILABLE_CAUSES`); "" otherwise."""
+    """Why an unavailable entry has no episode (`env.UNAVAILABLE_CAUSES`), `AGENT_FAULT` for an
+    `invalid_action` end; "" otherwise."""
     detail: str = ""
 
     def __post_init__(self) -> None:
         if self.end not in ENDS:
             raise LuminousError(f"episode outcome end: {self.end!r}; expected one of {', '.join(ENDS)}")
+        if self.success != (self.end == "success"):
+            raise LuminousError(f"{self.split} episode {self.index}: success {self.success} with end {self.end!r}")
         met, total = self.goal_conditions
         if self.drawn and (total < 1 or not 0 <= met <= total or self.expert_length < 1 or self.steps < 0):
             raise LuminousError(f"{self.split} episode {self.index}: inconsistent outcome (goal conditions "
@@ -75,8 +83,40 @@ class EpisodeOutcome:
         return out
 
     @classmethod
-    def from_dict(cls, data: dict[str, Any]) -> EpisodeOutcome:
-        return cls(**{**data, "goal_conditions": tuple(data["goal_conditions"])})
+    def from_dict(cls, data: Any, where: str = "episode outcome") -> EpisodeOutcome:
+        """An outcome from its `to_dict` form, every field checked (`where` names the source in errors).
+
+        Raises:
+            LuminousError: not an object, a field missing, unknown or of the wrong kind, or an inconsistent
+                outcome; the message names `where` and the field.
+        """
+        if not isinstance(data, dict):
+            raise LuminousError(f"{where}: expected a JSON object (an episode outcome), got {type(data).__name__}")
+        unknown = sorted(set(data) - set(_FIELDS))
+        if unknown:
+            raise LuminousError(f"{where}: unknown field {unknown[0]!r}; expected {', '.join(_FIELDS)}")
+        for name, kind in _FIELDS.items():
+            if name not in data:
+                if name in _REQUIRED:
+                    raise LuminousError(f"{where}: field {name!r} is missing")
+                continue
+            value = data[name]
+            if name == "goal_conditions":
+                ok = (isinstance(value, list | tuple) and len(value) == 2
+                      and all(isinstance(v, int) and not isinstance(v, bool) and v >= 0 for v in value))
+            elif kind is int:
+                ok = isinstance(value, int) and not isinstance(value, bool) and value >= 0
+            else:
+                ok = isinstance(value, kind)
+            if not ok:
+                shown = repr(value) if len(repr(value)) <= 60 else repr(value)[:57] + "..."
+                want = "[met, total], two whole numbers >= 0" if name == "goal_conditions" else (
+                    "a whole number >= 0" if kind is int else f"a {kind.__name__}")
+                raise LuminousError(f"{where}: field {name!r}: expected {want}, got {shown}")
+        try:
+            return cls(**{**data, "goal_conditions": tuple(data.get("goal_conditions", (0, 0)))})
+        except LuminousError as exc:
+            raise LuminousError(f"{where}: {exc}") from None
 
 
 @dataclass(frozen=True)
@@ -124,3 +164,9 @@ def type_average(per_type: dict[str, Metrics], name: str) -> float | None:
     """The mean over task types of one metric (the paper's Table 4 "Average" row); None if none has it."""
     values = [getattr(m, name) for m in per_type.values() if getattr(m, name) is not None]
     return sum(values) / len(values) if values else None
+
+
+_FIELDS: dict[str, type] = {"split": str, "index": int, "task_type": str, "floor_plan": str, "layout": int,
+                            "end": str, "success": bool, "goal_conditions": tuple, "steps": int,
+                            "expert_length": int, "failures": int, "instruction": str, "cause": str, "detail": str}
+_REQUIRED = ("split", "index", "task_type", "floor_plan", "layout", "end")

@@ -11,12 +11,14 @@ a layout from elsewhere leaves them out and is matched to the asset catalog by c
 from __future__ import annotations
 
 import json
+from collections import Counter
 from pathlib import Path
 from typing import Annotated, Any, Final, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, model_validator
 
 from luminous_sim.errors import LuminousError
+from luminous_sim.limits import MAX_INPUT_BYTES, MAX_LAYOUT_OBJECTS
 from luminous_sim.rooms.shell import FixturePlan, RoomType
 
 LAYOUT_FORMAT: Final = "luminous-layout/1"
@@ -127,7 +129,7 @@ class Layout(_Model):
     @model_validator(mode="after")
     def _check_refs(self) -> Layout:
         ids = [o.id for o in self.objects]
-        dup = sorted({i for i in ids if ids.count(i) > 1})
+        dup = sorted(i for i, n in Counter(ids).items() if n > 1)
         if dup:
             raise ValueError(f"objects: duplicate ids {', '.join(dup)}")
         known = set(ids)
@@ -169,6 +171,10 @@ def from_data(data: Any, where: str = "layout") -> Layout:
     """A layout from parsed JSON; LayoutError names `where` and each bad field."""
     if isinstance(data, dict) and data.get("format", LAYOUT_FORMAT) != LAYOUT_FORMAT:
         raise LayoutError(f"{where}: format: expected {LAYOUT_FORMAT!r}, got {data.get('format')!r}")
+    objects = data.get("objects") if isinstance(data, dict) else None
+    if isinstance(objects, list) and len(objects) > MAX_LAYOUT_OBJECTS:
+        raise LayoutError(f"{where}: objects: {len(objects)} objects; a layout may hold at most {MAX_LAYOUT_OBJECTS} "
+                          "(luminous_sim.limits.MAX_LAYOUT_OBJECTS)")
     try:
         return Layout.model_validate(data)
     except ValidationError as exc:
@@ -179,6 +185,14 @@ def from_data(data: Any, where: str = "layout") -> Layout:
 def load(path: Path) -> Layout:
     """A layout file; LayoutError names the file and field."""
     path = Path(path)
-    if not path.is_file():
+    if not path.exists():
         raise LayoutError(f"{path}: no such layout file")
+    if path.is_dir():
+        raise LayoutError(f"{path}: a folder; expected a layout file")
+    if not path.is_file():
+        raise LayoutError(f"{path}: not a regular file (a device or a pipe?); expected a layout file")
+    size = path.stat().st_size
+    if size > MAX_INPUT_BYTES:
+        raise LayoutError(f"{path}: {size} bytes; a layout file may hold at most {MAX_INPUT_BYTES} "
+                          "(luminous_sim.limits.MAX_INPUT_BYTES)")
     return loads(path.read_text(encoding="utf-8"), where=str(path))

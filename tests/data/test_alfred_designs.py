@@ -49,10 +49,11 @@ def test_a_design_is_read_from_a_real_traj_data_file(shared_alfred):
 def test_a_malformed_design_names_the_file_and_field(tmp_path):
     bad = tmp_path / "traj_data.json"
     bad.write_text(json.dumps({"task_type": "pick_and_place_simple", "scene": {"floor_plan": "FloorPlan1"}}))
-    with pytest.raises(DesignError, match=r"traj_data.json: missing field 'pddl_params'"):
+    with pytest.raises(DesignError, match=r"traj_data.json: missing key 'pddl_params'"):
         read_design(bad)
     bad.write_text(json.dumps({"task_type": "pick_and_place_simple", "pddl_params": {"object_target": "Apple"},
-                               "scene": {"floor_plan": "FloorPlan2", "scene_num": 1}}))
+                               "scene": {"floor_plan": "FloorPlan2", "scene_num": 1},
+                               "plan": {"high_pddl": [], "low_actions": []}}))
     with pytest.raises(DesignError, match="does not match scene.scene_num"):
         read_design(bad)
 
@@ -193,3 +194,37 @@ def test_a_pan_put_in_a_fridge_lands_where_it_can_be_taken_out_again(shared_alfr
 def test_designs_that_failed_before_are_solved(shared_alfred, task_dir):
     result = solve_design(_design(shared_alfred, task_dir), seed=0)
     assert result.success, (result.cause, result.message)
+
+
+def _traj_cases(valid: dict) -> dict[str, tuple[object, str]]:
+    """Damaged copies of a real traj_data.json and the message each must give (issue 27)."""
+    no_plan = json.loads(json.dumps(valid))
+    del no_plan["plan"]
+    nan_pose = json.loads(json.dumps(valid))
+    nan_pose["scene"]["object_poses"][0]["position"]["x"] = float("nan")
+    return {"list": ([valid], "expected a JSON object at the top, got list"),
+            "no plan": (no_plan, "missing key 'plan.high_pddl'"),
+            "NaN pose": (nan_pose, r"scene.object_poses\[0\].position.x: expected a finite number, got NaN")}
+
+
+def test_the_design_reader_refuses_what_alfred_parse_refuses(shared_alfred, tmp_path):
+    """One reader for `luminous alfred parse` and `dataset build --from-alfred`: a JSON list, a missing plan,
+    a NaN pose, a folder or a device are refused by both, naming the file and the key."""
+    from luminous_sim.data.alfred_parser import AlfredParseError, parse_alfred
+
+    valid = json.loads(next((shared_alfred / "valid_seen" / "pick_and_place_simple-SprayBottle-None-GarbageCan-409")
+                             .glob("*/traj_data.json")).read_text())
+    for name, (data, message) in _traj_cases(valid).items():
+        path = tmp_path / name.replace(" ", "_") / "traj_data.json"
+        path.parent.mkdir()
+        path.write_text(json.dumps(data))
+        with pytest.raises(DesignError, match=f"traj_data.json: {message}"):
+            read_design(path)
+        with pytest.raises(AlfredParseError, match=f"traj_data.json: {message}"):
+            parse_alfred(path)
+    folder = tmp_path / "folder" / "traj_data.json"
+    folder.mkdir(parents=True)
+    with pytest.raises(DesignError, match="traj_data.json: a folder; expected a traj_data.json file"):
+        read_design(folder)
+    with pytest.raises(DesignError, match="/dev/null: not a regular file"):
+        read_design("/dev/null")

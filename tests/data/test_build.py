@@ -29,6 +29,7 @@ from luminous_sim.data import (
     split_jobs,
 )
 from luminous_sim.data.build import MANIFEST, PARTIAL, RUN, SPLITS, _run_job, _Work, run_job
+from luminous_sim.data.manifest import _line
 from luminous_sim.splits import split_entry
 
 REPO = Path(__file__).resolve().parents[2]
@@ -179,19 +180,26 @@ def test_a_worker_of_a_build_run_that_is_over_does_nothing(tmp_path):
 def test_manifest_drops_a_torn_last_line_and_refuses_a_broken_one(tmp_path):
     path = tmp_path / MANIFEST
     m = Manifest(path)
-    m.append({"key": "a", "status": "built"})
+    m.append(_failed("a"))
     with open(path, "ab") as fh:
         fh.write(b'{"key": "b", "sta')  # a kill during the write
     m = Manifest(path)
     assert "a" in m and "b" not in m and len(m) == 1
-    m.append({"key": "b", "status": "failed"})
+    m.append(_failed("b"))
     assert [json.loads(line)["key"] for line in path.read_text().splitlines()] == ["a", "b"]
-    path.write_text('{"key": "a"}\nnot json\n{"key": "b"}\n')
+    a, b = (_line(_failed(k)) for k in "ab")
+    path.write_text(f'{a}not json\n{b}')
     with pytest.raises(ManifestError, match="line 2 is not a JSON record"):
         Manifest(path)
-    path.write_text('{"key": "a", "x": 1}\n{"key": "a", "x": 2}\n')
+    path.write_text(a + _line({**_failed("a"), "cause": "other"}))
     with pytest.raises(ManifestError, match="second, different record for 'a'"):
         Manifest(path)
+
+
+def _failed(key: str) -> dict[str, object]:
+    """A manifest record of a failed job, as a build writes it."""
+    return {"key": key, "split": "mine", "order": 0, "task_type": "pick_and_place_simple", "status": "failed",
+            "stage": "task", "cause": "no Mug here", "trial": None}
 
 
 @dataclass(frozen=True)

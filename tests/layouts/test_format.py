@@ -97,3 +97,23 @@ def test_not_json_and_missing_files_are_layout_errors(tmp_path):
         loads("{", where="x.json")
     with pytest.raises(LayoutError, match="no such layout file"):
         layouts.load(tmp_path / "missing.json")
+
+
+def test_layout_size_and_kind_of_file_are_bounded(tmp_path):
+    """Issue 27: a layout of more objects than limits.MAX_LAYOUT_OBJECTS is refused before validation, in one
+    line naming the file and field; a folder or a device is named as such."""
+    import json as _json
+
+    import pytest as _pytest
+
+    from luminous_sim.layouts.model import LayoutError, load
+    from luminous_sim.limits import MAX_LAYOUT_OBJECTS
+
+    big = tmp_path / "big.json"
+    big.write_text(_json.dumps({"room": {}, "objects": [{}] * (MAX_LAYOUT_OBJECTS + 1)}))
+    with _pytest.raises(LayoutError, match=f"big.json: objects: {MAX_LAYOUT_OBJECTS + 1} objects; a layout may hold"):
+        load(big)
+    with _pytest.raises(LayoutError, match="a folder; expected a layout file"):
+        load(tmp_path)
+    with _pytest.raises(LayoutError, match="/dev/null: not a regular file"):
+        load("/dev/null")

@@ -1,0 +1,22 @@
+"""The stated limits on what users give the `luminous` command and the library: counts, sizes and files.
+
+Each is checked before any work starts, and a value beyond it is refused with a one-line message that
+names the option or the file and field, and the limit. They are generous for real use (the paper's
+splits hold 1,405 and 435 trajectories; ALFRED's largest room holds under 150 objects) and small enough
+that the job lists, layouts and scenes they allow fit in memory and finish in reasonable time.
+"""
+
+from __future__ import annotations
+
+MAX_BUILD_JOBS = 100_000
+"""Episodes (or ALFRED designs) one `dataset build` call asks for (`--count`)."""
+MAX_EVAL_EPISODES = 100_000
+"""Episodes one evaluation plays (`luminous eval --episodes`)."""
+MAX_LAYOUT_OBJECTS = 1_000
+"""Objects (furniture and small objects) in one imported or read layout."""
+MAX_CDF_INSTANCES = 1_000
+"""Object instances one CDF may ask for (the sum of every object's count)."""
+MAX_INPUT_BYTES = 64 * 1024 * 1024
+"""Largest JSON file read as a layout, a layout-importer input or an evaluation's episode file."""
+MAX_EPISODE_FILE_BYTES = 1024 * 1024
+"""Largest evaluation outcome file (`episodes/<split>-<index>.json`) read back on resume."""
