@@ -13,7 +13,7 @@ from typing import Any
 import gymnasium
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, given, settings
+from hypothesis import HealthCheck, event, given, settings
 from hypothesis import strategies as st
 
 import luminous_sim  # noqa: F401  (registers the ids)
@@ -74,6 +74,16 @@ def test_step_after_stop_raises_reset_needed_and_leaves_the_world_alone(env, sce
     assert env.world.agent == pose and env._steps == steps
     env.reset(seed=1, options={"scene": scene})
     assert env.step(env.actions.index("RotateLeft"))[2:4] == (False, False)  # a reset starts it again
+
+
+def test_through_gymnasiums_wrappers_too(env, scene):
+    from gymnasium.wrappers import OrderEnforcing, PassiveEnvChecker
+
+    wrapped = OrderEnforcing(PassiveEnvChecker(env))
+    wrapped.reset(seed=1, options={"scene": scene})
+    assert wrapped.step(env.actions.index("Stop"))[2]
+    with pytest.raises(ResetNeeded, match=r"reset\(\)"):
+        wrapped.step(0)
 
 
 def test_step_after_truncation_raises_reset_needed(env, scene):
@@ -312,7 +322,7 @@ ACTIONS = st.one_of(
 )
 
 
-@settings(max_examples=12, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
+@settings(max_examples=25, deadline=None, suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(junk=OPTIONS, actions=st.lists(ACTIONS, max_size=9))
 def test_random_options_and_actions_raise_only_the_documented_errors(env, scene, junk, actions):
     options = {"scene": scene, **junk}
@@ -322,6 +332,7 @@ def test_random_options_and_actions_raise_only_the_documented_errors(env, scene,
         with pytest.raises(LuminousError):
             env.reset(seed=0, options=options)
         checked = None
+        event("options refused")
     if checked is None or checked.source != "scene":  # another source costs a scene generation: not here
         options = {"scene": scene}
     env.reset(seed=0, options=options)
@@ -330,6 +341,7 @@ def test_random_options_and_actions_raise_only_the_documented_errors(env, scene,
         if ended:
             with pytest.raises(ResetNeeded):
                 env.step(action)
+            event("a step after the end")
             continue
         obs, reward, terminated, truncated, _ = env.step(action)
         assert env.observation_space.contains(obs) and np.isfinite(reward)
