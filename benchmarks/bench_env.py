@@ -140,7 +140,7 @@ def env_process_memory(job: tuple[str, int]) -> tuple[float, float, int]:
     """In a fresh process: RSS after the imports, RSS after a reset and 50 steps, and the worlds held then."""
     env_id, seed = job
     before = _rss_mb()
-    env = gymnasium.make(env_id)
+    env = gymnasium.make(env_id, **LIMITS)  # 50 steps in one episode (a step after its end would raise)
     env.reset(seed=seed)
     rng = np.random.default_rng(seed)
     for a in _actions("nav", int(env.action_space.n), rng, 50):

@@ -20,13 +20,14 @@ from luminous_sim.lazy import lazy_getattr
 
 if TYPE_CHECKING:
     from luminous_sim.env.actions import ActionTable
-    from luminous_sim.env.alfred_env import LuminousEnv
+    from luminous_sim.env.alfred_env import LuminousEnv, ResetNeeded
     from luminous_sim.env.config import EnvConfig
     from luminous_sim.env.episodes import UNAVAILABLE_CAUSES, EpisodeUnavailable
     from luminous_sim.env.expert import Expert
     from luminous_sim.env.kinds import TASK_KINDS, TaskKind
     from luminous_sim.env.oracle_policy import OraclePolicy
     from luminous_sim.env.registration import EnvEntry, load_entries, register_envs
+    from luminous_sim.env.reset_options import RESET_OPTIONS, ResetOptions, reset_options
     from luminous_sim.env.rewards import RewardConfig
     from luminous_sim.env.wrappers import (
         ActionFeedback,
@@ -39,13 +40,14 @@ if TYPE_CHECKING:
 
 _WHERE = {
     "ActionTable": "actions",
-    "LuminousEnv": "alfred_env",
+    "LuminousEnv": "alfred_env", "ResetNeeded": "alfred_env",
     "EnvConfig": "config",
     "EpisodeUnavailable": "episodes", "UNAVAILABLE_CAUSES": "episodes",
     "Expert": "expert",
     "TaskKind": "kinds", "TASK_KINDS": "kinds",
     "OraclePolicy": "oracle_policy",
     "EnvEntry": "registration", "load_entries": "registration", "register_envs": "registration",
+    "RESET_OPTIONS": "reset_options", "ResetOptions": "reset_options", "reset_options": "reset_options",
     "RewardConfig": "rewards",
     "InstructionTokens": "wrappers", "ActionFeedback": "wrappers", "ActionSubset": "wrappers",
     "FailureLimitEnds": "wrappers", "NewPlaceBonus": "wrappers",
@@ -53,6 +55,7 @@ _WHERE = {
 }
 
 __all__ = [
+    "RESET_OPTIONS",
     "TASK_KINDS",
     "UNAVAILABLE_CAUSES",
     "ActionFeedback",
@@ -67,11 +70,14 @@ __all__ = [
     "LuminousEnv",
     "NewPlaceBonus",
     "OraclePolicy",
+    "ResetNeeded",
+    "ResetOptions",
     "RewardConfig",
     "SceneRepeat",
     "TaskKind",
     "load_entries",
     "register_envs",
+    "reset_options",
 ]
 
 

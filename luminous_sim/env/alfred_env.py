@@ -19,7 +19,8 @@ An invalid action (a failed one, an index outside the space, a malformed dict) c
 a failure; it never raises. `info["failure_code"]` says why (a `FailureCode` value, None on success).
 
 Episodes end (`terminated`) on success or Stop, and are cut off (`truncated`) after `max_steps` steps or
-`max_failures` failed actions. `info`: `success`, `goal_conditions` (met, total), `subgoal` (the first
+`max_failures` failed actions; `step` after that raises `ResetNeeded` (call `reset`), as before the first
+`reset`. `info`: `success`, `goal_conditions` (met, total), `subgoal` (the first
 condition not yet met), `task_type`, `failures`, `failure_code`, `error`, and with `expert_in_info` the
 expert's next action (`expert_action`, in this env's action form).
 
@@ -28,7 +29,9 @@ expert's next action (`expert_action`, in this env's action form).
 of an evaluation split (or `split=` at construction and `options={"index": 3}`; see `EnvConfig.split`), and
 raises `EpisodeUnavailable` (with its cause) for an entry whose layout or task cannot be drawn;
 `options={"cdf": path, "scene_seed": s}` (or `cdf=` at construction) generates the scene from a CDF file,
-whose task section, if any, is the goal (see `luminous_sim.env.cdf_scenes`).
+whose task section, if any, is the goal (see `luminous_sim.env.cdf_scenes`). The options are checked before
+anything happens (`luminous_sim.env.reset_options`): an unknown key, options of two sources, or a value of
+the wrong type is a one-line `LuminousError` naming the option and what was expected.
 
 A world is built once per scene and reused while episodes stay in that scene (a repeated `options["scene"]`,
 split entries sharing a layout): `World.reset_to_start` puts it back as built in about a millisecond instead
@@ -50,10 +53,11 @@ from gymnasium import spaces
 from luminous_sim.env.actions import ALFRED_ACTIONS, INTERACTIONS, NAVIGATION, STOP_NAMES, ActionTable, EmptySlot
 from luminous_sim.env.cdf_scenes import cdf_episode, cdf_paths
 from luminous_sim.env.config import EnvConfig
-from luminous_sim.env.episodes import Episode, draw_episode, requested_entry, split_episode
+from luminous_sim.env.episodes import Episode, check_rooms, draw_episode, requested_entry, split_episode
 from luminous_sim.env.expert import Expert
 from luminous_sim.env.history import Sent
 from luminous_sim.env.replay import episode_data, episode_from_data, history_data, replay
+from luminous_sim.env.reset_options import reset_options
 from luminous_sim.env.rewards import RewardConfig
 from luminous_sim.env.shaping import RewardShaper
 from luminous_sim.env.worlds import WorldPool
@@ -67,6 +71,12 @@ MAX_INSTRUCTION = 1000
 DEPTH_FAR = 20.0
 """The camera's far plane (metres): the largest depth."""
 POSE_BOUND = 1000.0
+
+
+class ResetNeeded(LuminousError, gymnasium.error.ResetNeeded):
+    """`step()` (or an observation) asked for with no episode going: before the first `reset()`, or after the
+    episode ended (terminated or truncated); call `reset()`. Both a `LuminousError` and gymnasium's
+    `ResetNeeded`."""
 
 
 def _type_index(object_type: str | None) -> int:
@@ -95,9 +105,10 @@ class LuminousEnv(gymnasium.Env):
 
     def __init__(self, render_mode: str | None = None, **kwargs: Any):
         if render_mode is not None and render_mode not in self.metadata["render_modes"]:
-            raise ValueError(f"render_mode {render_mode!r}: expected one of {self.metadata['render_modes']}")
+            raise LuminousError(f"render_mode {render_mode!r}: expected one of {self.metadata['render_modes']}")
         self.render_mode = render_mode
         self.config = EnvConfig.from_kwargs(kwargs)
+        check_rooms(self.config)
         self.rewards = RewardConfig.of(self.config.reward_mode, self.config.reward)
         c = self.config
         self.actions = ActionTable(c.width, c.height, c.grid, c.object_slots if c.targets == "objects" else 0)
@@ -131,38 +142,44 @@ class LuminousEnv(gymnasium.Env):
         self._slots: list[str] = []
         self._steps = 0
         self._failures = 0
+        self._ended = False
 
     # ------------------------------------------------------------------ gymnasium API
 
     def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None):
-        """A new episode: a scene (generated, `options["scene"]`, or a split's entry), a goal that fits it,
-        the first view."""
+        """A new episode: a scene (generated, `options["scene"]`, a split's entry or a CDF's), a goal that fits
+        it, the first view. The options are checked first (`reset_options`): a bad one is a `LuminousError`
+        naming it, and nothing changes."""
+        checked = reset_options(options, self.config)
         super().reset(seed=seed)
-        options = options or {}
         rng = np.random.default_rng(int(self.np_random.integers(2**63)))
         self._close_world()
         self.episode = None
-        entry = requested_entry(self.config, options, rng)
-        paths = cdf_paths(self.config, options)
-        if options.get("scene") is not None and (entry is not None or options.get("cdf")):
-            raise LuminousError("reset options: give one of 'scene', 'split'/'index' or 'cdf'")
+        entry = requested_entry(self.config, checked, rng)
+        paths = cdf_paths(self.config, checked)
         if entry is not None:
             self.episode, self.world = split_episode(self.config, entry, self.worlds)
-        elif paths and options.get("scene") is None:
-            self.episode, self.world = cdf_episode(self.config, paths, rng, self.worlds, options.get("scene_seed"))
+        elif paths:
+            self.episode, self.world = cdf_episode(self.config, paths, rng, self.worlds, checked.scene_seed)
         else:
-            self.episode, self.world = draw_episode(self.config, rng, self.worlds, scene=options.get("scene"))
+            self.episode, self.world = draw_episode(self.config, rng, self.worlds, scene=checked.scene)
         self._start(self.episode, self.world)
         return self._observation(), {**self._info(None, ""), "redraws": self.episode.redraws}
 
     def _start(self, episode: Episode, world: World) -> None:
-        self.history, self._steps, self._failures = [], 0, 0
+        self.history, self._steps, self._failures, self._ended = [], 0, 0, False
         self.expert = Expert.for_episode(episode, self.worlds)
         self.shaper.start(episode.goal, world, episode.expert)
 
     def step(self, action: Any):
-        """One action (a discrete index or an ALFRED dict); see the module docstring."""
+        """One action (a discrete index or an ALFRED dict); see the module docstring.
+
+        Raises:
+            ResetNeeded: before the first `reset()`, or after the episode ended (the world is left as it is).
+        """
         world = self._world()
+        if self._ended:
+            raise ResetNeeded("step() after the episode ended (terminated or truncated): call reset() first")
         self._steps += 1
         api, code, error = self._decode(action)
         stopped = api is not None and api["action"] in STOP_NAMES
@@ -177,6 +194,7 @@ class LuminousEnv(gymnasium.Env):
         terminated = self.shaper.success or stopped
         truncated = not terminated and (self._steps >= self.config.max_steps
                                         or self._failures >= self.config.max_failures)
+        self._ended = terminated or truncated
         return self._observation(), reward, terminated, truncated, self._info(code, error)
 
     def render(self) -> np.ndarray | None:
@@ -202,7 +220,7 @@ class LuminousEnv(gymnasium.Env):
         with the object id (the target covers no grid point, or has no slot); Stop when the expert has
         nothing left to do."""
         if self.expert is None:
-            raise gymnasium.error.ResetNeeded("call reset() before expert_action()")
+            raise ResetNeeded("call reset() before expert_action()")
         api = self.expert.next_api(self.history)
         action = self.action_for(api)
         self.expert.suggested(len(self.history), action)
@@ -235,7 +253,7 @@ class LuminousEnv(gymnasium.Env):
     def _world(self, caller: str = "step()") -> World:
         """The episode's world; ResetNeeded before the first reset."""
         if self.world is None or self.episode is None:
-            raise gymnasium.error.ResetNeeded(f"call reset() before {caller}")
+            raise ResetNeeded(f"call reset() before {caller}")
         return self.world
 
     def _decode(self, action: Any) -> tuple[dict[str, Any] | None, FailureCode | None, str]:
@@ -330,6 +348,7 @@ class LuminousEnv(gymnasium.Env):
             "episode": None if self.episode is None else episode_data(self.episode),
             "history": history_data(self.history),
             "counters": (self._steps, self._failures, self.shaper.reached),
+            "ended": self._ended,
         }
 
     def __setstate__(self, state: dict[str, Any]) -> None:
@@ -343,4 +362,5 @@ class LuminousEnv(gymnasium.Env):
         self.history = replay(world, state["history"], self.shaper)
         self._steps, self._failures, reached = state["counters"]
         self.shaper.resume(world, reached)
+        self._ended = bool(state.get("ended", False))
         self._observation()  # the object slots the agent saw last

@@ -18,7 +18,6 @@ from __future__ import annotations
 from collections.abc import Sequence
 from functools import lru_cache
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 
@@ -26,6 +25,7 @@ from luminous_sim.cdf import AgentPoseSpec, ChallengeDefinition
 from luminous_sim.env.config import EnvConfig
 from luminous_sim.env.episodes import Episode, _prove, draw_goal, set_up_world
 from luminous_sim.env.goals import Goal, TaskGoal
+from luminous_sim.env.reset_options import ResetOptions
 from luminous_sim.env.worlds import WorldPool
 from luminous_sim.errors import CDFError, InfeasibleSceneError, LuminousError
 from luminous_sim.scene import Scene
@@ -33,23 +33,12 @@ from luminous_sim.tasks import TaskError, TaskSamplingError, check_initial, scen
 from luminous_sim.world import AgentPose, World
 
 
-def cdf_paths(config: EnvConfig, options: dict[str, Any]) -> tuple[str, ...]:
-    """The CDF files a reset draws from: `options["cdf"]` (a path or a list), else `config.cdf`."""
-    asked = options.get("cdf")
-    if asked is None:
-        return config.cdf
-    paths = (asked,) if isinstance(asked, (str, Path)) else tuple(asked)
-    if not paths or not all(isinstance(p, (str, Path)) for p in paths):
-        raise LuminousError(f"reset options: 'cdf' must be a CDF file path or a list of them, got {asked!r}")
-    for p in paths:
-        check_cdf_path(str(p), "reset options: cdf")
-    return tuple(str(p) for p in paths)
-
-
-def check_cdf_path(path: str, where: str) -> None:
-    """A clear error for a CDF path that names no file."""
-    if not Path(path).is_file():
-        raise LuminousError(f"{where}: {path}: no such CDF file")
+def cdf_paths(config: EnvConfig, options: ResetOptions) -> tuple[str, ...]:
+    """The CDF files a reset draws from: `options.cdf` (checked by `reset_options`), else `config.cdf` unless
+    the options name another source (a scene or a split)."""
+    if options.cdf:
+        return options.cdf
+    return config.cdf if options.source == "" else ()
 
 
 @lru_cache(maxsize=32)

@@ -6,27 +6,59 @@ fields; a wrong name or type is a `LuminousError` that names the field and what 
 
 from __future__ import annotations
 
+import math
+import os
 from dataclasses import asdict, dataclass, field, fields
 from pathlib import Path
 from typing import Any
 
 from luminous_sim.env.kinds import TASK_KINDS
+from luminous_sim.env.rewards import RewardConfig
 from luminous_sim.errors import LuminousError
 from luminous_sim.vocab import ALFRED_TASK_TYPES, ROOM_TYPES
 
 REWARD_MODES: tuple[str, ...] = ("dense", "sparse")
 TARGET_KINDS: tuple[str, ...] = ("points", "objects")
 
+IMAGE_SIZE: tuple[int, int] = (16, 1024)
+"""Least and most pixels a side (`width`, `height`). Rendering cost grows with the pixel count (TinyRenderer:
+about 44 frames/s at ALFRED's 300x300, so about 4 at 1024x1024, and its buffers grow alike); under 16 a
+side, ALFRED's visibility threshold and a grid of interaction points no longer mean anything."""
+MAX_GRID = 32
+"""Most interaction points a side (`grid`; a 32x32 grid is 7 x 1024 interaction actions)."""
+MAX_OBJECT_SLOTS = 256
+"""Most visible-object slots (`object_slots`; a generated room holds under 200 objects)."""
+MAX_STEPS = 1_000_000
+"""Most steps an episode may be given (`max_steps`, `max_failures`; ALFRED: 1000 and 10)."""
+MAX_SCENE_ATTEMPTS = 100
+"""Most scenes (or tasks) one reset tries (`scene_attempts`; each may cost a CSSG run and a plan)."""
+MAX_REWARD = 1e6
+"""Largest magnitude of a reward term (`reward` overrides; ALFRED's are within 5)."""
+MAX_NAMES = 64
+"""Most entries in `task_types` or `room_types` (an entry may repeat to weight the draw)."""
+MAX_CDF_FILES = 10_000
+"""Most CDF files in `cdf` (each is checked to exist when the env is made)."""
+
 
 @dataclass(frozen=True)
 class EnvConfig:
     """One environment's definition (ALFRED's camera, limits and reward configuration by default).
 
+    Every field is checked when the config is made (so when the env is made); a value of the wrong type or
+    out of its range is a one-line `LuminousError` naming the field and what was expected. Limits (the
+    module's constants): `width`, `height` 16..1024 (`IMAGE_SIZE`); `grid` 1..32 and at most the image's
+    shorter side (`MAX_GRID`); `object_slots` 1..256 (`MAX_OBJECT_SLOTS`); `max_steps`, `max_failures`
+    1..1,000,000 (`MAX_STEPS`); `scene_attempts` 1..100 (`MAX_SCENE_ATTEMPTS`); `min_visible_pixels`
+    0..width x height; `reward` values finite, within +-1e6 (`MAX_REWARD`); `task_types`, `room_types` at
+    most 64 entries (`MAX_NAMES`); `cdf` at most 10,000 files (`MAX_CDF_FILES`). Room types that cannot go
+    with the task types (ALFRED's table) are refused when the env is made (`episodes.check_rooms`).
+
     Attributes:
         task_types: the task kinds an episode draws from (uniformly): ALFRED's types, `goto_object`,
             `pickup_object` (`luminous_sim.env.kinds.TASK_KINDS`).
-        room_types: the room types scenes are generated in; empty means every room type the drawn task
-            type allows (ALFRED's table).
+        room_types: the room types scenes are generated in, each drawn task type in those of them it allows
+            (ALFRED's table); empty means every room type the drawn task type allows. Every task type must
+            be allowed in one of them, and every one of them must allow some task type.
         width: image width in pixels.
         height: image height in pixels.
         targets: what an interaction action targets: `points` (a k x k grid of image points) or `objects`
@@ -89,49 +121,56 @@ class EnvConfig:
     def __post_init__(self) -> None:
         for f in fields(self):
             value = getattr(self, f.name)
-            if f.name == "cdf" and isinstance(value, str):
-                object.__setattr__(self, "cdf", (value,))
+            if f.name == "cdf" and isinstance(value, (str, os.PathLike)):
+                object.__setattr__(self, "cdf", (os.fspath(value),))
             elif f.name in ("task_types", "room_types", "cdf"):
-                if isinstance(value, str) or not all(isinstance(v, str) for v in value):
-                    raise LuminousError(f"env config {f.name}: expected a list of names, got {value!r}")
-                object.__setattr__(self, f.name, tuple(value))
+                object.__setattr__(self, f.name, _names(f.name, value, MAX_CDF_FILES if f.name == "cdf" else MAX_NAMES))
             elif f.name == "reward":
-                if not isinstance(value, dict) or not all(isinstance(v, (int, float)) for v in value.values()):
-                    raise LuminousError(f"env config reward: expected a table of numbers, got {value!r}")
+                _check_reward(value)
             elif f.type == "bool" and not isinstance(value, bool):
-                raise LuminousError(f"env config {f.name}: expected true or false, got {value!r}")
+                raise LuminousError(f"env config {f.name}: expected true or false, got {short_repr(value)}")
             elif f.type == "int" and (isinstance(value, bool) or not isinstance(value, int)):
-                raise LuminousError(f"env config {f.name}: expected an integer, got {value!r}")
+                raise LuminousError(f"env config {f.name}: expected an integer, got {short_repr(value)}")
             elif f.type == "str" and not isinstance(value, str):
-                raise LuminousError(f"env config {f.name}: expected a string, got {value!r}")
+                raise LuminousError(f"env config {f.name}: expected a string, got {short_repr(value)}")
         self._check_values()
 
     def _check_values(self) -> None:
         bad = [t for t in self.task_types if t not in TASK_KINDS]
         if not self.task_types or bad:
-            raise LuminousError(f"env config task_types: {bad or 'empty'}; expected some of {', '.join(TASK_KINDS)}")
+            raise LuminousError(f"env config task_types: {short_repr(bad) if bad else 'empty'}; expected some of "
+                                f"{', '.join(TASK_KINDS)}")
         bad = [r for r in self.room_types if r not in ROOM_TYPES]
         if bad:
-            raise LuminousError(f"env config room_types: {bad}; expected some of {', '.join(ROOM_TYPES)}")
+            raise LuminousError(f"env config room_types: {short_repr(bad)}; expected some of {', '.join(ROOM_TYPES)}")
         if self.targets not in TARGET_KINDS:
-            raise LuminousError(f"env config targets: {self.targets!r}; expected one of {TARGET_KINDS}")
+            raise LuminousError(f"env config targets: {short_repr(self.targets)}; expected one of {TARGET_KINDS}")
         if self.reward_mode not in REWARD_MODES:
-            raise LuminousError(f"env config reward_mode: {self.reward_mode!r}; expected one of {REWARD_MODES}")
-        for name in ("width", "height", "grid", "object_slots", "max_steps", "max_failures", "scene_attempts"):
-            if getattr(self, name) < 1:
-                raise LuminousError(f"env config {name}: expected a positive integer, got {getattr(self, name)}")
+            raise LuminousError(f"env config reward_mode: {short_repr(self.reward_mode)}; expected one of "
+                                f"{REWARD_MODES}")
+        RewardConfig.of(self.reward_mode, self.reward)  # unknown terms
+        limits = {"width": IMAGE_SIZE, "height": IMAGE_SIZE, "grid": (1, MAX_GRID),
+                  "object_slots": (1, MAX_OBJECT_SLOTS), "max_steps": (1, MAX_STEPS), "max_failures": (1, MAX_STEPS),
+                  "scene_attempts": (1, MAX_SCENE_ATTEMPTS),
+                  "min_visible_pixels": (0, self.width * self.height)}
+        for name, (low, high) in limits.items():
+            value = getattr(self, name)
+            if not low <= value <= high:
+                raise LuminousError(f"env config {name}: expected an integer in {low}..{high}, got {value}")
         if self.step_instructions and not self.verify_expert:
             raise LuminousError("env config step_instructions: needs verify_expert (they describe the expert's plan)")
         if self.split:
             from luminous_sim.splits import PLUS_SPLITS  # only when asked: `import luminous_sim` stays cheap
 
             if self.split not in PLUS_SPLITS:
-                raise LuminousError(f"env config split: {self.split!r}; expected one of {', '.join(PLUS_SPLITS)}")
+                raise LuminousError(f"env config split: {short_repr(self.split)}; expected one of "
+                                    f"{', '.join(PLUS_SPLITS)}")
         if self.cdf and self.split:
             raise LuminousError("env config: give split or cdf, not both (where would the scenes come from?)")
         missing = [p for p in self.cdf if not Path(p).is_file()]
         if missing:
-            raise LuminousError(f"env config cdf: {', '.join(missing)}: no such CDF file")
+            raise LuminousError(f"env config cdf: {', '.join(missing[:3])}{' ...' if len(missing) > 3 else ''}: "
+                                "no such CDF file")
         if self.grid > min(self.width, self.height):
             raise LuminousError(f"env config grid: {self.grid} points a side do not fit a {self.width}x{self.height}"
                                 " image")
@@ -158,3 +197,33 @@ class EnvConfig:
         if self.min_visible_pixels > 0:
             return self.min_visible_pixels
         return max(1, round(10 * self.width * self.height / (300 * 300)))
+
+
+def _names(name: str, value: Any, most: int) -> tuple[str, ...]:
+    """A list of names (strings; for `cdf`, paths too) as a tuple, or a LuminousError naming the field."""
+    if not isinstance(value, (list, tuple)) or not all(isinstance(v, (str, os.PathLike)) for v in value) \
+            or (name != "cdf" and not all(isinstance(v, str) for v in value)):
+        raise LuminousError(f"env config {name}: expected a list of {'paths' if name == 'cdf' else 'names'}, "
+                            f"got {short_repr(value)}")
+    if len(value) > most:
+        raise LuminousError(f"env config {name}: expected at most {most} entries, got {len(value)}")
+    out = tuple(os.fspath(v) for v in value)
+    if not all(isinstance(v, str) for v in out):
+        raise LuminousError(f"env config {name}: expected text paths, got {short_repr(value)}")
+    return out
+
+
+def _check_reward(value: Any) -> None:
+    """`reward`: a table of term name -> a finite number within +-MAX_REWARD."""
+    if not isinstance(value, dict) or not all(isinstance(k, str) for k in value):
+        raise LuminousError(f"env config reward: expected a table of term name -> number, got {short_repr(value)}")
+    for k, v in value.items():
+        if isinstance(v, bool) or not isinstance(v, (int, float)) or not math.isfinite(v) or abs(v) > MAX_REWARD:
+            raise LuminousError(f"env config reward.{k}: expected a finite number within +-{MAX_REWARD:g}, "
+                                f"got {short_repr(v)}")
+
+
+def short_repr(value: Any) -> str:
+    """A value for a one-line message (long ones cut)."""
+    text = repr(value).replace("\n", " ")
+    return text if len(text) <= 80 else text[:77] + "..."

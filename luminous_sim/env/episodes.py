@@ -25,6 +25,7 @@ import numpy as np
 from luminous_sim.env.config import EnvConfig
 from luminous_sim.env.goals import ExpertPlan, Goal
 from luminous_sim.env.kinds import set_up, task_kind
+from luminous_sim.env.reset_options import ResetOptions
 from luminous_sim.env.worlds import WorldPool
 from luminous_sim.errors import InfeasibleSceneError, LuminousError
 from luminous_sim.scene import Scene
@@ -75,10 +76,47 @@ def set_up_world(world: World, task_type: str) -> tuple[str, ...]:
 
 
 def room_types(config: EnvConfig, task_type: str) -> list[str]:
-    """The room types an episode of the kind may be generated in (`TaskKind.rooms`, the config's choice)."""
+    """The room types an episode of the kind may be generated in (`TaskKind.rooms`, the config's choice).
+
+    Raises:
+        LuminousError: the config's room types leave none (`check_rooms` refuses such a config up front).
+    """
     allowed = list(task_kind(task_type).rooms())
     chosen = [r for r in allowed if not config.room_types or r in config.room_types]
-    return chosen or allowed
+    if not chosen:
+        raise LuminousError(_unfit([task_type], config.room_types))
+    return chosen
+
+
+def check_rooms(config: EnvConfig) -> None:
+    """Refuse room types that cannot go with the task types (each kind's `rooms()`, ALFRED's table for its
+    types): a task type played in none of them, or a room type no task type is played in. Nothing is
+    checked without room types (each task type then goes to every room it allows).
+
+    Raises:
+        LuminousError: one line naming the task types that do not fit, the room types and the rooms each
+            allows (or the room types no task type uses).
+    """
+    if not config.room_types:
+        return
+    chosen = set(config.room_types)
+    types = list(dict.fromkeys(config.task_types))
+    unfit = [t for t in types if not chosen.intersection(task_kind(t).rooms())]
+    if unfit:
+        raise LuminousError(_unfit(unfit, config.room_types))
+    used = {r for t in types for r in task_kind(t).rooms()}
+    idle = [r for r in dict.fromkeys(config.room_types) if r not in used]
+    if idle:
+        raise LuminousError(f"env config room_types: no task of {', '.join(types)} is played in "
+                            f"{', '.join(idle)}; drop {'it' if len(idle) == 1 else 'them'}")
+
+
+def _unfit(task_types: list[str], rooms: tuple[str, ...]) -> str:
+    """The message for task types played in none of the config's room types."""
+    where = "; ".join(f"{t} is played only in {', '.join(task_kind(t).rooms())}" for t in task_types)
+    return (f"env config room_types: {', '.join(rooms)} allow{'s' if len(rooms) == 1 else ''} no "
+            f"{' or '.join(task_types)} task ({where}); add one of those room types or drop the task type from "
+            "task_types")
 
 
 def draw_goal(world: World, scene: Scene, task_type: str, rng: np.random.Generator) -> Goal:
@@ -167,25 +205,23 @@ def split_round(name: str) -> int:
     return len(TASK_TYPES) * len(split.structures) * split.layouts
 
 
-def requested_entry(config: EnvConfig, options: dict[str, Any], rng: np.random.Generator) -> SplitEntry | None:
-    """The split entry a reset asks for (`options["split"]`, else `config.split`; `options["index"]`, else one
-    drawn from `rng` over a round of the split), or None for an episode generated on the fly.
+def requested_entry(config: EnvConfig, options: ResetOptions, rng: np.random.Generator) -> SplitEntry | None:
+    """The split entry a reset asks for (`options.split`, else `config.split`; `options.index`, else one drawn
+    from `rng` over a round of the split), or None for an episode from elsewhere (a scene or a CDF the
+    options name, the env's CDFs, or generated on the fly).
 
     Raises:
-        LuminousError: an index without a split, a bad index, or an entry of a task type the env does not play.
+        LuminousError: an entry of a task type the env does not play.
     """
-    name = options.get("split") or config.split
-    index = options.get("index")
-    if not name:
-        if index is not None:
-            raise LuminousError("reset options: 'index' names an episode of a split; give 'split' too "
-                                "(or make the env with split=...)")
+    if options.source not in ("", "split"):
         return None
+    name = options.split or config.split
+    if not name:
+        return None
+    index = options.index
     if index is None:
         index = int(rng.integers(split_round(name)))
-    if isinstance(index, bool) or not isinstance(index, (int, np.integer)):
-        raise LuminousError(f"reset options: 'index' must be a whole number, got {index!r}")
-    entry = split_entry(name, int(index))
+    entry = split_entry(name, index)
     if entry.task_type not in config.task_types:
         raise LuminousError(f"{name} episode {index} is a {entry.task_type} task; this env plays only "
                             f"{', '.join(config.task_types)}")

@@ -43,6 +43,8 @@ def test_a_cdf_task_is_the_goal_with_its_initial_state_and_agent_start():
     assert info["redraws"] >= 0 and env.episode.expert is not None
     for action in env.episode.expert.actions:  # the proved plan reaches the CDF's goal
         _, _, terminated, _, info = env.step(env.action_for(action))
+        if terminated:  # the goal may hold before the plan's last action (a step after the end raises)
+            break
     assert terminated and info["success"]
     env.close()
 

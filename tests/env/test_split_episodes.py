@@ -12,6 +12,7 @@ import luminous_sim  # noqa: F401  (registers the ids)
 from luminous_sim.env import UNAVAILABLE_CAUSES, EnvConfig, EpisodeUnavailable
 from luminous_sim.env import episodes as episodes_module
 from luminous_sim.env.episodes import requested_entry, split_round
+from luminous_sim.env.reset_options import ResetOptions, reset_options
 from luminous_sim.errors import InfeasibleSceneError, LuminousError
 from luminous_sim.splits import split_entry
 from luminous_sim.tasks import TaskSamplingError
@@ -39,26 +40,27 @@ def test_a_split_entry_gives_its_structure_layout_and_task_the_same_every_time()
 def test_a_plain_reset_of_a_split_env_draws_an_entry_over_a_round():
     config = EnvConfig(split="S+")
     assert split_round("S+") == 7 * 40 and split_round("U+") == 7 * 16
-    drawn = [requested_entry(config, {}, np.random.default_rng(s)) for s in range(20)]
-    assert drawn == [requested_entry(config, {}, np.random.default_rng(s)) for s in range(20)]
+    drawn = [requested_entry(config, ResetOptions(), np.random.default_rng(s)) for s in range(20)]
+    assert drawn == [requested_entry(config, ResetOptions(), np.random.default_rng(s)) for s in range(20)]
     assert all(e is not None and e.split == "S+" and 0 <= e.index < split_round("S+") for e in drawn)
     assert len({e.index for e in drawn if e is not None}) > 10
-    assert requested_entry(EnvConfig(), {}, np.random.default_rng(0)) is None   # generated on the fly
-    assert requested_entry(EnvConfig(), {"split": "U+", "index": np.int64(3)}, np.random.default_rng(0)) == \
-        split_entry("U+", 3)
+    assert requested_entry(EnvConfig(), ResetOptions(), np.random.default_rng(0)) is None   # generated on the fly
+    options = reset_options({"split": "U+", "index": np.int64(3)}, EnvConfig())
+    assert requested_entry(EnvConfig(), options, np.random.default_rng(0)) == split_entry("U+", 3)
 
 
 @pytest.mark.parametrize("kwargs, options, message", [
     ({}, {"index": 3}, "give 'split' too"),
-    ({"split": "U+"}, {"index": True}, "'index' must be a whole number"),
-    ({"split": "U+"}, {"index": -1}, "is negative"),
-    ({}, {"split": "V+", "index": 0}, "unknown split 'V+'"),
+    ({"split": "U+"}, {"index": True}, "index: expected a whole number"),
+    ({"split": "U+"}, {"index": -1}, "index: expected a whole number in 0.*got -1"),
+    ({}, {"split": "V+", "index": 0}, "split: expected one of S+, U+, U+test, got 'V+'"),
     ({"task_types": ["pick_and_place_simple"]}, {"split": "U+", "index": 2},
      "U+ episode 2 is a look_at_obj_in_light task; this env plays only pick_and_place_simple"),
 ])
 def test_bad_split_requests_are_clear_errors(kwargs, options, message):
+    config = EnvConfig(**kwargs)
     with pytest.raises(LuminousError, match=message.replace("+", r"\+")):
-        requested_entry(EnvConfig(**kwargs), options, np.random.default_rng(0))
+        requested_entry(config, reset_options(options, config), np.random.default_rng(0))
 
 
 def test_the_config_refuses_an_unknown_split():

@@ -88,6 +88,9 @@ def test_the_expert_replans_in_kept_worlds_with_the_same_advice():
     first = a.reset(seed=6, options={"scene": scene})[1]
     assert first == b.reset(seed=6, options={"scene": scene})[1]
     for action in (1, 1, 0, 3, 2):  # off the expert's path: it replans in a shadow world
-        assert a.step(action)[1:] == b.step(action)[1:]
+        step = a.step(action)
+        assert step[1:] == b.step(action)[1:]
+        if step[2] or step[3]:  # the goal came into view (a step after the end raises)
+            break
     assert a.expert.replans == b.expert.replans >= 1
     a.close(), b.close()
