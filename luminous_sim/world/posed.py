@@ -128,7 +128,8 @@ def _joints(world: World, loaded: LoadedAsset) -> tuple[PosedJoint, ...]:
     out = []
     for j in loaded.entry.joints:
         index = loaded.joint_index.get(j["name"])
-        value = 0.0 if index is None or j["kind"] == "fixed" else float(world.client.getJointState(loaded.body, index)[0])
+        moving = index is not None and j["kind"] != "fixed"
+        value = float(world.client.getJointState(loaded.body, index)[0]) if moving else 0.0
         out.append(PosedJoint(j["name"], j["kind"], j["role"], j["parent"], j["child"], _v(j["origin"]), _v(j["axis"]),
                               float(j.get("lower", 0.0)), float(j.get("upper", 0.0)), value))
     return tuple(out)
@@ -185,4 +186,5 @@ def posed_scene(world: World) -> PosedScene:
             {key: (float(rgb[0]), float(rgb[1]), float(rgb[2]), float(loaded.alphas.get(key, rgb[3])))
              for key, rgb in loaded.colors.items()},
             (_v(lo), _v(hi))))
-    return PosedScene(world.scene.room.name, world.scene.seed, tuple(objects), _structure(world), abs(GRAVITY), TIME_STEP)
+    scene = world.scene
+    return PosedScene(scene.room.name, scene.seed, tuple(objects), _structure(world), abs(GRAVITY), TIME_STEP)
