@@ -38,3 +38,14 @@ def test_slicing_at_set_up_is_refused_once_the_episode_started(changed: Scene) -
         w.step("RotateLeft")
         with pytest.raises(LuminousError, match="set_up_sliced is scene set-up"):
             w.set_up_sliced(["anything"])
+
+
+def test_hidden_state_visuals_are_left_out(posed) -> None:
+    from luminous_sim.export.meshes import visual_parts
+
+    hidden = 0
+    for obj in posed.objects:
+        shown = {(p.link, int(p.name.rsplit("_", 1)[1])) for p in visual_parts(obj)}
+        assert shown == {key for key, rgba in obj.colours.items() if rgba[3] > 0}, obj.object_id
+        hidden += sum(rgba[3] == 0 for rgba in obj.colours.values())
+    assert hidden > 0  # the kitchen has switched-off appliances and clean dishes: their "on"/"dirty" visuals
