@@ -31,6 +31,7 @@ SUBCOMMAND_MODULES: tuple[str, ...] = (
     "luminous_sim.cli.dataset_cmd",
     "luminous_sim.cli.demo_cmd",
     "luminous_sim.cli.eval_cmd",
+    "luminous_sim.cli.export_cmd",
     "luminous_sim.cli.generate_cmd",
     "luminous_sim.cli.layout_cmd",
     "luminous_sim.cli.rooms_cmd",

@@ -13,6 +13,8 @@ from luminous_sim.errors import Failure, FailureCode
 from luminous_sim.states import effects as fx
 from luminous_sim.states import rules
 from luminous_sim.states.model import WorldState
+from luminous_sim.states.tables import DEFAULT_SLICE_COUNTS, SLICE_OF
+from luminous_sim.vocab import abilities
 from luminous_sim.world.articulation import move_joint
 from luminous_sim.world.asset_loader import show_state
 from luminous_sim.world.doors import hits_agent, swept_boxes
@@ -57,6 +59,21 @@ class Interactions:
         self.state = rules.apply(self.state, [fx.SetState(oid, "isDirty", dirty)]) \
             if self.state.objects[oid].isDirty != dirty else self.state
         show_state(self.world.client, loaded, "dirty", dirty)
+
+    def set_sliced(self, oid: str) -> None:
+        """Slice an object without a knife, in the pure state and the physics (scene set-up only); an object
+        that is not sliceable, already sliced or not in the world is left alone."""
+        st = self.state.objects.get(oid)
+        if oid not in self.world.built.objects or st is None or st.isSliced \
+                or not abilities(st.object_type).sliceable:
+            return
+        effects: list[fx.Effect] = [fx.SetState(oid, "isSliced", True)]
+        if st.object_type in SLICE_OF:
+            count = self.state.slice_counts.get(oid, DEFAULT_SLICE_COUNTS.get(st.object_type, 1))
+            effects.append(fx.Slice(oid, SLICE_OF[st.object_type], count))
+        self._apply_physical("SliceObject", effects, oid, None)
+        self.state = rules.apply(self.state, effects)
+        self._settle()
 
     # ------------------------------------------------------------------ dispatch
 

@@ -39,6 +39,8 @@ class BuiltScene:
     outdoors: list[int] = field(default_factory=list)
     """The outdoors as drawn (the last of `overhead`): ground, sky and sky walls, axis-aligned boxes seen only
     through doorways and windows (see `world.portals`)."""
+    slabs: list[int] = field(default_factory=list)
+    """The visible floor slabs (physical bodies; `floor` is the hidden slab under them all)."""
 
     def close(self) -> None:
         """Disconnect the scene's PyBullet client."""
@@ -159,7 +161,7 @@ def build_scene(scene: Scene, catalog: Catalog | None = None, client: BulletClie
         objects[obj.id] = loaded
     painted = paint_structure_last(client, slabs + walls + overhead) if structure_last else {}
     built = BuiltScene(client, scene, objects, floor, walls, list(painted.values()),
-                       [painted.get(b, b) for b in overhead], [painted.get(b, b) for b in outdoors])
+                       [painted.get(b, b) for b in overhead], [painted.get(b, b) for b in outdoors], slabs)
     settle(built, settle_steps)
     return built
 

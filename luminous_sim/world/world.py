@@ -134,6 +134,18 @@ class World:
             self.interactions.set_dirty(oid, True)
         self.invalidate_frame()
 
+    def set_up_sliced(self, object_ids: Iterable[str]) -> None:
+        """Scene set-up before the first action: slice these objects (a scene's `isSliced` initial state; no
+        knife needed), replacing each by its slices as `SliceObject` does. Not an action: it raises once the
+        episode has started (ids that are not sliceable objects in the world are skipped)."""
+        if self._started:
+            from luminous_sim.errors import LuminousError
+
+            raise LuminousError("set_up_sliced is scene set-up: call it before the first World.step")
+        for oid in object_ids:
+            self.interactions.set_sliced(oid)
+        self.invalidate_frame()
+
     def set_start(self, pose: AgentPose) -> None:
         """Scene set-up before the first action: the agent starts at `pose` (e.g. a CDF's `task.agent`). Not
         an action: it raises once the episode has started (`reset_to_start` puts the world back first)."""
