@@ -14,11 +14,18 @@ from luminous_sim.world.world import World
 from tests.world.conftest import obj
 
 
-def _views(world: World) -> list[AgentPose]:
-    """Every fourth reachable point, looking four ways, at three horizons (about 100 views)."""
+def _views(world: World, sample: int = 1) -> list[AgentPose]:
+    """Every fourth reachable point, looking four ways, at three horizons (about 100 views); with `sample`
+    k, every k-th of those."""
     pts = world.nav.points()[::4]
     return [AgentPose(float(x), float(y), rot, hor) for x, y in pts for rot in (0, 90, 180, 270)
-            for hor in (-30, 30, 60)][::3]
+            for hor in (-30, 30, 60)][::3][::sample]
+
+
+SIZES = [pytest.param(300, 3, id="300-sample"), pytest.param(64, 1, id="64"),
+         pytest.param(300, 1, id="300", marks=pytest.mark.slow)]
+"""Image size and view sample: at 300 px the fast suite checks a third of the views (30 s -> 10 s); the whole
+set is the `slow` case."""
 
 
 def _plain(world: World, pose: AgentPose, size: int):
@@ -26,13 +33,13 @@ def _plain(world: World, pose: AgentPose, size: int):
     return render(world.client, eye, eye + np.array(pose.view_direction()), width=size, height=size)
 
 
-@pytest.mark.parametrize("size", [300, 64])
-def test_culled_frames_equal_plain_frames(kitchen_scene, size):
+@pytest.mark.parametrize(("size", "sample"), SIZES)
+def test_culled_frames_equal_plain_frames(kitchen_scene, size, sample):
     with World(kitchen_scene, WorldConfig(width=size, height=size, settle_steps=120)) as w:
         fridge, mug = obj(kitchen_scene, "fridge"), obj(kitchen_scene, "mug")
         move_joint(w, w.interactions.state, fridge, True)  # a door link moved away from its loaded pose
         assert w.view().state.objects[mug].isDirty  # a shown state visual; hidden ones elsewhere
-        views = _views(w)
+        views = _views(w, sample)
         before = [_plain(w, pose, size) for pose in views]
         culled_any = 0
         for pose in views:
@@ -58,8 +65,8 @@ def _objects_only(world: World, seg: np.ndarray) -> np.ndarray:
     return np.where(np.isin(bodies, objects) | (seg < 0), seg, -2)
 
 
-@pytest.mark.parametrize("size", [300, 64])
-def test_optimised_world_renders_what_the_plain_one_renders(kitchen_scene, size):
+@pytest.mark.parametrize(("size", "sample"), SIZES)
+def test_optimised_world_renders_what_the_plain_one_renders(kitchen_scene, size, sample):
     """Culling and the structure painted last against neither, on the same views: identical RGB and depth,
     identical segmentation of every object; the settled physics is the same too."""
     plain_cfg = WorldConfig(width=size, height=size, settle_steps=120, cull=False, structure_last=False)
@@ -69,7 +76,7 @@ def test_optimised_world_renders_what_the_plain_one_renders(kitchen_scene, size)
         assert fast.built.painted_structure and not plain.built.painted_structure
         for oid in fast.built.objects:
             assert np.array_equal(fast.built.pose_of(oid)[0], plain.built.pose_of(oid)[0]), oid
-        for pose in _views(fast):
+        for pose in _views(fast, sample):
             for w in (fast, plain):
                 w.agent = pose
                 w.invalidate_frame()
