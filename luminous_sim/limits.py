@@ -20,3 +20,7 @@ MAX_INPUT_BYTES = 64 * 1024 * 1024
 """Largest JSON file read as a layout, a layout-importer input or an evaluation's episode file."""
 MAX_EPISODE_FILE_BYTES = 1024 * 1024
 """Largest evaluation outcome file (`episodes/<split>-<index>.json`) read back on resume."""
+MAX_CDF_RELATIONS = 5_000
+"""Relations one CDF may state (`scene.relations`)."""
+MAX_CDF_STEPS = 5_000
+"""Execution steps one CDF may hold (`execution`); ALFRED's longest expert plans hold a few hundred."""

@@ -15,6 +15,7 @@ from typing import Any
 import yaml
 from pydantic import ValidationError
 
+from luminous_sim.cdf.bounds import document_issues
 from luminous_sim.cdf.issues import CDFValidationError, Issue, from_validation_error
 from luminous_sim.cdf.reader import MAX_BYTES, check_tree, parse_text
 from luminous_sim.cdf.schema import CDF_VERSION, ChallengeDefinition
@@ -85,6 +86,9 @@ def from_document(doc: Any, source: str = "<document>") -> ChallengeDefinition:
         f" (in the document upgraded from cdf_version {version})" if version != CDF_VERSION else ""
     )
     current = upgrade(doc, source)
+    too_large = document_issues(current)
+    if too_large:
+        raise CDFValidationError(source, [Issue(i.path, i.message + note) for i in too_large])
     try:
         return ChallengeDefinition.model_validate(current, context={"source": source, "note": note})
     except ValidationError as exc:
