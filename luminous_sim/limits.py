@@ -24,3 +24,10 @@ MAX_CDF_RELATIONS = 5_000
 """Relations one CDF may state (`scene.relations`)."""
 MAX_CDF_STEPS = 5_000
 """Execution steps one CDF may hold (`execution`); ALFRED's longest expert plans hold a few hundred."""
+MAX_LAYOUT_SIDE_M = 30.0
+"""Longest side (m) of an object's box in a layout or an importer's input (the longest side of a CDF house)."""
+MAX_LAYOUT_COORDINATE_M = 1_000.0
+"""Largest |coordinate| (m) of a point in a layout or an importer's input (a 3D-FRONT house keeps its rooms in
+one frame, tens of metres across)."""
+MAX_LAYOUT_ROOM_SIDE_M = 30.0
+"""Longest side (m) of the bounding box of a layout's room outline."""
