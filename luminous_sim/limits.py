@@ -31,3 +31,11 @@ MAX_LAYOUT_COORDINATE_M = 1_000.0
 one frame, tens of metres across)."""
 MAX_LAYOUT_ROOM_SIDE_M = 30.0
 """Longest side (m) of the bounding box of a layout's room outline."""
+MAX_MINARI_EPISODES = 100_000
+"""Episodes one Minari export writes (`luminous dataset minari --episodes`)."""
+MAX_MINARI_SEEDS = 10 * MAX_MINARI_EPISODES + 10
+"""Seeds one Minari export may try (`--max-seeds`; its default for N episodes is 10 * N + 10)."""
+MAX_WORKERS = 256
+"""Worker processes (or Ray CPUs of a local cluster) one `dataset build` or `eval` starts (`--workers`)."""
+MAX_GENERATE_SCENES = 100_000
+"""Scenes one `luminous generate` call writes (`--count`)."""
