@@ -38,6 +38,16 @@ def format_of(path: str | os.PathLike[str]) -> str:
     return SUFFIXES[suffix]
 
 
+def _kind(mode: int) -> str:
+    if stat.S_ISDIR(mode):
+        return "a folder"
+    if stat.S_ISFIFO(mode):
+        return "a FIFO (named pipe)"
+    if stat.S_ISCHR(mode) or stat.S_ISBLK(mode):
+        return "a device"
+    return "not a regular file"
+
+
 def read_document(path: str | os.PathLike[str]) -> Any:
     """The plain data of a CDF file (not validated), read safely.
 
@@ -47,6 +57,12 @@ def read_document(path: str | os.PathLike[str]) -> Any:
         CDFValidationError: Missing, not a regular file, unreadable, over MAX_BYTES, or not valid YAML/JSON.
     """
     source = str(path)
+    try:
+        mode = os.stat(path).st_mode
+    except OSError:
+        mode = None  # reported below, where the file is opened
+    if mode is not None and not stat.S_ISREG(mode):
+        raise CDFValidationError(source, [Issue("", f"{_kind(mode)}; expected a regular CDF file")])
     fmt = format_of(path)
     try:
         # O_NONBLOCK: opening a FIFO with no writer returns at once instead of waiting for one
@@ -54,8 +70,7 @@ def read_document(path: str | os.PathLike[str]) -> Any:
         with open(fd, "rb") as fh:
             mode = os.fstat(fd).st_mode
             if not stat.S_ISREG(mode):
-                kind = "a folder" if stat.S_ISDIR(mode) else "a FIFO" if stat.S_ISFIFO(mode) else "not a regular file"
-                raise CDFValidationError(source, [Issue("", f"{kind}; expected a regular CDF file")])
+                raise CDFValidationError(source, [Issue("", f"{_kind(mode)}; expected a regular CDF file")])
             raw = fh.read(MAX_BYTES + 1)
     except OSError as exc:
         raise CDFValidationError(

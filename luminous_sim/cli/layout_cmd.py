@@ -111,12 +111,22 @@ def _run_import(args: argparse.Namespace) -> int:
 
 
 def _run_export(args: argparse.Namespace) -> int:
+    from pydantic import ValidationError
+
     from luminous_sim.assets.catalog import default_catalog
-    from luminous_sim.layouts import layout_of_scene
+    from luminous_sim.layouts import LayoutError, layout_of_scene
+    from luminous_sim.layouts.model import problems
     from luminous_sim.scene import Scene
 
-    layout = layout_of_scene(Scene.load(args.scene), default_catalog())
-    layout.save(args.out)
+    scene = Scene.load(args.scene)
+    try:
+        layout = layout_of_scene(scene, default_catalog())
+    except ValidationError as exc:
+        raise problems(exc, f"{args.scene} (as a layout)") from None
+    try:
+        layout.save(args.out)
+    except OSError as exc:
+        raise LayoutError(f"--out {args.out}: cannot write ({exc.strerror or exc})") from None
     print(f"wrote {args.out} ({len(layout.objects)} objects, room {layout.room.name})")
     return 0
 

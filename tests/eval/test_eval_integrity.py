@@ -129,7 +129,8 @@ def test_a_damaged_episode_file_is_named_and_played_again(tmp_path, fast, conten
 
 @pytest.mark.parametrize("edit, field", [
     (lambda r: r | {"steps": r["steps"] + 1}, "field 'check': .* is not the digest of the file's other fields"),
-    (lambda r: r | {"end": "success", "success": True, "goal_conditions": [1, 1]}, "field 'check': .* is not the digest"),
+    (lambda r: r | {"end": "success", "success": True, "goal_conditions": [1, 1]},
+     "field 'check': .* is not the digest"),
     (lambda r: {k: v for k, v in r.items() if k != "check"}, "field 'check' is missing"),
     (lambda r: r | {"check": 7}, "field 'check': 7 is not the digest"),
 ])
