@@ -111,18 +111,11 @@ def _run_import(args: argparse.Namespace) -> int:
 
 
 def _run_export(args: argparse.Namespace) -> int:
-    from pydantic import ValidationError
-
     from luminous_sim.assets.catalog import default_catalog
     from luminous_sim.layouts import LayoutError, layout_of_scene
-    from luminous_sim.layouts.model import problems
     from luminous_sim.scene import Scene
 
-    scene = Scene.load(args.scene)
-    try:
-        layout = layout_of_scene(scene, default_catalog())
-    except ValidationError as exc:
-        raise problems(exc, f"{args.scene} (as a layout)") from None
+    layout = layout_of_scene(Scene.load(args.scene), default_catalog(), where=f"{args.scene} (as a layout)")
     try:
         layout.save(args.out)
     except OSError as exc:
