@@ -229,7 +229,7 @@ def import_front(path: Path, room: str | None = None, model_info: Path | dict[st
         category = info.get(jid) or _optional_text(fields, f, "category", fpath) or _optional_text(
             fields, f, "title", fpath)
         if not category:
-            if info:
+            if model_info is not None:
                 ignored["furniture with no category in model_info"] = ignored.get(
                     "furniture with no category in model_info", 0) + 1
                 dropped.append({"entry": cpath, "ref": str(f["uid"]),
