@@ -84,3 +84,21 @@ def test_export_layout_names_a_scene_the_layout_format_refuses(tmp_path: Path,
     oid = data["objects"][chair]["id"]
     assert f"{path} (as a layout): objects[{chair}] ({oid}): states.isOpen: Apple is not openable" in err
     assert not (tmp_path / "l.json").exists()
+
+
+def test_bc_checkpoints_and_demo_folders_are_named(tmp_path: Path) -> None:
+    pytest.importorskip("torch")
+    from luminous_sim.bc.demos import load_demos
+    from luminous_sim.bc.train import load_checkpoint
+    from luminous_sim.errors import LuminousError
+
+    garbage = tmp_path / "bad.pt"
+    garbage.write_text('{"a": [1,')
+    for path, needle in [(tmp_path, "a folder; expected a behaviour-cloning checkpoint"),
+                         (Path("/dev/null"), "not a regular file (a device or a FIFO)"),
+                         (garbage, "not a behaviour-cloning checkpoint (")]:
+        with pytest.raises(LuminousError) as err:
+            load_checkpoint(path)
+        assert str(err.value).startswith(f"{path}: {needle}") and "\n" not in str(err.value), str(err.value)
+    with pytest.raises(LuminousError, match="bad.pt: not a folder; expected the demonstrations folder"):
+        load_demos(garbage)
