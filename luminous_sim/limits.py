@@ -20,3 +20,22 @@ MAX_INPUT_BYTES = 64 * 1024 * 1024
 """Largest JSON file read as a layout, a layout-importer input or an evaluation's episode file."""
 MAX_EPISODE_FILE_BYTES = 1024 * 1024
 """Largest evaluation outcome file (`episodes/<split>-<index>.json`) read back on resume."""
+MAX_CDF_RELATIONS = 5_000
+"""Relations one CDF may state (`scene.relations`)."""
+MAX_CDF_STEPS = 5_000
+"""Execution steps one CDF may hold (`execution`); ALFRED's longest expert plans hold a few hundred."""
+MAX_LAYOUT_SIDE_M = 30.0
+"""Longest side (m) of an object's box in a layout or an importer's input (the longest side of a CDF house)."""
+MAX_LAYOUT_COORDINATE_M = 1_000.0
+"""Largest |coordinate| (m) of a point in a layout or an importer's input (a 3D-FRONT house keeps its rooms in
+one frame, tens of metres across)."""
+MAX_LAYOUT_ROOM_SIDE_M = 30.0
+"""Longest side (m) of the bounding box of a layout's room outline."""
+MAX_MINARI_EPISODES = 100_000
+"""Episodes one Minari export writes (`luminous dataset minari --episodes`)."""
+MAX_MINARI_SEEDS = 10 * MAX_MINARI_EPISODES + 10
+"""Seeds one Minari export may try (`--max-seeds`; its default for N episodes is 10 * N + 10)."""
+MAX_WORKERS = 256
+"""Worker processes (or Ray CPUs of a local cluster) one `dataset build` or `eval` starts (`--workers`)."""
+MAX_GENERATE_SCENES = 100_000
+"""Scenes one `luminous generate` call writes (`--count`)."""

@@ -144,6 +144,8 @@ def load_demos(folder: Path) -> list[Demo]:
     Raises:
         LuminousError: no demonstration there, or a file that is not one.
     """
+    if folder.exists() and not folder.is_dir():
+        raise LuminousError(f"{folder}: not a folder; expected the demonstrations folder of `luminous bc collect`")
     paths = sorted(folder.glob("*.npz"))
     if not paths:
         raise LuminousError(f"{folder}: no demonstrations (*.npz); run `luminous bc collect` first")

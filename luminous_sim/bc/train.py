@@ -136,8 +136,11 @@ def load_checkpoint(path: Path) -> tuple[BCPolicy, dict[str, Any]]:
     Raises:
         LuminousError: the file is missing or not a checkpoint of this format.
     """
-    if not path.is_file():
+    if not path.exists():
         raise LuminousError(f"{path}: no such checkpoint (train one with `luminous bc train`)")
+    if not path.is_file():
+        kind = "a folder" if path.is_dir() else "not a regular file (a device or a FIFO)"
+        raise LuminousError(f"{path}: {kind}; expected a behaviour-cloning checkpoint (.pt)")
     try:
         saved = torch.load(path, map_location="cpu", weights_only=True)
         meta = saved["meta"]
@@ -146,6 +149,8 @@ def load_checkpoint(path: Path) -> tuple[BCPolicy, dict[str, Any]]:
         model = BCPolicy(PolicyShape(**meta["shape"]))
         model.load_state_dict(saved["state_dict"])
     except (RuntimeError, KeyError, TypeError, ValueError, OSError, EOFError, pickle.UnpicklingError) as exc:
-        raise LuminousError(f"{path}: not a behaviour-cloning checkpoint ({exc})") from None
+        reason = " ".join(str(exc).split())  # torch's messages run over several lines
+        reason = reason if len(reason) <= 160 else reason[:157] + "..."
+        raise LuminousError(f"{path}: not a behaviour-cloning checkpoint ({type(exc).__name__}: {reason})") from None
     model.eval()
     return model, meta

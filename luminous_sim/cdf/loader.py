@@ -15,6 +15,7 @@ from typing import Any
 import yaml
 from pydantic import ValidationError
 
+from luminous_sim.cdf.bounds import document_issues
 from luminous_sim.cdf.issues import CDFValidationError, Issue, from_validation_error
 from luminous_sim.cdf.reader import MAX_BYTES, check_tree, parse_text
 from luminous_sim.cdf.schema import CDF_VERSION, ChallengeDefinition
@@ -37,6 +38,16 @@ def format_of(path: str | os.PathLike[str]) -> str:
     return SUFFIXES[suffix]
 
 
+def _kind(mode: int) -> str:
+    if stat.S_ISDIR(mode):
+        return "a folder"
+    if stat.S_ISFIFO(mode):
+        return "a FIFO (named pipe)"
+    if stat.S_ISCHR(mode) or stat.S_ISBLK(mode):
+        return "a device"
+    return "not a regular file"
+
+
 def read_document(path: str | os.PathLike[str]) -> Any:
     """The plain data of a CDF file (not validated), read safely.
 
@@ -46,6 +57,12 @@ def read_document(path: str | os.PathLike[str]) -> Any:
         CDFValidationError: Missing, not a regular file, unreadable, over MAX_BYTES, or not valid YAML/JSON.
     """
     source = str(path)
+    try:
+        mode = os.stat(path).st_mode
+    except OSError:
+        mode = None  # reported below, where the file is opened
+    if mode is not None and not stat.S_ISREG(mode):
+        raise CDFValidationError(source, [Issue("", f"{_kind(mode)}; expected a regular CDF file")])
     fmt = format_of(path)
     try:
         # O_NONBLOCK: opening a FIFO with no writer returns at once instead of waiting for one
@@ -53,8 +70,7 @@ def read_document(path: str | os.PathLike[str]) -> Any:
         with open(fd, "rb") as fh:
             mode = os.fstat(fd).st_mode
             if not stat.S_ISREG(mode):
-                kind = "a folder" if stat.S_ISDIR(mode) else "a FIFO" if stat.S_ISFIFO(mode) else "not a regular file"
-                raise CDFValidationError(source, [Issue("", f"{kind}; expected a regular CDF file")])
+                raise CDFValidationError(source, [Issue("", f"{_kind(mode)}; expected a regular CDF file")])
             raw = fh.read(MAX_BYTES + 1)
     except OSError as exc:
         raise CDFValidationError(
@@ -85,6 +101,9 @@ def from_document(doc: Any, source: str = "<document>") -> ChallengeDefinition:
         f" (in the document upgraded from cdf_version {version})" if version != CDF_VERSION else ""
     )
     current = upgrade(doc, source)
+    too_large = document_issues(current)
+    if too_large:
+        raise CDFValidationError(source, [Issue(i.path, i.message + note) for i in too_large])
     try:
         return ChallengeDefinition.model_validate(current, context={"source": source, "note": note})
     except ValidationError as exc:

@@ -49,6 +49,7 @@ from luminous_sim.cdf import refs
 from luminous_sim.cdf.predicates import Expr, ExprError, expr_from_data, to_sexpr
 from luminous_sim.cdf.relations import ALIASES, RELATIONS, canonical, unknown_relation_message
 from luminous_sim.errors import VocabularyError
+from luminous_sim.limits import MAX_CDF_INSTANCES, MAX_CDF_RELATIONS, MAX_CDF_STEPS
 from luminous_sim.vocab import ALFRED_TASK_TYPES, ALL_TYPES, NAVIGATION_ACTIONS, ROOM_TYPES, check_type
 
 CDF_VERSION = 2
@@ -153,6 +154,19 @@ def _as_str(value: Any) -> str:
     return value
 
 
+MIN_ROOM_SIDE = 2.0
+"""Shortest side (m) a house's room may have: room for the agent, a door and one piece of furniture."""
+MIN_ROOM_AREA = 4.0
+"""Smallest floor (m^2) a house's room may have."""
+MAX_HOUSE_SIDE = 30.0
+"""Longest side (m) of a house outline; also the widest room a CDF's room constraints may ask for and the
+longest side its `attributes.size` may give an object."""
+
+
+Side: TypeAlias = Annotated[float, Field(gt=0, le=MAX_HOUSE_SIDE, allow_inf_nan=False)]
+Area: TypeAlias = Annotated[float, Field(gt=0, le=MAX_HOUSE_SIDE ** 2, allow_inf_nan=False)]
+
+
 class _Model(BaseModel):
     model_config = ConfigDict(extra="forbid", frozen=True, populate_by_name=True)
 
@@ -162,10 +176,10 @@ class RoomConstraints(_Model):
 
     union_tag: ClassVar[str] = "room-constraints"
     shape: Literal["rect", "L", "two_zone"] | None = None
-    min_area: PositiveFinite | None = Field(None, description="m^2")
-    max_area: PositiveFinite | None = Field(None, description="m^2")
-    min_width: PositiveFinite | None = Field(None, description="m")
-    max_width: PositiveFinite | None = Field(None, description="m")
+    min_area: Area | None = Field(None, description="m^2")
+    max_area: Area | None = Field(None, description="m^2")
+    min_width: Side | None = Field(None, description="m")
+    max_width: Side | None = Field(None, description="m")
 
     @model_validator(mode="after")
     def _ranges(self) -> RoomConstraints:
@@ -190,9 +204,9 @@ class Dims(_Model):
     """Absolute size in metres."""
 
     union_tag: ClassVar[str] = "size-dims"
-    width: PositiveFinite
-    depth: PositiveFinite
-    height: PositiveFinite
+    width: Side
+    depth: Side
+    height: Side
 
 
 def _size_tag(value: Any) -> str:
@@ -257,14 +271,6 @@ _ROOM_TYPE_SCHEMA = {
         {"type": "array", "items": {"type": "string", "enum": list(ROOM_TYPES)}, "minItems": 1},
     ]
 }
-
-
-MIN_ROOM_SIDE = 2.0
-"""Shortest side (m) a house's room may have: room for the agent, a door and one piece of furniture."""
-MIN_ROOM_AREA = 4.0
-"""Smallest floor (m^2) a house's room may have."""
-MAX_HOUSE_SIDE = 30.0
-"""Longest side (m) of a house outline."""
 
 
 class HouseRoomSpec(_Model):
@@ -335,8 +341,8 @@ class SceneSpec(_Model):
         WithJsonSchema(_ROOM_TYPE_SCHEMA),
     ]
     room: RoomSpec | None = None
-    objects: tuple[ObjectSpec, ...] = ()
-    relations: tuple[Relation, ...] = ()
+    objects: Annotated[tuple[ObjectSpec, ...], Field(max_length=MAX_CDF_INSTANCES)] = ()
+    relations: Annotated[tuple[Relation, ...], Field(max_length=MAX_CDF_RELATIONS)] = ()
     house: HouseSpec | None = None
 
     @model_validator(mode="before")
@@ -509,7 +515,7 @@ class ChallengeDefinition(_Model):
     description: Annotated[str, Field(max_length=10_000)] | None = None
     scene: SceneSpec
     task: Task | None = None
-    execution: tuple[Step, ...] | None = None
+    execution: Annotated[tuple[Step, ...], Field(max_length=MAX_CDF_STEPS)] | None = None
 
     @model_validator(mode="after")
     def _consistent(self, info: ValidationInfo) -> ChallengeDefinition:

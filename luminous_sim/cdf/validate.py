@@ -17,6 +17,7 @@ from luminous_sim.cdf.affordances import (
     has_ability,
     is_receptacle,
 )
+from luminous_sim.cdf.bounds import size_issues
 from luminous_sim.cdf.contradictions import find_conflicts
 from luminous_sim.cdf.graph import find_axis_contradiction, find_fixed_cycle
 from luminous_sim.cdf.house import check_house
@@ -87,7 +88,13 @@ def raise_for_issues(cdf: ChallengeDefinition, source: str = "<cdf>", note: str 
 
 
 def check(cdf: ChallengeDefinition) -> list[Issue]:
-    """Every cross-field problem of a structurally valid document (empty when it is consistent)."""
+    """Every cross-field problem of a structurally valid document (empty when it is consistent).
+
+    A document over the size limits (`bounds.size_issues`) gets only those issues: nothing else is checked.
+    """
+    too_large = size_issues((o.count for o in cdf.scene.objects), len(cdf.scene.relations), len(cdf.execution or ()))
+    if too_large:
+        return too_large
     names, issues = _check_objects(cdf.scene.objects)
     issues += _check_room(cdf)
     issues += check_house(cdf)

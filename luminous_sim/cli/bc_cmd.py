@@ -10,7 +10,16 @@ import os
 import sys
 from pathlib import Path
 
-from luminous_sim.cli.args import non_negative_int, output_dir, output_file, positive_float, positive_int, seed
+from luminous_sim.cli.args import (
+    int_range,
+    non_negative_int,
+    output_dir,
+    output_file,
+    positive_float,
+    positive_int,
+    seed,
+)
+from luminous_sim.limits import MAX_EVAL_EPISODES
 
 SPLITS: tuple[str, ...] = ("S+", "U+", "U+test")
 
@@ -24,7 +33,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     collect.add_argument("--split", choices=SPLITS, default="S+", help="the split (default S+)")
     collect.add_argument("--start", type=non_negative_int, default=28,
                          help="first episode index (default 28: S+ 0-27 are kept for evaluation)")
-    collect.add_argument("--episodes", type=positive_int, required=True, metavar="N", help="episodes to record")
+    collect.add_argument("--episodes", type=int_range(1, MAX_EVAL_EPISODES), required=True, metavar="N",
+                         help=f"episodes to record (at most {MAX_EVAL_EPISODES})")
     collect.add_argument("--out", type=output_dir, required=True, help="demonstrations folder")
     collect.set_defaults(func=_collect)
     train = bc.add_parser("train", help="train a policy on demonstrations; write a checkpoint")
@@ -43,7 +53,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     evaluate.add_argument("--checkpoint", type=Path, help="the clone's checkpoint (sets LUMINOUS_BC_CHECKPOINT)")
     evaluate.add_argument("--split", choices=SPLITS, required=True, help="the split")
     evaluate.add_argument("--start", type=non_negative_int, default=0, help="first episode index (default 0)")
-    evaluate.add_argument("--episodes", type=positive_int, required=True, metavar="N", help="episodes to play")
+    evaluate.add_argument("--episodes", type=int_range(1, MAX_EVAL_EPISODES), required=True, metavar="N",
+                          help=f"episodes to play (at most {MAX_EVAL_EPISODES})")
     evaluate.add_argument("--seed", type=seed, default=0, help="seed of the agent's randomness (default 0)")
     evaluate.add_argument("--out", type=output_file((".json",), "a JSON file"),
                           help="write the outcomes and metrics to this JSON file")

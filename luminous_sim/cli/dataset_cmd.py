@@ -11,9 +11,9 @@ import tomllib
 from pathlib import Path
 from typing import Any
 
-from luminous_sim.cli.args import int_range, output_dir, positive_int, seed
+from luminous_sim.cli.args import int_range, output_dir, seed
 from luminous_sim.data.backends import BACKENDS
-from luminous_sim.limits import MAX_BUILD_JOBS
+from luminous_sim.limits import MAX_BUILD_JOBS, MAX_MINARI_EPISODES, MAX_MINARI_SEEDS, MAX_WORKERS
 from luminous_sim.splits import PLUS_SPLITS
 
 EPILOG = ("example: luminous dataset minari --env Luminous-NavToObject-64-v1 --episodes 100 --out out/minari   "
@@ -54,7 +54,8 @@ def register(sub: argparse._SubParsersAction) -> None:
                         "--from-alfred, the first COUNT designs in path order (default all). A rerun may extend a "
                         "build, never shrink it")
     b.add_argument("--out", required=True, type=output_dir, help="build folder (new, empty, or an earlier build)")
-    b.add_argument("--workers", type=positive_int, default=1, help="worker processes (default 1)")
+    b.add_argument("--workers", type=int_range(1, MAX_WORKERS), default=1,
+                   help=f"worker processes (default 1; at most {MAX_WORKERS})")
     b.add_argument("--backend", choices=BACKENDS, default="local",
                    help="local processes, or Ray tasks (needs luminous-sim[cluster]) (default local)")
     b.add_argument("--address", default=None,
@@ -68,7 +69,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     p = actions.add_parser("minari", help="roll out the oracle in a registered env and write a Minari dataset",
                        epilog=EPILOG)
     p.add_argument("--env", required=True, help="a registered id, e.g. Luminous-NavToObject-64-v1")
-    p.add_argument("--episodes", type=positive_int, required=True, help="episodes to write")
+    p.add_argument("--episodes", type=int_range(1, MAX_MINARI_EPISODES), required=True,
+                   help=f"episodes to write (at most {MAX_MINARI_EPISODES})")
     p.add_argument("--out", type=output_dir, required=True,
                    help="a new folder: the Minari datasets root the dataset is written under")
     p.add_argument("--seed", type=seed, default=0, help="first episode's seed, a whole number >= 0 (default 0)")
@@ -76,8 +78,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--env-kwarg", type=env_option, action="append", default=[], metavar="NAME=VALUE",
                    help="env option (repeatable), e.g. targets=objects or max_steps=100")
     p.add_argument("--token-length", type=int_range(1, 1000), default=32, help="instruction tokens (default 32)")
-    p.add_argument("--max-seeds", type=positive_int, default=None,
-                   help="give up after this many seeds (default 10 * episodes + 10)")
+    p.add_argument("--max-seeds", type=int_range(1, MAX_MINARI_SEEDS), default=None,
+                   help=f"give up after this many seeds (default 10 * episodes + 10; at most {MAX_MINARI_SEEDS})")
     p.add_argument("--jpeg", action="store_true", help="store images JPEG-encoded (lossy, smaller)")
     p.add_argument("--resume", action="store_true", help="go on from the <out>.partial/ an interrupted run left")
     p.set_defaults(func=cmd_minari)

@@ -8,9 +8,9 @@ import os
 import sys
 from pathlib import Path
 
-from luminous_sim.cli.args import int_range, output_dir, positive_int, seed
+from luminous_sim.cli.args import int_range, output_dir, seed
 from luminous_sim.data.backends import BACKENDS
-from luminous_sim.limits import MAX_EVAL_EPISODES
+from luminous_sim.limits import MAX_EVAL_EPISODES, MAX_WORKERS
 
 SPLITS: tuple[str, ...] = ("S+", "U+", "U+test")
 """The split names (`luminous_sim.splits.PLUS_SPLITS`; a test keeps the two in step)."""
@@ -29,8 +29,8 @@ def register(sub: argparse._SubParsersAction) -> None:
                         help=f"evaluate the split's episodes 0 .. N-1 (at most {MAX_EVAL_EPISODES})")
     parser.add_argument("--out", type=output_dir, required=True,
                         help="output folder: new, empty, or one this same evaluation was run in (it resumes)")
-    parser.add_argument("--workers", type=positive_int, default=1,
-                        help="worker processes, or Ray CPUs of a local cluster (default 1)")
+    parser.add_argument("--workers", type=int_range(1, MAX_WORKERS), default=1,
+                        help=f"worker processes, or Ray CPUs of a local cluster (default 1; at most {MAX_WORKERS})")
     parser.add_argument("--backend", choices=BACKENDS, default="local",
                         help="local processes, or Ray tasks (needs luminous-sim[cluster]); the same outcomes "
                              "either way (default local)")

@@ -5,8 +5,9 @@ from __future__ import annotations
 import argparse
 from pathlib import Path
 
-from luminous_sim.cli.args import output_dir, positive_int, seed
+from luminous_sim.cli.args import int_range, output_dir, seed
 from luminous_sim.errors import CDFError, InfeasibleSceneError
+from luminous_sim.limits import MAX_GENERATE_SCENES
 from luminous_sim.vocab import ROOM_TYPES
 
 EPILOG = (
@@ -20,8 +21,9 @@ def register(sub: argparse._SubParsersAction) -> None:
     parser.add_argument("--cdf", type=Path, help="challenge definition (YAML/JSON); default: an empty one")
     parser.add_argument("--room-type", default="Kitchen", choices=ROOM_TYPES, help="room type when no CDF is given")
     parser.add_argument("--seed", type=seed, default=0, help="random seed, a whole number >= 0 (default 0)")
-    parser.add_argument("--count", type=positive_int, default=1,
-                        help="number of scenes, with seeds seed, seed+1, ... (default 1)")
+    parser.add_argument("--count", type=int_range(1, MAX_GENERATE_SCENES), default=1,
+                        help=f"number of scenes, with seeds seed, seed+1, ... (default 1; at most "
+                             f"{MAX_GENERATE_SCENES})")
     parser.add_argument("--out", type=output_dir, required=True,
                         help="output folder (with --count > 1: one scene_NNNNN/ folder per scene in it)")
     parser.add_argument("--room", help="a room-library name (e.g. FloorPlan1, kitchen_L; see `luminous rooms list`); "

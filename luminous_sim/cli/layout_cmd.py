@@ -98,19 +98,28 @@ def _run_import(args: argparse.Namespace) -> int:
     ok = report["layout"]["ok"] and report.get("physics", {}).get("ok", True)
     moved = sum(r.action == "moved" for r in realized.given.repairs)
     added = sum(r.action == "placed" for r in realized.given.repairs)
+    dropped = realized.dropped
     print(f"wrote {args.out}/scene.json ({len(generated.scene.objects)} objects: {len(realized.matches)} matched, "
           f"{len(realized.unmatched)} left out, {moved} moved, {added} added), report.json (valid: {ok}), "
           "repair_report.json, layout.json, top_down.png, egocentric.png")
+    if dropped:
+        shown = "; ".join(f"{d.get('entry')} ({d.get('reason')})" for d in dropped[:5])
+        more = f"; ... ({len(dropped)} in all)" if len(dropped) > 5 else ""
+        print(f"dropped {len(dropped)} entr{'y' if len(dropped) == 1 else 'ies'} of {args.file}: {shown}{more} "
+              f"(all in {args.out / 'repair_report.json'}, 'dropped')")
     return 0
 
 
 def _run_export(args: argparse.Namespace) -> int:
     from luminous_sim.assets.catalog import default_catalog
-    from luminous_sim.layouts import layout_of_scene
+    from luminous_sim.layouts import LayoutError, layout_of_scene
     from luminous_sim.scene import Scene
 
-    layout = layout_of_scene(Scene.load(args.scene), default_catalog())
-    layout.save(args.out)
+    layout = layout_of_scene(Scene.load(args.scene), default_catalog(), where=f"{args.scene} (as a layout)")
+    try:
+        layout.save(args.out)
+    except OSError as exc:
+        raise LayoutError(f"--out {args.out}: cannot write ({exc.strerror or exc})") from None
     print(f"wrote {args.out} ({len(layout.objects)} objects, room {layout.room.name})")
     return 0
 

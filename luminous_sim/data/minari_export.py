@@ -34,6 +34,7 @@ from typing import Any
 import numpy as np
 
 from luminous_sim.errors import LuminousError
+from luminous_sim.limits import MAX_MINARI_EPISODES, MAX_MINARI_SEEDS
 
 ALGORITHM = "luminous_sim.env.OraclePolicy"
 PARTIAL = ".partial"
@@ -151,6 +152,13 @@ def export_minari(env_id: str, episodes: int, out: Path, *, seed: int = 0, datas
         MinariExportError: minari is not installed, `out` exists, an argument is wrong, or `max_seeds` seeds
             gave fewer than `episodes` episodes in the discrete space (the partial dataset is kept).
     """
+    if isinstance(episodes, bool) or not isinstance(episodes, int) or not 1 <= episodes <= MAX_MINARI_EPISODES:
+        raise MinariExportError(f"episodes: expected a whole number from 1 to {MAX_MINARI_EPISODES} "
+                                f"(luminous_sim.limits.MAX_MINARI_EPISODES), got {episodes!r}")
+    if max_seeds is not None and (isinstance(max_seeds, bool) or not isinstance(max_seeds, int)
+                                  or not 1 <= max_seeds <= MAX_MINARI_SEEDS):
+        raise MinariExportError(f"max_seeds: expected a whole number from 1 to {MAX_MINARI_SEEDS} "
+                                f"(luminous_sim.limits.MAX_MINARI_SEEDS), got {max_seeds!r}")
     try:
         import minari
     except ModuleNotFoundError:
@@ -161,8 +169,6 @@ def export_minari(env_id: str, episodes: int, out: Path, *, seed: int = 0, datas
 
     from luminous_sim.env import InstructionTokens
 
-    if episodes < 1:
-        raise MinariExportError(f"episodes: expected a positive number, got {episodes}")
     out = Path(out)
     if out.exists() and (not out.is_dir() or any(out.iterdir())):
         raise MinariExportError(f"{out}: already exists; choose a new --out (a dataset is never overwritten)")
@@ -217,7 +223,8 @@ def export_minari(env_id: str, episodes: int, out: Path, *, seed: int = 0, datas
                     bar.update()
                 next_seed += 1
             bar.close()
-            skipped = tuple(s for s in range(seed, next_seed) if s not in set(kept))
+            taken = set(kept)
+            skipped = tuple(s for s in range(seed, next_seed) if s not in taken)
             storage.update_metadata({"luminous_seeds_tried": [seed, next_seed - 1],
                                      "luminous_skipped_seeds": list(skipped)})
             steps = storage.total_steps

@@ -9,8 +9,10 @@ finishes (`episodes/<split>-<index>.json`, atomically), so an interrupted evalua
 stopped; `run.json` records what the folder holds, and a folder of another evaluation, or a non-empty one
 that holds no evaluation, is refused. On resume an episode file is read back only if it is what this
 evaluation writes (a regular file within `limits.MAX_EPISODE_FILE_BYTES`, every field checked, the job's
-own split entry); a damaged one (truncated, `[]`, `{}`, a field of the wrong kind, another episode's) is
-played again and overwritten, and counted in `EvalReport.replayed`.
+own split entry, and its `check` - a digest of its other fields written with it, as the build manifest's lines
+carry - matching them); a damaged or edited one (truncated, `[]`, `{}`, a field of the wrong kind, a field
+changed but still well-formed, another episode's, one without a `check`) is played again and overwritten,
+and counted in `EvalReport.replayed`.
 
 An agent that raises stops the evaluation (`PolicyError`). An agent that returns something that is not an
 action (None, an index outside the space, an unknown action, arguments the env cannot decode such as a
@@ -20,6 +22,7 @@ message in `detail`; a mask that decodes but hits nothing is an ordinary failed 
 
 from __future__ import annotations
 
+import hashlib
 import itertools
 import json
 import shutil
@@ -185,13 +188,28 @@ _RUNNERS: dict[tuple[str, str], tuple[LuminousEnv, Agent]] = {}
 """This process's env and agent per (policy, env options): a user's agent is made once per worker."""
 
 
+CHECK = "check"
+"""The field of an episode file that holds the digest of its other fields (written with it, verified on read)."""
+
+
+def _digest(fields: dict[str, Any]) -> str:
+    canonical = json.dumps(fields, sort_keys=True, separators=(",", ":"))
+    return hashlib.sha256(canonical.encode()).hexdigest()[:16]
+
+
+def outcome_record(outcome: EpisodeOutcome) -> dict[str, Any]:
+    """What an episode file holds: the outcome's fields and their digest under `CHECK`."""
+    fields = outcome.to_dict()
+    return {**fields, CHECK: _digest(fields)}
+
+
 def read_outcome(path: Path, split: str, index: int) -> EpisodeOutcome:
     """The outcome an earlier run wrote at `path` for episode `index` of `split`.
 
     Raises:
         LuminousError: not a regular file (a folder, a link, a device), over `MAX_EPISODE_FILE_BYTES`, not
-            JSON, a field missing or of the wrong kind, or another episode's outcome; the message names the
-            file and the field.
+            JSON, a field missing or of the wrong kind, its `check` missing or not the digest of its other
+            fields (an edit), or another episode's outcome; the message names the file and the field.
     """
     if path.is_symlink() or not path.is_file():
         kind = "a symbolic link" if path.is_symlink() else "a folder" if path.is_dir() else "not a regular file"
@@ -204,7 +222,15 @@ def read_outcome(path: Path, split: str, index: int) -> EpisodeOutcome:
         data = json.loads(path.read_bytes())
     except (ValueError, RecursionError) as exc:
         raise LuminousError(f"{path}: not JSON ({exc})") from None
+    recorded = data.pop(CHECK, None) if isinstance(data, dict) else None
     outcome = EpisodeOutcome.from_dict(data, str(path))
+    if recorded is None:
+        raise LuminousError(f"{path}: field {CHECK!r} is missing; expected the digest an evaluation writes with each "
+                            "outcome")
+    if recorded != _digest(data):
+        shown = repr(recorded) if len(repr(recorded)) <= 40 else repr(recorded)[:37] + "..."
+        raise LuminousError(f"{path}: field {CHECK!r}: {shown} is not the digest of the file's other fields "
+                            f"({_digest(data)}); the file was edited or damaged")
     entry = split_entry(split, index)
     mine = (split, index, entry.task_type, entry.floor_plan, entry.layout)
     for name, value, want in zip(("split", "index", "task_type", "floor_plan", "layout"),
@@ -246,7 +272,7 @@ def _run_job(job: EpisodeJob) -> tuple[EpisodeOutcome, str]:
     finally:
         env.close()  # frees the episode's simulator; the next reset builds a new one
     if path is not None:
-        write_atomic(path, json.dumps(outcome.to_dict(), indent=1) + "\n")
+        write_atomic(path, json.dumps(outcome_record(outcome), indent=1) + "\n")
     return outcome, damaged
 
 

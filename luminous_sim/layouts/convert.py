@@ -21,6 +21,8 @@ from luminous_sim.layouts.model import (
     LayoutWindow,
     LayoutZone,
     Provenance,
+    problems,
+    room_problem,
 )
 from luminous_sim.rooms.shell import Door, FixturePlan, RoomShell, Window, Zone, walls_from_outline
 from luminous_sim.scene import Scene, local_to_world
@@ -98,17 +100,28 @@ def _r(v: float) -> float:
     return round(float(v), DIGITS) + 0.0
 
 
-def layout_of_scene(scene: Scene, catalog: Catalog) -> Layout:
-    """The layout of a scene: its room and every object, with asset, scale and scene fields."""
+def layout_of_scene(scene: Scene, catalog: Catalog, where: str = "scene") -> Layout:
+    """The layout of a scene: its room and every object, with asset, scale and scene fields.
+
+    Raises:
+        LayoutError: one line naming `where` and the object or field the layout format refuses.
+    """
     objects = []
-    for o in scene.objects:
+    for i, o in enumerate(scene.objects):
         entry = catalog.for_object(o)
         centre = box_centre(entry, *o.position, o.yaw)
-        objects.append(LayoutObject(
-            id=o.id, category=o.type, size=tuple(_r(d) for d in entry.dims), position=tuple(_r(c) for c in centre),
-            yaw=_r(o.yaw), parent=o.parent, region=o.region, asset=o.asset, scale=o.scale, layer=o.layer,
-            fixed=o.fixed, name=o.name, states=o.states, color=o.color, color_seed=o.color_seed,
-        ))
-    return Layout(room=room_of_shell(scene.room), objects=tuple(objects),
-                  provenance=Provenance(generator=scene.generator, seed=scene.seed, source=scene.source,
-                                        notes=scene.notes))
+        try:
+            objects.append(LayoutObject(
+                id=o.id, category=o.type, size=tuple(_r(d) for d in entry.dims),
+                position=tuple(_r(c) for c in centre), yaw=_r(o.yaw), parent=o.parent, region=o.region,
+                asset=o.asset, scale=o.scale, layer=o.layer, fixed=o.fixed, name=o.name, states=o.states,
+                color=o.color, color_seed=o.color_seed,
+            ))
+        except ValidationError as exc:
+            raise LayoutError(f"{where}: objects[{i}] ({o.id}): {room_problem(exc)}") from None
+    try:
+        return Layout(room=room_of_shell(scene.room), objects=tuple(objects),
+                      provenance=Provenance(generator=scene.generator, seed=scene.seed, source=scene.source,
+                                            notes=scene.notes))
+    except ValidationError as exc:
+        raise problems(exc, where) from None

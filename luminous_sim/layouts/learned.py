@@ -20,6 +20,7 @@ from luminous_sim.assets.catalog import Catalog, default_catalog
 from luminous_sim.errors import LuminousError
 from luminous_sim.layouts import trainset
 from luminous_sim.layouts.convert import layout_of_scene, room_of_shell
+from luminous_sim.layouts.inputs import read_bytes
 from luminous_sim.layouts.model import Layout, LayoutError, LayoutObject, Provenance
 from luminous_sim.rooms.shell import RoomShell
 from luminous_sim.vocab import ROOM_TYPES
@@ -47,9 +48,9 @@ def load_model(path: Path | None = None) -> dict:
     key = str(path.resolve())
     if key not in _LOADED:
         torch = _torch()
-        if not path.is_file():
+        if not path.exists():
             raise LayoutError(f"{path}: no such model file (train one with `luminous train-layouts --out {path}`)")
-        raw = path.read_bytes()
+        raw = read_bytes(path, "a layout model checkpoint (.pt)")  # names a folder, a device or a FIFO
         try:
             data = torch.load(io.BytesIO(raw), weights_only=True)
         except Exception as exc:  # torch raises many kinds for a file that is not its checkpoint

@@ -25,6 +25,13 @@ class Realized:
     matches: list[dict] = field(default_factory=list)
     unmatched: list[dict] = field(default_factory=list)
     source: str = ""
+    imported_dropped: list[dict] = field(default_factory=list)
+    """What the importer left out of the layout (its `provenance.notes["dropped"]`: entry path and reason)."""
+
+    @property
+    def dropped(self) -> list[dict]:
+        """Every entry of the input left out: by the importer, then the objects no asset matches."""
+        return self.imported_dropped + self.unmatched
 
     @property
     def ok(self) -> bool:
@@ -45,7 +52,7 @@ class Realized:
         """The repair report: matches, what was left out, moved or added, and the validation report."""
         return {
             "source": self.source, "accepted": self.ok, "problems": self.problems(),
-            "matches": self.matches, "unmatched": self.unmatched,
+            "matches": self.matches, "unmatched": self.unmatched, "dropped": self.dropped,
             "repairs": [vars(r) for r in self.given.repairs],
             "scene_ids": self.given.ids,
             "layout": self.given.generated.report.to_dict(),
@@ -60,23 +67,27 @@ def _is_floor(layer: str | None, object_type: str, parent: str | None) -> bool:
     return layer in ("furniture", "fixture") if layer else object_type in FIXTURE_TYPES | FURNITURE_TYPES
 
 
-def _placement(o: LayoutObject, catalog: Catalog, where: str, matches: list[dict],
+def _placement(i: int, o: LayoutObject, catalog: Catalog, where: str, matches: list[dict],
                unmatched: list[dict]) -> Placement | None:
     if o.asset is not None:  # a Luminous layout: the asset as given
         try:
             entry = scaled(catalog.get(o.asset), o.scale or 1.0)
         except AssetError:
-            raise LayoutError(f"{where}: objects[{o.id}].asset: no asset {o.asset!r} in the catalog") from None
+            raise LayoutError(f"{where}: objects[{i}].asset: no asset {o.asset!r} in the catalog") from None
+        if entry.type != o.category:
+            raise LayoutError(f"{where}: objects[{i}].category: asset {o.asset!r} is a {entry.type}; expected "
+                              f"category {entry.type}, got {o.category!r}")
         x, y, z = origin_of(entry, o.position, o.yaw)
         return Placement(o.id, entry, (x, y, z), o.yaw, o.layer, o.fixed, o.parent, o.region, o.name,
-                         dict(o.states), o.color, o.color_seed, o.id)
+                         {str(k): v for k, v in o.states.items()}, o.color, o.color_seed, o.id)
     cat = match_category(o.category, catalog)
     if cat.type is None:
-        unmatched.append({"id": o.id, "category": o.category, "reason": cat.reason})
+        unmatched.append({"entry": f"objects[{i}]", "id": o.id, "category": o.category, "reason": cat.reason})
         return None
     size = match_size(cat.type, o.size, catalog)
     if size is None:
-        unmatched.append({"id": o.id, "category": o.category, "reason": f"no {cat.type} asset in the catalog"})
+        unmatched.append({"entry": f"objects[{i}]", "id": o.id, "category": o.category,
+                          "reason": f"no {cat.type} asset in the catalog"})
         return None
     entry = size.entry
     x, y, z = origin_of(entry, o.position, o.yaw)
@@ -89,8 +100,8 @@ def _placement(o: LayoutObject, catalog: Catalog, where: str, matches: list[dict
             note["floor_snap"] = round(-bottom, 3)
         z = -entry.bbox_min[2] + 0.0
     matches.append(note)
-    return Placement(o.id, entry, (x, y, z), o.yaw, o.layer, o.fixed, o.parent, o.region, o.name, dict(o.states),
-                     o.color, o.color_seed)
+    return Placement(o.id, entry, (x, y, z), o.yaw, o.layer, o.fixed, o.parent, o.region, o.name,
+                     {str(k): v for k, v in o.states.items()}, o.color, o.color_seed)
 
 
 def realize(layout: Layout, seed: int | None = None, catalog: Catalog | None = None, *, repair: bool = True,
@@ -107,11 +118,14 @@ def realize(layout: Layout, seed: int | None = None, catalog: Catalog | None = N
     shell = shell_of_room(layout.room, where)
     matches: list[dict] = []
     unmatched: list[dict] = []
-    placements = [p for o in layout.objects if (p := _placement(o, catalog, where, matches, unmatched)) is not None]
+    placements = [p for i, o in enumerate(layout.objects)
+                  if (p := _placement(i, o, catalog, where, matches, unmatched)) is not None]
     if defaults is None:
         defaults = not layout.objects or any(o.asset is None for o in layout.objects)
     prov = layout.provenance
     given = place_given(shell, placements, prov.seed if seed is None else seed, catalog, repair=repair,
                         defaults=defaults, required=required, generator=prov.generator, source=prov.source,
                         notes=prov.notes)
-    return Realized(given, matches, unmatched, where)
+    dropped = prov.notes.get("dropped", [])
+    return Realized(given, matches, unmatched, where,
+                    [d for d in dropped if isinstance(d, dict)] if isinstance(dropped, list) else [])

@@ -7,12 +7,15 @@ give byte-identical files.
 from __future__ import annotations
 
 import json
+import os
+import stat
 from pathlib import Path
 from typing import Any, Final, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
 
 from luminous_sim.errors import LuminousError
+from luminous_sim.limits import MAX_INPUT_BYTES
 from luminous_sim.rooms.shell import RoomShell
 
 SCENE_FORMAT: Final = "luminous-scene/1"
@@ -104,10 +107,28 @@ class Scene(BaseModel):
 
     @classmethod
     def from_json(cls, text: str, where: str = "scene") -> Scene:
+        """A scene from its JSON text.
+
+        Raises:
+            LuminousError: one line naming `where`, not JSON, or the first fields that are wrong.
+        """
         try:
-            return cls.model_validate(json.loads(text))
-        except (ValueError, ValidationError) as exc:
-            raise LuminousError(f"{where}: not a valid scene file ({exc})") from exc
+            data = json.loads(text)
+        except RecursionError:
+            raise LuminousError(f"{where}: not a valid scene file (nested too deeply)") from None
+        except ValueError as exc:
+            raise LuminousError(f"{where}: not a valid scene file (not JSON: {exc})") from None
+        if not isinstance(data, dict):
+            raise LuminousError(f"{where}: not a valid scene file (expected a JSON object, got {type(data).__name__})")
+        try:
+            return cls.model_validate(data)
+        except ValidationError as exc:
+            errors = exc.errors(include_url=False)
+            shown = "; ".join(f"{_path(e['loc'])}: {e['msg']}" for e in errors[:3])
+            more = f" (and {len(errors) - 3} more)" if len(errors) > 3 else ""
+            raise LuminousError(f"{where}: not a valid scene file ({shown}{more})") from None
+        except ValueError as exc:
+            raise LuminousError(f"{where}: not a valid scene file ({' '.join(str(exc).split())})") from None
 
     def save(self, path: Path) -> None:
         from luminous_sim.assets.objio import write_atomic
@@ -116,7 +137,36 @@ class Scene(BaseModel):
 
     @classmethod
     def load(cls, path: Path) -> Scene:
+        """A scene file (`scene.json`): a regular file within `limits.MAX_INPUT_BYTES`.
+
+        Raises:
+            LuminousError: one line naming the file: missing, a folder, a device or a FIFO, too large, not UTF-8,
+                or not a valid scene.
+        """
         path = Path(path)
-        if not path.is_file():
-            raise LuminousError(f"{path}: no such scene file")
-        return cls.from_json(path.read_text(), where=str(path))
+        try:
+            mode = os.stat(path).st_mode
+        except OSError as exc:
+            raise LuminousError(f"{path}: cannot read ({exc.strerror or exc}); expected a scene file (scene.json)"
+                                ) from None
+        if not stat.S_ISREG(mode):
+            kind = ("a folder" if stat.S_ISDIR(mode) else "a FIFO (named pipe)" if stat.S_ISFIFO(mode)
+                    else "a device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode) else "not a regular file")
+            raise LuminousError(f"{path}: {kind}; expected a scene file (scene.json)")
+        try:
+            with open(path, "rb") as fh:
+                raw = fh.read(MAX_INPUT_BYTES + 1)
+        except OSError as exc:
+            raise LuminousError(f"{path}: cannot read ({exc.strerror or exc})") from None
+        if len(raw) > MAX_INPUT_BYTES:
+            raise LuminousError(f"{path}: more than {MAX_INPUT_BYTES} bytes; a scene file may hold at most "
+                                f"{MAX_INPUT_BYTES} (luminous_sim.limits.MAX_INPUT_BYTES)")
+        try:
+            text = raw.decode("utf-8")
+        except UnicodeDecodeError as exc:
+            raise LuminousError(f"{path}: not UTF-8 text ({exc.reason} at byte {exc.start})") from None
+        return cls.from_json(text, where=str(path))
+
+
+def _path(loc: tuple[Any, ...]) -> str:
+    return "".join(f"[{p}]" if isinstance(p, int) else f".{p}" for p in loc).lstrip(".") or "(top level)"

@@ -107,7 +107,7 @@ def test_size_limit(tmp_path: Path) -> None:
 def test_file_errors(tmp_path: Path) -> None:
     with pytest.raises(CDFValidationError, match="cannot read the file"):
         load(tmp_path / "missing.yaml")
-    with pytest.raises(CDFValidationError, match="cannot read the file"):
+    with pytest.raises(CDFValidationError, match="folder.yaml: a folder; expected a regular CDF file"):
         load(_dir_named(tmp_path, "folder.yaml"))
     with pytest.raises(CDFValidationError, match="unknown file suffix '.txt'"):
         load(tmp_path / "notes.txt")

@@ -127,6 +127,28 @@ def test_a_damaged_episode_file_is_named_and_played_again(tmp_path, fast, conten
     assert tree(out) == tree(tmp_path / "ref")
 
 
+@pytest.mark.parametrize("edit, field", [
+    (lambda r: r | {"steps": r["steps"] + 1}, "field 'check': .* is not the digest of the file's other fields"),
+    (lambda r: r | {"end": "success", "success": True, "goal_conditions": [1, 1]},
+     "field 'check': .* is not the digest"),
+    (lambda r: {k: v for k, v in r.items() if k != "check"}, "field 'check' is missing"),
+    (lambda r: r | {"check": 7}, "field 'check': 7 is not the digest"),
+])
+def test_an_edited_but_well_formed_episode_file_is_detected_and_played_again(tmp_path, fast, edit, field):
+    """Issue 27: an episode file carries a digest of its fields (like the build manifest's lines), so an edit
+    that keeps it well-formed (steps 10 -> 11, a failure turned into a success) is not read back as is."""
+    reference = evaluate("random", "U+", INDICES, out_dir=tmp_path / "ref", env_kwargs=SMALL)
+    out = tmp_path / "out"
+    shutil.copytree(tmp_path / "ref", out)
+    path = out / "episodes" / "U+-2.json"
+    path.write_text(json.dumps(edit(json.loads(path.read_text())), indent=1))
+    with pytest.raises(LuminousError, match=f"U\\+-2.json: {field}"):
+        read_outcome(path, "U+", 2)
+    again = evaluate("random", "U+", INDICES, out_dir=out, env_kwargs=SMALL)
+    assert again.outcomes == reference.outcomes and len(again.replayed) == 1
+    assert tree(out) == tree(tmp_path / "ref")
+
+
 def test_another_episodes_outcome_is_played_again(tmp_path, fast):
     evaluate("random", "U+", INDICES, out_dir=tmp_path, env_kwargs=SMALL)
     other = (tmp_path / "episodes" / "U+-0.json").read_text()
@@ -173,8 +195,8 @@ def _corrupt(path: Path, draw) -> None:
         name = draw(st.sampled_from(sorted(record)))
         if kind == "delete_field" and name in ("split", "index", "task_type", "floor_plan", "layout", "end"):
             del record[name]
-        else:  # a value of another kind than the field's (a value of the same kind is an edit, not damage)
-            record[name] = draw(JSON.filter(lambda v, old=record[name]: type(v) is not type(old)))
+        else:  # any other value: of another kind (damage) or of the same kind (an edit, caught by the digest)
+            record[name] = draw(JSON.filter(lambda v, old=record[name]: v != old))
         path.write_text(json.dumps(record))
     elif kind == "folder":
         path.unlink()

@@ -11,7 +11,17 @@ import pytest
 
 from luminous_sim.env import EpisodeUnavailable
 from luminous_sim.errors import LuminousError
-from luminous_sim.eval import EpisodeJob, PolicyError, check_policy, evaluate, map_ordered, run_job, write_reports
+from luminous_sim.eval import (
+    EpisodeJob,
+    EpisodeOutcome,
+    PolicyError,
+    check_policy,
+    evaluate,
+    map_ordered,
+    run_job,
+    write_reports,
+)
+from luminous_sim.eval.evaluator import outcome_record
 from luminous_sim.splits import split_entry
 
 INDICES = [2, 0]
@@ -105,7 +115,7 @@ def test_outputs_resume_and_refuse_another_evaluation(tmp_path, oracle):
     kept = oracle.outcomes[0].to_dict() | {"instruction": "read back, not replayed"}
     saved = tmp_path / "episodes" / f"U+-{INDICES[0]}.json"
     saved.parent.mkdir()
-    saved.write_text(json.dumps(kept))
+    saved.write_text(json.dumps(outcome_record(EpisodeOutcome.from_dict(kept))))
     again = evaluate("oracle", "U+", INDICES[:1], out_dir=tmp_path)   # an earlier run finished this one
     assert again.outcomes[0].to_dict() == kept
     assert json.loads((tmp_path / "run.json").read_text())["policy"] == "oracle"
@@ -119,7 +129,7 @@ def test_outputs_resume_and_refuse_another_evaluation(tmp_path, oracle):
 
 def test_outcomes_are_written_as_they_finish(oracle_dir, oracle):
     for o in oracle.outcomes:
-        assert json.loads((oracle_dir / "episodes" / f"U+-{o.index}.json").read_text()) == o.to_dict()
+        assert json.loads((oracle_dir / "episodes" / f"U+-{o.index}.json").read_text()) == outcome_record(o)
 
 
 @pytest.mark.parametrize("spec, message", [

@@ -42,7 +42,7 @@ def test_malformed_input_is_exit_2_naming_file_and_field(tmp_path, capsys):
     assert not (tmp_path / "o").exists()
     code = main(["import-layout", str(FRONT), "--format", "luminous", "--out", str(tmp_path / "o")])
     err = capsys.readouterr().err
-    assert code == 2 and str(FRONT) in err and "room: Field required" in err
+    assert code == 2 and str(FRONT) in err and "room: required key is missing" in err
 
 
 def test_a_rejected_layout_is_exit_2_with_its_repair_report(tmp_path, capsys):

@@ -95,7 +95,7 @@ def test_a_clockwise_outline_is_a_layout_error_naming_the_room():
 def test_not_json_and_missing_files_are_layout_errors(tmp_path):
     with pytest.raises(LayoutError, match="not JSON"):
         loads("{", where="x.json")
-    with pytest.raises(LayoutError, match="no such layout file"):
+    with pytest.raises(LayoutError, match="missing.json: no such file; expected a luminous-layout/1 JSON file"):
         layouts.load(tmp_path / "missing.json")
 
 
@@ -113,7 +113,7 @@ def test_layout_size_and_kind_of_file_are_bounded(tmp_path):
     big.write_text(_json.dumps({"room": {}, "objects": [{}] * (MAX_LAYOUT_OBJECTS + 1)}))
     with _pytest.raises(LayoutError, match=f"big.json: objects: {MAX_LAYOUT_OBJECTS + 1} objects; a layout may hold"):
         load(big)
-    with _pytest.raises(LayoutError, match="a folder; expected a layout file"):
+    with _pytest.raises(LayoutError, match="a folder; expected a luminous-layout/1 JSON file"):
         load(tmp_path)
-    with _pytest.raises(LayoutError, match="/dev/null: not a regular file"):
+    with _pytest.raises(LayoutError, match="/dev/null: a device; expected"):
         load("/dev/null")

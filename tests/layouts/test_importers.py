@@ -70,11 +70,11 @@ def test_front_malformed_input_names_the_field(tmp_path):
     assert "furniture[0].category: missing" in msg and "model_info" in msg
     msg = _front_error(tmp_path, lambda d: d["scene"]["room"][1]["children"][2].update(pos=[1, "a"]),
                        model_info=MODEL_INFO)
-    assert "scene.room[1].children[2].pos: expected 3 numbers" in msg
+    assert "scene.room[1].children[2].pos: expected a list of 3 numbers, got [1, 'a']" in msg
     msg = _front_error(tmp_path, lambda d: d["furniture"][1].pop("bbox"), model_info=MODEL_INFO)
     assert "furniture[1].bbox: missing" in msg
     msg = _front_error(tmp_path, lambda d: d.pop("mesh"), model_info=MODEL_INFO)
-    assert msg.endswith(".mesh: missing")
+    assert msg.endswith("scene.json: mesh: missing")
 
     def no_floor(d):
         d["mesh"][0]["type"] = "Ceiling"
@@ -136,7 +136,9 @@ def test_missing_and_non_regular_files_are_refused(tmp_path):
 
     os.mkfifo(tmp_path / "fifo")
     for fn in (import_front, import_atiss):
-        with pytest.raises(LayoutError, match="no such file"):
+        with pytest.raises(LayoutError, match="fifo: a FIFO"):
             fn(tmp_path / "fifo")
+        with pytest.raises(LayoutError, match=f"{tmp_path}: a folder"):
+            fn(tmp_path)
         with pytest.raises(LayoutError, match="no such file"):
             fn(tmp_path / "missing.json")

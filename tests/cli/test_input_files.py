@@ -1,0 +1,104 @@
+"""Issue 27: every command that reads a file names a missing file, a folder, a device and a FIFO as such, and a
+malformed file with the file's name, in one line (exit 2), never a traceback; FIFOs are never opened (they
+would block)."""
+
+from __future__ import annotations
+
+import json
+import os
+from pathlib import Path
+
+import pytest
+
+from luminous_sim.cli.main import main
+from tests.cli.test_errors import one_line_error, run
+
+FRONT = Path(__file__).resolve().parents[1] / "layouts" / "fixtures" / "front_kitchen.json"
+
+COMMANDS = {
+    "cdf validate": lambda p, o: ["cdf", "validate", p],
+    "generate --cdf": lambda p, o: ["generate", "--cdf", p, "--out", o, "--no-physics"],
+    "generate --house": lambda p, o: ["generate", "--house", p, "--out", o, "--no-physics"],
+    "run --cdf": lambda p, o: ["run", "--cdf", p, "--out", o],
+    "import-layout luminous": lambda p, o: ["import-layout", p, "--format", "luminous", "--out", o],
+    "import-layout front": lambda p, o: ["import-layout", p, "--format", "front", "--out", o],
+    "import-layout atiss": lambda p, o: ["import-layout", p, "--format", "atiss", "--out", o],
+    "import-layout --model-info": lambda p, o: ["import-layout", str(FRONT), "--format", "front", "--model-info", p,
+                                                "--out", o],
+    "export-layout": lambda p, o: ["export-layout", p, "--out", o + ".json"],
+}
+KIND = {"missing": ("no such file", "cannot read"), "folder": ("a folder",), "device": ("a device",),
+        "fifo": ("a FIFO",), "malformed": ("not JSON", "invalid JSON", "not a valid scene file (not JSON")}
+
+
+@pytest.fixture()
+def inputs(tmp_path: Path) -> dict[str, str]:
+    os.mkfifo(tmp_path / "pipe.json")
+    (tmp_path / "dir.json").mkdir()
+    (tmp_path / "bad.json").write_text('{"a": [1,')
+    return {"missing": str(tmp_path / "missing.json"), "folder": str(tmp_path / "dir.json"), "device": "/dev/null",
+            "fifo": str(tmp_path / "pipe.json"), "malformed": str(tmp_path / "bad.json")}
+
+
+@pytest.mark.parametrize("case", list(KIND))
+@pytest.mark.parametrize("command", list(COMMANDS))
+def test_bad_input_files_are_named_in_one_line(command: str, case: str, inputs: dict[str, str], tmp_path: Path,
+                                               capsys: pytest.CaptureFixture[str]) -> None:
+    path = inputs[case]
+    out = str(tmp_path / "out")
+    code, _, err = run(COMMANDS[command](path, out), capsys)
+    assert code == 2 and one_line_error(err), err
+    assert path in err and any(k in err for k in KIND[case]), err
+    assert not Path(out).exists() and not Path(out + ".json").exists()
+
+
+@pytest.mark.parametrize(("content", "needle"), [
+    ("[]", "not a valid scene file (expected a JSON object, got list)"),
+    ("{}", "not a valid scene file (room: Field required; seed: Field required; generator: Field required (and 1 "
+           "more))"),
+    ('{"room": 3, "seed": "x", "generator": "g", "objects": []}', "not a valid scene file (room: "),
+])
+def test_export_layout_refuses_a_malformed_scene_in_one_line(content: str, needle: str, tmp_path: Path,
+                                                             capsys: pytest.CaptureFixture[str]) -> None:
+    scene = tmp_path / "scene.json"
+    scene.write_text(content)
+    code, _, err = run(["export-layout", str(scene), "--out", str(tmp_path / "l.json")], capsys)
+    assert code == 2 and one_line_error(err) and f"{scene}: {needle}" in err, err
+    assert not (tmp_path / "l.json").exists()
+
+
+def test_export_layout_names_a_scene_the_layout_format_refuses(tmp_path: Path,
+                                                               capsys: pytest.CaptureFixture[str]) -> None:
+    """A scene whose object the stricter layout model refuses (here a state on a type without the ability) is
+    named in one line, not a pydantic traceback."""
+    assert main(["generate", "--room-type", "Kitchen", "--seed", "1", "--out", str(tmp_path / "g"),
+                 "--no-physics"]) == 0
+    path = tmp_path / "g" / "scene.json"
+    data = json.loads(path.read_text())
+    chair = next(i for i, o in enumerate(data["objects"]) if o["type"] in ("Apple", "Bread", "Egg"))
+    data["objects"][chair]["states"] = {"isOpen": True}
+    path.write_text(json.dumps(data))
+    capsys.readouterr()
+    code, _, err = run(["export-layout", str(path), "--out", str(tmp_path / "l.json")], capsys)
+    assert code == 2 and one_line_error(err), err
+    oid = data["objects"][chair]["id"]
+    assert f"{path} (as a layout): objects[{chair}] ({oid}): states.isOpen: Apple is not openable" in err
+    assert not (tmp_path / "l.json").exists()
+
+
+def test_bc_checkpoints_and_demo_folders_are_named(tmp_path: Path) -> None:
+    pytest.importorskip("torch")
+    from luminous_sim.bc.demos import load_demos
+    from luminous_sim.bc.train import load_checkpoint
+    from luminous_sim.errors import LuminousError
+
+    garbage = tmp_path / "bad.pt"
+    garbage.write_text('{"a": [1,')
+    for path, needle in [(tmp_path, "a folder; expected a behaviour-cloning checkpoint"),
+                         (Path("/dev/null"), "not a regular file (a device or a FIFO)"),
+                         (garbage, "not a behaviour-cloning checkpoint (")]:
+        with pytest.raises(LuminousError) as err:
+            load_checkpoint(path)
+        assert str(err.value).startswith(f"{path}: {needle}") and "\n" not in str(err.value), str(err.value)
+    with pytest.raises(LuminousError, match="bad.pt: not a folder; expected the demonstrations folder"):
+        load_demos(garbage)
