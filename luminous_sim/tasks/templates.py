@@ -8,6 +8,7 @@ bottle in the garbage can"), with the names, articles, plurals and prepositions 
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator, Mapping
 
 import numpy as np
@@ -164,6 +165,18 @@ class _Fields(dict[str, str]):
         if article == "the":
             return where + definite(t, adjective)
         raise KeyError(key)
+
+
+def directive_words() -> set[str]:
+    """Every word a directive can use besides the objects' names (`language.names.words_of`): the templates'
+    own words and the articles, prepositions and adjectives their fields add, lower-cased."""
+    found = {"a", "an", "the", "some", "in", "on"}
+    for options in TEMPLATES.values():
+        for template in options:
+            for field in re.findall(r"\{(\w+)\}", template):
+                found |= {w for w in field.split("_") if w not in _ROLES}
+            found |= set(re.findall(r"[a-z]+", re.sub(r"\{\w+\}", " ", template)))
+    return found
 
 
 def fill_template(template: str, task: TaskInstance) -> str:
