@@ -65,6 +65,9 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="no raw_images/ and no video (ALFRED's loaders need raw_images; for quick checks)")
     b.add_argument("--no-video", action="store_true", help="no video.mp4 beside the raw images")
     b.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
+    b.add_argument("--speaker", type=Path, default=None, metavar="PATH",
+                   help="a learned speaker's checkpoint (`luminous speaker train`): its instructions replace the "
+                        "templates' in every trial (needs PyTorch)")
     b.set_defaults(func=_build, build_parser=b)
     p = actions.add_parser("minari", help="roll out the oracle in a registered env and write a Minari dataset",
                        epilog=EPILOG)
@@ -90,7 +93,13 @@ def _build(args: argparse.Namespace) -> int:
 
     if args.split is not None and args.count is None:
         args.build_parser.error("--count is required with --split")
-    options = BuildOptions(frames=not args.no_frames, video=not args.no_video)
+    speaker = None
+    if args.speaker is not None:
+        from luminous_sim.language.speaker.annotate import check_speaker
+
+        check_speaker(args.speaker, frames=not args.no_frames)
+        speaker = str(args.speaker.resolve())
+    options = BuildOptions(frames=not args.no_frames, video=not args.no_video, speaker=speaker)
     with make_backend(args.backend, args.workers, args.address) as backend:
         if args.split is not None:
             report = build_split(Path(args.out), args.split, args.count, backend, options,

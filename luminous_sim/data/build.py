@@ -82,14 +82,21 @@ class BuildError(LuminousError):
 
 @dataclass(frozen=True)
 class BuildOptions:
-    """What each trial holds beyond traj_data.json: frames (raw_images/) and a video of them."""
+    """What each trial holds beyond traj_data.json: frames (raw_images/) and a video of them; `speaker`: a
+    learned speaker's checkpoint whose instructions replace the templates' (`language.speaker.annotate`)."""
 
     frames: bool = True
     video: bool = True
+    speaker: str | None = None
 
     def settings(self) -> dict[str, Any]:
+        speaker = {}
+        if self.speaker is not None:
+            from luminous_sim.language.speaker.annotate import checkpoint_digest
+
+            speaker = {"speaker_sha256": checkpoint_digest(self.speaker)}
         return {"format": BUILD_FORMAT, "frames": self.frames, "video": self.video and self.frames,
-                "annotations": ANNOTATIONS}
+                "annotations": ANNOTATIONS, **speaker}
 
 
 @dataclass(frozen=True)
@@ -362,6 +369,10 @@ def _run_job(job: Any, out: Path, options: BuildOptions) -> Record:
     tmp.mkdir(parents=True)
     try:
         outcome = job.run(tmp, options)
+        if outcome.trial is not None and options.speaker is not None:
+            from luminous_sim.language.speaker.annotate import annotate_trial
+
+            annotate_trial(outcome.trial / "traj_data.json", options.speaker)
         if outcome.trial is not None and len(_inside(outcome.trial, tmp)) != 2:
             raise BuildError(f"job {job.key} wrote its trial at {outcome.trial}; expected {tmp}/<task>/<trial>")
     except Exception as exc:  # a bug in one job is recorded, not fatal to a build of thousands

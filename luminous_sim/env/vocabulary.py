@@ -11,9 +11,10 @@ from collections.abc import Iterable
 from functools import cache
 
 from luminous_sim.env.kinds import kind_templates
-from luminous_sim.language.names import spoken
+from luminous_sim.language.names import spoken, words_of
 from luminous_sim.language.verbs import COLOUR_NAMES, PREPOSITION, VERBS
 from luminous_sim.tasks import TEMPLATES
+from luminous_sim.tasks.templates import directive_words
 from luminous_sim.vocab import ALL_TYPES
 
 PAD, UNK = "<pad>", "<unk>"
@@ -32,13 +33,13 @@ def _template_words(templates: Iterable[str]) -> set[str]:
 @cache
 def vocabulary() -> tuple[str, ...]:
     """`<pad>` (id 0), `<unk>` (id 1), then the words, sorted."""
-    found = _template_words(t for options in TEMPLATES.values() for t in options)
+    found = _template_words(t for options in TEMPLATES.values() for t in options) | directive_words()
     found |= _template_words(kind_templates())
     found |= {w for verbs in VERBS.values() for v in verbs for w in words(v)}
     found |= set(COLOUR_NAMES) | set(PREPOSITION) | {"on", "a", "the", "then", "and"}
     for t in ALL_TYPES:
         found.add(t.lower())
-        found |= set(words(spoken(t)))
+        found |= set(words(spoken(t))) | words_of(t)
     return (PAD, UNK, *sorted(found))
 
 

@@ -9,8 +9,8 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from luminous_sim.language.names import spoken
-from luminous_sim.language.verbs import VERBS, colour_word, preposition
+from luminous_sim.language.names import preposition, spoken, type_from_word
+from luminous_sim.language.verbs import VERBS, colour_word
 from luminous_sim.scene.ids import type_of_id as type_of
 
 if TYPE_CHECKING:
@@ -68,9 +68,10 @@ class Describer:
         return None if o is None else np.array(o.position[:2])
 
     def landmark(self, object_id: str) -> str:
-        """The object named with a landmark next to it: "the counter by the window"."""
-        if "|" not in object_id:  # only a type name is known ("apple")
-            return f"the {object_id}" if object_id else "the next spot"
+        """The object named with a landmark next to it: "the counter by the window". The landmark is never the
+        object itself, one of its kind or anything named as it is (a sink basin's sink)."""
+        if "|" not in object_id:  # only a type name is known ("apple", or ALFRED's "countertop")
+            return f"the {spoken(type_from_word(object_id))}" if object_id else "the next spot"
         t = type_of(object_id)
         here = self._position(object_id)
         name = f"the {spoken(t)}"
@@ -78,7 +79,8 @@ class Describer:
             return name
         near = []
         for o in self.view.scene.objects:
-            if o.type in LANDMARK_TYPES and o.type != t and o.id != object_id and o.parent != object_id:
+            if (o.type in LANDMARK_TYPES and o.type != t and spoken(o.type) != spoken(t) and o.id != object_id
+                    and o.parent != object_id):
                 d = float(np.linalg.norm(np.array(o.position[:2]) - here))
                 if d < NEAR:
                     near.append((d, o.type))

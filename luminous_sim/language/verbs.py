@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from luminous_sim.language.names import IN, preposition
+
 VERBS: dict[str, tuple[str, ...]] = {
     "GotoLocation": ("go to", "walk to", "head to", "find"),
     "PickupObject": ("pick up", "take", "grab", "carry"),
@@ -16,9 +18,8 @@ VERBS: dict[str, tuple[str, ...]] = {
     "CloseObject": ("close", "shut"),
 }
 
-PREPOSITION = {"in": ("Fridge", "Microwave", "Cabinet", "Drawer", "Box", "Safe", "SinkBasin", "BathtubBasin",
-                      "GarbageCan", "LaundryHamper", "Mug", "Cup", "Bowl", "Pot", "Pan")}
-"""Receptacles things go *in*; everything else they go *on*."""
+PREPOSITION = {"in": tuple(sorted(IN))}
+"""Receptacles things go *in*; everything else they go *on* (`language.names.IN`)."""
 
 COLOUR_NAMES: dict[str, tuple[float, float, float]] = {
     "red": (0.8, 0.15, 0.15), "green": (0.3, 0.6, 0.25), "blue": (0.2, 0.35, 0.7), "yellow": (0.95, 0.8, 0.3),
@@ -32,5 +33,4 @@ def colour_word(rgb: tuple[float, float, float]) -> str:
     return min(COLOUR_NAMES, key=lambda n: sum((a - b) ** 2 for a, b in zip(rgb, COLOUR_NAMES[n])))
 
 
-def preposition(receptacle_type: str) -> str:
-    return "in" if receptacle_type in PREPOSITION["in"] else "on"
+__all__ = ["COLOUR_NAMES", "PREPOSITION", "VERBS", "colour_word", "preposition"]

@@ -1,21 +1,25 @@
-"""ALFRED's templated goal descriptions (A `gen/goal_library.py` `templates`, spec/alfred.md section 7).
+"""Goal directives from ALFRED's goal templates (A `gen/goal_library.py` `templates`, spec/alfred.md section 7).
 
-`{obj}`, `{recep}`, `{toggle}` and `{mrecep}` are filled with lower-cased type names
-("spraybottle"); for a sliced task `{obj}` is the parent type ("apple").
+ALFRED fills `{obj}`, `{recep}`, `{toggle}` and `{mrecep}` with lower-cased type names ("put a spraybottle in
+garbagecan"); those are kept verbatim in `ALFRED_TEMPLATES` (`alfred_description`). The directives the project
+writes (`task_description`) use `TEMPLATES`, the same templates as people would write them ("put a spray
+bottle in the garbage can"), with the names, articles, plurals and prepositions of `language.names`.
 """
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator, Mapping
 
 import numpy as np
 
 from luminous_sim.cdf.predicates import And, Atom, Exists, Expr, ForAll, Or, is_variable
+from luminous_sim.language.names import definite, indefinite, plural, preposition, spoken, type_from_word
 from luminous_sim.tasks.errors import TaskError
 from luminous_sim.tasks.model import TaskInstance
 from luminous_sim.tasks.types import TASK_TYPES
 
-TEMPLATES: dict[str, tuple[str, ...]] = {
+ALFRED_TEMPLATES: dict[str, tuple[str, ...]] = {
     "pick_and_place_simple": ("put a {obj} in {recep}", "put some {obj} on {recep}"),
     "pick_clean_then_place_in_recep": (
         "put a clean {obj} in {recep}",
@@ -72,11 +76,50 @@ TEMPLATES: dict[str, tuple[str, ...]] = {
         "put sliced {obj} in {recep}",
     ),
 }
-"""Goal key (task type, `_slice` when sliced) -> ALFRED's templates, in its order."""
+"""Goal key (task type, `_slice` when sliced) -> ALFRED's templates verbatim, in its order (filled with
+lower-cased type names by `alfred_description`)."""
+
+TEMPLATES: dict[str, tuple[str, ...]] = {
+    "pick_and_place_simple": ("put {a_obj} {in_recep}", "place {a_obj} {in_recep}"),
+    "pick_clean_then_place_in_recep": ("put {a_clean_obj} {in_recep}", "clean {a_obj} and put it {in_recep}"),
+    "pick_heat_then_place_in_recep": ("put {a_hot_obj} {in_recep}", "heat {a_obj} and put it {in_recep}"),
+    "pick_cool_then_place_in_recep": ("put {a_cold_obj} {in_recep}", "cool {a_obj} and put it {in_recep}"),
+    "pick_two_obj_and_place": ("put two {objs} {in_recep}", "find two {objs} and put them {in_recep}"),
+    "look_at_obj_in_light": ("look at {a_obj} under {the_toggle}", "examine {the_obj} by the light of {the_toggle}"),
+    "pick_and_place_with_movable_recep": (
+        "put {a_obj} {in_a_mrecep} and then put {the_mrecep} {in_recep}",
+        "put {a_mrecep} holding {a_obj} {in_recep}",
+        "carry {a_obj} {in_a_mrecep} to {the_recep}",
+    ),
+    "pick_clean_then_place_in_recep_slice": (
+        "put {a_clean_slice} {in_recep}",
+        "clean {a_slice} and put it {in_recep}",
+    ),
+    "pick_heat_then_place_in_recep_slice": ("put {a_hot_slice} {in_recep}", "heat {a_slice} and put it {in_recep}"),
+    "pick_cool_then_place_in_recep_slice": ("put {a_cold_slice} {in_recep}", "cool {a_slice} and put it {in_recep}"),
+    "pick_two_obj_and_place_slice": ("put two {slices} {in_recep}", "find two {slices} and put them {in_recep}"),
+    "look_at_obj_in_light_slice": (
+        "look at {a_slice} under {the_toggle}",
+        "examine {the_slice} by the light of {the_toggle}",
+    ),
+    "pick_and_place_with_movable_recep_slice": (
+        "put {a_slice} {in_a_mrecep} and then put {the_mrecep} {in_recep}",
+        "put {a_mrecep} holding {a_slice} {in_recep}",
+        "carry {a_slice} {in_a_mrecep} to {the_recep}",
+    ),
+    "pick_and_place_simple_slice": ("slice {a_obj} and put a slice {in_recep}", "put {a_slice} {in_recep}"),
+}
+"""Goal key -> ALFRED's goal templates (`ALFRED_TEMPLATES`, one for one) as people would write them: the
+objects named in words with articles, the receptacle with its preposition, plurals for two objects.
+
+A field is a role (`obj`: the object, for a sliced task its parent "apple"; `slice`: one slice of it; `objs`,
+`slices`: their plurals; `recep`, `toggle`, `mrecep`), after an optional `in` (the receptacle's preposition,
+and "the" unless `a` follows), `a` or `the`, and adjectives: `{a_hot_slice}` -> "a hot slice of apple",
+`{in_recep}` -> "on the counter", `{in_a_mrecep}` -> "in a bowl", `{obj}` -> "apple"."""
 
 _PHRASES: dict[str, str] = {
-    "inReceptacle": "put the {0} in the {1}",
-    "inReceptacleObject": "put the {0} in the {1}",
+    "inReceptacle": "put the {0} {in1} the {1}",
+    "inReceptacleObject": "put the {0} {in1} the {1}",
     "isHot": "heat the {0}",
     "isCool": "cool the {0}",
     "isClean": "clean the {0}",
@@ -89,15 +132,76 @@ _PHRASES: dict[str, str] = {
 }
 
 
+_ROLES = ("obj", "objs", "slice", "slices", "recep", "toggle", "mrecep")
+
+
+class _Fields(dict[str, str]):
+    """A template's fields for a task, made on demand from their names (see `TEMPLATES`)."""
+
+    def __init__(self, task: TaskInstance):
+        super().__init__()
+        p = task.params
+        sliced = f"{p.object_target}Sliced"
+        self.types = {"obj": p.object_target, "objs": p.object_target, "slice": sliced, "slices": sliced,
+                      "recep": p.parent_target, "toggle": p.toggle_target, "mrecep": p.mrecep_target}
+
+    def __missing__(self, key: str) -> str:
+        *mods, role = key.split("_")
+        if role not in self.types:
+            raise KeyError(key)
+        t = self.types[role]
+        if role in ("objs", "slices"):
+            return plural(t)
+        where = ""
+        if mods and mods[0] == "in":
+            where, mods = preposition(t) + " ", mods[1:]
+            if not mods or mods[0] not in ("a", "the"):
+                mods = ["the", *mods]
+        if not mods:
+            return spoken(t)
+        article, adjective = mods[0], " ".join(mods[1:])
+        if article == "a":
+            return where + indefinite(t, adjective)
+        if article == "the":
+            return where + definite(t, adjective)
+        raise KeyError(key)
+
+
+def directive_words() -> set[str]:
+    """Every word a directive can use besides the objects' names (`language.names.words_of`): the templates'
+    own words and the articles, prepositions and adjectives their fields add, lower-cased."""
+    found = {"a", "an", "the", "some", "in", "on"}
+    for options in TEMPLATES.values():
+        for template in options:
+            for field in re.findall(r"\{(\w+)\}", template):
+                found |= {w for w in field.split("_") if w not in _ROLES}
+            found |= set(re.findall(r"[a-z]+", re.sub(r"\{\w+\}", " ", template)))
+    return found
+
+
 def fill_template(template: str, task: TaskInstance) -> str:
-    """A template with the task's lower-cased type names filled in."""
+    """One of `TEMPLATES` with the task's objects named in words: "put a hot slice of apple on the counter"."""
+    return template.format_map(_Fields(task))
+
+
+def alfred_description(task: TaskInstance, rng: np.random.Generator) -> str:
+    """ALFRED's own templated goal description: one of `ALFRED_TEMPLATES` drawn uniformly with `rng`, filled with
+    lower-cased type names as ALFRED does ("put a spraybottle in garbagecan")."""
+    options = _options(ALFRED_TEMPLATES, task)
     p = task.params
-    return template.format(
+    return options[int(rng.integers(len(options)))].format(
         obj=p.object_target.lower(),
         recep=p.parent_target.lower(),
         toggle=p.toggle_target.lower(),
         mrecep=p.mrecep_target.lower(),
     )
+
+
+def _options(table: Mapping[str, tuple[str, ...]], task: TaskInstance) -> tuple[str, ...]:
+    options = table.get(task.goal_key)
+    if options is None:
+        raise TaskError(f"no goal templates for {task.goal_key!r}; expected one of {', '.join(table)}")
+    return options
 
 
 def _positive_atoms(
@@ -119,14 +223,17 @@ def _spoken_goal(task: TaskInstance) -> str:
         if atom.pred not in _PHRASES:
             continue
         words = [(scope.get(a) or "object") if is_variable(a) else a for a in atom.args]
-        phrase = _PHRASES[atom.pred].format(*(w.replace("_", " ").lower() for w in words))
+        types = [type_from_word(w.split("|")[0].replace("_", "")) for w in words]
+        names = [spoken(t) if t[:1].isupper() else w.replace("_", " ").lower() for w, t in zip(words, types)]
+        in1 = preposition(types[1]) if len(types) > 1 and types[1][:1].isupper() else "in"
+        phrase = _PHRASES[atom.pred].format(*names, in1=in1)
         if phrase not in phrases:
             phrases.append(phrase)
     return " and ".join(phrases)
 
 
 def task_description(task: TaskInstance, rng: np.random.Generator) -> str:
-    """ALFRED's templated goal description, a template drawn uniformly with `rng`.
+    """The goal directive: one of the task's `TEMPLATES` (ALFRED's, in words) drawn uniformly with `rng`.
 
     A custom task whose type and parameters are ALFRED's uses ALFRED's templates; any other custom
     goal is read out atom by atom (negations and quantifiers are not spoken).
@@ -137,9 +244,5 @@ def task_description(task: TaskInstance, rng: np.random.Generator) -> str:
     known = task.task_type in TASK_TYPES and bool(task.params.object_target)
     if task.custom and not known:
         return _spoken_goal(task)
-    options = TEMPLATES.get(task.goal_key)
-    if options is None:
-        raise TaskError(
-            f"no goal templates for {task.goal_key!r}; expected one of {', '.join(TEMPLATES)}"
-        )
+    options = _options(TEMPLATES, task)
     return fill_template(options[int(rng.integers(len(options)))], task)

@@ -144,8 +144,8 @@ def test_task_from_the_look_at_example():
     assert task.custom and task.task_type == "look_at_obj_in_light" and task.scene_seed == 4
     assert task.params == PddlParams("Book", toggle_target="DeskLamp")
     assert task.instruction in {
-        "look at book under the desklamp",
-        "examine the book with the desklamp",
+        "look at a book under the desk lamp",
+        "examine the book by the light of the desk lamp",
     }
     layout = {
         "Bed|1": ("Bed", None),

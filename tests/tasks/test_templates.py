@@ -14,6 +14,7 @@ from luminous_sim.tasks import (
     goal_for,
     task_description,
 )
+from luminous_sim.tasks.templates import ALFRED_TEMPLATES, alfred_description
 from luminous_sim.tasks.types import TASK_TYPES
 
 
@@ -21,16 +22,24 @@ def _task(task_type: str, params: PddlParams) -> TaskInstance:
     return TaskInstance(task_type, params, goal_for(params, task_type), 0)
 
 
-def test_every_goal_key_has_templates():
-    assert set(TEMPLATES) == set(TASK_TYPES) | {t + "_slice" for t in TASK_TYPES}
+def test_every_goal_key_has_templates_one_for_one_with_alfreds():
+    assert set(TEMPLATES) == set(TASK_TYPES) | {t + "_slice" for t in TASK_TYPES} == set(ALFRED_TEMPLATES)
+    assert all(len(TEMPLATES[k]) == len(ALFRED_TEMPLATES[k]) for k in TEMPLATES)
 
 
-def test_templates_are_filled_with_lower_cased_types_and_drawn_uniformly():
+def test_templates_are_filled_with_names_in_words_and_drawn_uniformly():
     t = _task("pick_and_place_simple", PddlParams("SprayBottle", "GarbageCan"))
     rng = np.random.default_rng(0)
     seen = [task_description(t, rng) for _ in range(200)]
-    assert set(seen) == {"put a spraybottle in garbagecan", "put some spraybottle on garbagecan"}
-    assert 70 < seen.count("put a spraybottle in garbagecan") < 130
+    assert set(seen) == {"put a spray bottle in the garbage can", "place a spray bottle in the garbage can"}
+    assert 70 < seen.count("put a spray bottle in the garbage can") < 130
+
+
+def test_alfreds_own_templates_are_filled_with_lower_cased_types():
+    t = _task("pick_and_place_simple", PddlParams("SprayBottle", "GarbageCan"))
+    rng = np.random.default_rng(0)
+    seen = {alfred_description(t, rng) for _ in range(60)}
+    assert seen == {"put a spraybottle in garbagecan", "put some spraybottle on garbagecan"}
 
 
 @pytest.mark.parametrize(
@@ -40,28 +49,28 @@ def test_templates_are_filled_with_lower_cased_types_and_drawn_uniformly():
             "pick_heat_then_place_in_recep",
             PddlParams("Apple", "CounterTop", object_sliced=True),
             {
-                "put a hot slice of apple in countertop",
-                "heat some sliced apple and put it in countertop",
+                "put a hot slice of apple on the counter",
+                "heat a slice of apple and put it on the counter",
             },
         ),
         (
             "look_at_obj_in_light",
             PddlParams("Book", toggle_target="DeskLamp"),
-            {"look at book under the desklamp", "examine the book with the desklamp"},
+            {"look at a book under the desk lamp", "examine the book by the light of the desk lamp"},
         ),
         (
             "pick_and_place_with_movable_recep",
             PddlParams("Pencil", "Shelf", mrecep_target="Mug"),
             {
-                "put pencil in a mug and then put them in shelf",
-                "put a mug of pencil in shelf",
-                "put pencil mug in shelf",
+                "put a pencil in a mug and then put the mug on the shelf",
+                "put a mug holding a pencil on the shelf",
+                "carry a pencil in a mug to the shelf",
             },
         ),
         (
             "pick_two_obj_and_place",
             PddlParams("KeyChain", "Sofa"),
-            {"put two keychain in sofa", "find two keychain and put them in sofa"},
+            {"put two key chains on the sofa", "find two key chains and put them on the sofa"},
         ),
     ],
 )
@@ -84,11 +93,14 @@ def test_custom_goals_are_read_out():
     t = TaskInstance("custom", PddlParams(""), goal, 0, custom=True)
     assert (
         task_description(t, np.random.default_rng(0))
-        == "heat the apple and put the apple in the dining table"
+        == "heat the apple and put the apple on the dining table"
     )
     goal = parse_expr("(exists (?o - Mug) (isClean ?o))")
     t = TaskInstance("custom", PddlParams(""), goal, 0, custom=True)
     assert task_description(t, np.random.default_rng(0)) == "clean the mug"
+    goal = parse_expr("(exists (?o - DishSponge) (inReceptacle ?o fridge))")
+    t = TaskInstance("custom", PddlParams(""), goal, 0, custom=True)
+    assert task_description(t, np.random.default_rng(0)) == "put the dish sponge in the fridge"
 
 
 def test_unknown_goal_key():
