@@ -7,5 +7,16 @@ from luminous_sim.thor.event import Event, object_color, object_name
 from luminous_sim.thor.scenes import DATA_VAR, SceneIndex, ThorSceneError, Trial, poses_key
 from luminous_sim.thor.shim import activate, write_shim
 
-__all__ = ["Controller", "Event", "SceneIndex", "Trial", "ThorSceneError", "DATA_VAR", "poses_key", "object_name",
-           "object_color", "write_shim", "activate"]
+__all__ = [
+    "DATA_VAR",
+    "Controller",
+    "Event",
+    "SceneIndex",
+    "ThorSceneError",
+    "Trial",
+    "activate",
+    "object_color",
+    "object_name",
+    "poses_key",
+    "write_shim",
+]

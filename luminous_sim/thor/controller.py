@@ -12,9 +12,10 @@ Actions ALFRED issues and what they do here:
 |---|---|
 | `Initialize` | records `gridSize` (0.25 only), `visibility_distance` and the render flags; succeeds |
 | `SetObjectToggles` | checks that each listed type's objects start in the listed state (our scenes are built so) |
-| `SetStateOfAllObjects` | `CanBeDirty`: every dirtyable pickupable object starts dirty (as our episodes set a cleaning task up); `CanBeFilled`: nothing starts filled |
+| `SetStateOfAllObjects` | `CanBeDirty`: dirtyable pickupable objects start dirty (as our cleaning episodes); |
+| | `CanBeFilled`: nothing starts filled |
 | `SetObjectPoses` | identifies the trial's scene in `LUMINOUS_ALFRED_DATA` and builds it (or puts a built one back) |
-| `MoveAhead`, `RotateLeft/Right`, `LookUp/Down`, `Teleport`, `TeleportFull`, `Pass` | the World's (render flags dropped) |
+| `MoveAhead`, `RotateLeft/Right`, `LookUp/Down`, `Teleport(Full)`, `Pass` | the World's (render flags dropped) |
 | `OpenObject`, `CloseObject`, `PickupObject`, `PutObject`, `ToggleObjectOn/Off`, `SliceObject` | the World's |
 | `CleanObject` | a dirty dirtyable object becomes clean (ALFRED sends it after switching a faucet on) |
 | `GetReachablePositions` | `metadata["reachablePositions"]` (and `actionReturn`): the agent's grid |

@@ -47,8 +47,8 @@ class Event:
                  instance_masks: dict[str, np.ndarray] | None = None,
                  instance_detections2D: dict[str, Any] | None = None):
         self.metadata = metadata
-        self.screen_width = int(metadata.get("screenWidth", frame.shape[1]))
-        self.screen_height = int(metadata.get("screenHeight", frame.shape[0]))
+        self.screen_width = int(metadata.get("screenWidth") or frame.shape[1])
+        self.screen_height = int(metadata.get("screenHeight") or frame.shape[0])
         self.frame = frame
         self.depth_frame = depth_frame
         self.normals_frame: np.ndarray | None = None
@@ -86,7 +86,7 @@ class Event:
         agent = self.metadata["agent"]
         loc = agent["position"]
         return (int(loc["x"] / STEP_SIZE), int(loc["z"] / STEP_SIZE), int(agent["rotation"]["y"] / 90.0),
-                int(round(agent["cameraHorizon"])))
+                round(agent["cameraHorizon"]))
 
     def get_object(self, object_id: str) -> dict[str, Any] | None:
         for obj in self.metadata["objects"]:
