@@ -24,18 +24,21 @@ REPO = Path(__file__).resolve().parents[2]
 DRIVER = Path(__file__).with_name("alfred_driver.py")
 
 
-def _build_split(out: Path, split: str, count: int) -> Path:
-    from luminous_sim.data import BuildOptions, build_split
+def _build_split(out: Path, split: str, count: int, start: int = 0) -> Path:
+    from luminous_sim.data import BuildOptions, build, split_jobs
 
-    report = build_split(out, split, count, options=BuildOptions(frames=False, video=False), progress=False)
+    report = build(out, split_jobs(split, count, start), options=BuildOptions(frames=False, video=False),
+                   progress=False)
     assert report.built == count, report.summary()
     return out
 
 
 @pytest.fixture(scope="module")
 def splus1(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    """S+ episode 0 (a pick_and_place_simple trial), built without frames."""
-    return _build_split(tmp_path_factory.mktemp("thor") / "splus1", "S+", 1)
+    """S+ episode 3 (look_at_obj_in_light, the shortest of the first few: 45 actions), built without frames.
+    Not episode 0: its goal ("a Knife in a SinkBasin") is met at the start by ALFRED's substring matching
+    (a ButterKnife lies in the basin), so its negative control could not fail."""
+    return _build_split(tmp_path_factory.mktemp("thor") / "splus1", "S+", 1, start=3)
 
 
 @pytest.fixture(scope="module")
@@ -215,7 +218,8 @@ def run_driver(data: list[Path], alfred: Path, modes: list[str], out: Path, time
 
 def test_alfred_evaluation_loop_judges_our_trial_and_the_negative_controls(splus1: Path, alfred: Path,
                                                                            tmp_path: Path):
-    rows = run_driver([splus1], alfred, ["spawn", "eval", "negatives"], tmp_path / "rows.jsonl")
+    rows = run_driver([splus1], alfred, ["spawn", "eval", "negatives"], tmp_path / "rows.jsonl",
+                      extra=["--negatives-type", "look_at_obj_in_light"])
     crashes = [r for r in rows if "crash" in r]
     assert not crashes, crashes
     by_mode = {r["mode"]: r for r in rows}
