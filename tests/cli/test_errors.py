@@ -143,7 +143,8 @@ def test_fifo_cdf_is_refused_without_reading(tmp_path):
     code = f"import sys; from luminous_sim.cli.main import main; sys.exit(main(['cdf', 'validate', {str(fifo)!r}]))"
     proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=120, cwd=REPO,
                           env={**os.environ, "PYTHONPATH": str(REPO)})
-    assert proc.returncode == 2 and "a FIFO (named pipe); expected a regular CDF file" in proc.stderr and str(fifo) in proc.stderr
+    assert proc.returncode == 2
+    assert "a FIFO (named pipe); expected a regular CDF file" in proc.stderr and str(fifo) in proc.stderr
 
 
 # item 10: PyBullet's connect message
