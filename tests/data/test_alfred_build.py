@@ -154,10 +154,11 @@ def test_a_missing_empty_or_malformed_split_folder_is_refused_naming_it(tmp_path
     bad = tmp_path / "bad" / "pick_and_place_simple-Mug-None-Shelf-1" / "trial_T1" / "traj_data.json"
     bad.parent.mkdir(parents=True)
     bad.write_text('{"task_type": "pick_and_place_simple"')
-    assert f"{bad}: not a readable traj_data.json" in refused(tmp_path / "bad")
+    assert f"{bad}: not JSON" in refused(tmp_path / "bad")
     bad.write_text(json.dumps({"task_type": "stack_blocks", "pddl_params": {"object_target": "Mug"},
                                "scene": {"floor_plan": "FloorPlan1", "scene_num": 1}}))
-    assert f"{bad}: task_type 'stack_blocks' is not one of ALFRED's" in refused(tmp_path / "bad")
+    # the one ALFRED reader (as `alfred parse`) checks the required keys before their values
+    assert f"{bad}: missing key 'plan.high_pddl'" in refused(tmp_path / "bad")
     assert not (tmp_path / "b").exists()
     with pytest.raises(DesignError, match="not a folder"):
         design_jobs(bad)
