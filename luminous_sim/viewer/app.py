@@ -5,6 +5,8 @@ wheel and is served from this process: the page fetches nothing from anywhere el
 
 from __future__ import annotations
 
+import contextlib
+import io
 import math
 import threading
 import time
@@ -29,6 +31,8 @@ WALK_STEP = 0.25
 TURN_STEP = 30.0
 PLAY_INTERVAL = 0.35
 """Seconds per step when an episode plays."""
+AMBIENT = 1.6
+"""The ambient light's intensity (with viser's default lights and no environment map)."""
 AGENT_FOV = math.radians(90.0)
 """The agent camera's field of view (ALFRED's)."""
 
@@ -84,7 +88,8 @@ class Viewer:
         self.selected: str | None = None
         self._playing = threading.Event()
         self._stop = threading.Event()
-        self.server = viser.ViserServer(host=host, port=port, label="Luminous-Sim", verbose=False)
+        with contextlib.redirect_stdout(io.StringIO()):  # viser's banner: `luminous view` prints its own line
+            self.server = viser.ViserServer(host=host, port=port, label="Luminous-Sim", verbose=False)
         t0 = time.perf_counter()
         self._add_scene(posed)
         self._add_gui()
@@ -112,11 +117,15 @@ class Viewer:
     def _add_scene(self, posed: PosedScene) -> None:
         s = self.server.scene
         s.set_up_direction("+z")
-        s.configure_environment_map(hdri="apartment", background=False, environment_intensity=0.8)
+        # no shadows and no environment map: in a browser without a GPU (software WebGL) each costs more than
+        # the rest of the page (the map: seconds of filtering before the first frame); an ambient light fills in
+        s.configure_default_lights(enabled=True, cast_shadow=False)
+        s.configure_environment_map(hdri=None)
+        s.add_light_ambient("/lights/ambient", intensity=AMBIENT)
         (x0, y0), (x1, y1) = bounds(self.scene)
         cx, cy, extent = (x0 + x1) / 2, (y0 + y1) / 2, max(x1 - x0, y1 - y0, 2.0)
         self.centre = (cx, cy)
-        self.server.initial_camera.position = (cx, cy - 0.55 * extent, 1.25 * extent + 1.0)
+        self.server.initial_camera.position = (cx, cy - 0.4 * extent, 1.1 * extent + 1.0)
         self.server.initial_camera.look_at = (cx, cy, 0.0)
         self.walls: list[Any] = []
         for box in posed.structure:
