@@ -256,7 +256,8 @@ class Viewer:
         with gui.add_folder("Episode"):
             gui.add_markdown(f"**task** {episode.task_desc}  \n{episode.task_type}: "
                              f"{'solved' if episode.success else 'not solved'}, {last} actions")
-            self.step_slider = gui.add_slider("Step", min=0, max=max(last, 1), step=1, initial_value=0,
+            # Any: viser's `value` has a setter that mypy cannot see (an asymmetric property)
+            self.step_slider: Any = gui.add_slider("Step", min=0, max=max(last, 1), step=1, initial_value=0,
                                               disabled=last == 0)
             buttons = gui.add_button_group("Play", ("Prev", "Play", "Pause", "Next"))
             self.follow = gui.add_checkbox("See through the agent's eyes", initial_value=False)
@@ -306,6 +307,7 @@ class Viewer:
         if self.follow.value:
             for client in self.server.get_clients().values():
                 with client.atomic():
+                    client.camera.fov = AGENT_FOV
                     client.camera.position = tuple(eye)
                     client.camera.look_at = tuple(eye + forward)
 
