@@ -26,7 +26,8 @@ DEMO_TASKS = ("pick_heat_then_place_in_recep", "pick_cool_then_place_in_recep", 
 
 
 def run_demo_episode(out: Path, seed: int = 0):
-    """A generated kitchen, an ALFRED task and the oracle's trajectory, written under `out`."""
+    """A generated kitchen, an ALFRED task and the oracle's trajectory, written under `out` with the kitchen's
+    scene.json (`luminous view OUT --trajectory OUT` plays it)."""
     from luminous_sim.episode import run_episode
 
     scene = generate(empty_cdf("Kitchen"), seed=seed).scene
@@ -35,6 +36,7 @@ def run_demo_episode(out: Path, seed: int = 0):
         result, _ = run_episode(scene, task_type, seed, out_dir=Path(out), extra_annotations=0)
         if result.success:
             break
+    scene.save(Path(out) / "scene.json")  # the episode's scene beside it, so `luminous view` opens the folder
     return result
 
 

@@ -15,7 +15,7 @@ LAYER = {
     "world": 2,
     "tasks": 3, "planning": 3, "language": 3, "splits": 3,
     "env": 4,
-    "data": 5, "eval": 5, "export": 5, "thor": 5, "bc": 5, "cli": 5, "layouts": 5, "demo": 5, "episode": 5,
+    "data": 5, "eval": 5, "export": 5, "thor": 5, "viewer": 5, "bc": 5, "cli": 5, "layouts": 5, "demo": 5, "episode": 5,
     "cdf_episode": 5,
     "scene_outputs": 5,
 }

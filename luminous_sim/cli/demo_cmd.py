@@ -31,5 +31,7 @@ def _run(args: argparse.Namespace) -> int:
         gc = f"{ep.goal_conditions[0]}/{ep.goal_conditions[1]}"
         print(f"episode    {ep.task_type}: {'solved' if ep.success else 'NOT solved'} ({gc} goal conditions, "
               f"{ep.low_actions} low-level actions) -> {ep.out_dir}/ (trajectory.json, frames/, video.mp4, "
-              f"top_down.png, instructions.txt)")
+              f"top_down.png, instructions.txt, scene.json)")
+        print(f"view       luminous view {ep.out_dir} --trajectory {ep.out_dir}   (the scene and the episode in the "
+              "browser; needs the `view` extra)")
     return 0

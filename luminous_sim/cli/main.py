@@ -37,6 +37,7 @@ SUBCOMMAND_MODULES: tuple[str, ...] = (
     "luminous_sim.cli.rooms_cmd",
     "luminous_sim.cli.run_cmd",
     "luminous_sim.cli.speaker_cmd",
+    "luminous_sim.cli.view_cmd",
 )
 
 
