@@ -10,7 +10,7 @@ from dataclasses import asdict, dataclass, field, fields
 from pathlib import Path
 from typing import Any
 
-from luminous_sim.env.kinds import TASK_KINDS
+from luminous_sim.env.kinds import KIND_OPTIONS, TASK_KINDS
 from luminous_sim.errors import LuminousError
 from luminous_sim.vocab import ALFRED_TASK_TYPES, ROOM_TYPES
 
@@ -60,6 +60,9 @@ class EnvConfig:
             reset; see `luminous_sim.env.cdf_scenes`): a CDF's own task is the goal, else a task of
             `task_types` is drawn. `reset(options={"cdf": path, "scene_seed": s})` does the same for one
             episode of any env; () (the default) generates scenes on the fly.
+        task_options: options of the task kinds, by name (`luminous_sim.env.kinds.KIND_OPTIONS`: `objectnav`'s
+            `success_distance` and `min_start_distance` in metres, `objectnav_pickup`'s `min_start_distance`);
+            each kind takes its own, the rest keep their defaults.
     """
 
     task_types: tuple[str, ...] = ALFRED_TASK_TYPES
@@ -85,6 +88,7 @@ class EnvConfig:
     min_visible_pixels: int = 0
     split: str = ""
     cdf: tuple[str, ...] = ()
+    task_options: dict[str, float] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         for f in fields(self):
@@ -95,9 +99,10 @@ class EnvConfig:
                 if isinstance(value, str) or not all(isinstance(v, str) for v in value):
                     raise LuminousError(f"env config {f.name}: expected a list of names, got {value!r}")
                 object.__setattr__(self, f.name, tuple(value))
-            elif f.name == "reward":
-                if not isinstance(value, dict) or not all(isinstance(v, (int, float)) for v in value.values()):
-                    raise LuminousError(f"env config reward: expected a table of numbers, got {value!r}")
+            elif f.name in ("reward", "task_options"):
+                if not isinstance(value, dict) or not all(isinstance(v, (int, float)) and not isinstance(v, bool)
+                                                          for v in value.values()):
+                    raise LuminousError(f"env config {f.name}: expected a table of numbers, got {value!r}")
             elif f.type == "bool" and not isinstance(value, bool):
                 raise LuminousError(f"env config {f.name}: expected true or false, got {value!r}")
             elif f.type == "int" and (isinstance(value, bool) or not isinstance(value, int)):
@@ -110,6 +115,13 @@ class EnvConfig:
         bad = [t for t in self.task_types if t not in TASK_KINDS]
         if not self.task_types or bad:
             raise LuminousError(f"env config task_types: {bad or 'empty'}; expected some of {', '.join(TASK_KINDS)}")
+        known = {o for t in self.task_types for o in KIND_OPTIONS.get(t, ())}
+        bad = sorted(set(self.task_options) - known)
+        if bad:
+            raise LuminousError(f"env config task_options: {bad}; the task types {', '.join(self.task_types)} take "
+                                f"{', '.join(sorted(known)) or 'none'}")
+        if any(v < 0 for v in self.task_options.values()):
+            raise LuminousError(f"env config task_options: expected distances >= 0, got {self.task_options}")
         bad = [r for r in self.room_types if r not in ROOM_TYPES]
         if bad:
             raise LuminousError(f"env config room_types: {bad}; expected some of {', '.join(ROOM_TYPES)}")

@@ -81,13 +81,27 @@ def room_types(config: EnvConfig, task_type: str) -> list[str]:
     return chosen or allowed
 
 
-def draw_goal(world: World, scene: Scene, task_type: str, rng: np.random.Generator) -> Goal:
-    """A goal of the kind that fits this world (`TaskKind.draw_goal`).
+def draw_goal(world: World, scene: Scene, task_type: str, rng: np.random.Generator,
+              options: dict[str, float] | None = None) -> Goal:
+    """A goal of the kind that fits this world (`TaskKind.draw_goal`, the kind configured with `options`).
 
     Raises:
         TaskSamplingError: none fits.
     """
-    return task_kind(task_type).draw_goal(world, scene, rng)
+    return task_kind(task_type).configured(options or {}).draw_goal(world, scene, rng)
+
+
+def draw_start(world: World, goal: Goal, task_type: str, rng: np.random.Generator,
+               options: dict[str, float] | None = None) -> AgentPose | None:
+    """The kind's start for the goal (`TaskKind.draw_start`), set in `world`; None keeps the default start.
+
+    Raises:
+        TaskSamplingError: no start fits.
+    """
+    start = task_kind(task_type).configured(options or {}).draw_start(world, goal, rng)
+    if start is not None:
+        world.set_start(start)
+    return start
 
 
 def _prove(episode: Episode, worlds: WorldPool) -> ExpertPlan | None:
@@ -142,12 +156,13 @@ def draw_episode(config: EnvConfig, rng: np.random.Generator, worlds: WorldPool,
         world = worlds.get(candidate)
         dirty = set_up_world(world, task_type)
         try:
-            goal = draw_goal(world, candidate, task_type, rng)
+            goal = draw_goal(world, candidate, task_type, rng, config.task_options)
+            start = draw_start(world, goal, task_type, rng, config.task_options)
         except TaskSamplingError as exc:
             worlds.put(world)
             why.append(str(exc))
             continue
-        episode = Episode(candidate, goal, dirty, redraws=len(why))
+        episode = Episode(candidate, goal, dirty, redraws=len(why), start=start)
         if config.verify_expert:
             plan = _prove(episode, worlds)
             if plan is None:
@@ -155,7 +170,7 @@ def draw_episode(config: EnvConfig, rng: np.random.Generator, worlds: WorldPool,
                 why.append(f"the expert does not solve {goal.instruction!r} in {candidate.room.name} "
                            f"(seed {candidate.seed})")
                 continue
-            episode = Episode(candidate, goal, dirty, plan, len(why))
+            episode = Episode(candidate, goal, dirty, plan, len(why), start)
         return episode, world
     raise LuminousError(f"no episode of {', '.join(config.task_types)} after {config.scene_attempts} attempts: "
                         + "; ".join(why[-3:]))
@@ -224,16 +239,17 @@ def split_episode(config: EnvConfig, entry: SplitEntry, worlds: WorldPool) -> tu
         world = worlds.get(scene)
         dirty = set_up_world(world, entry.task_type)
         try:
-            goal = draw_goal(world, scene, entry.task_type, rng)
+            goal = draw_goal(world, scene, entry.task_type, rng, config.task_options)
+            start = draw_start(world, goal, entry.task_type, rng, config.task_options)
         except TaskSamplingError as exc:
             worlds.put(world)
             raise EpisodeUnavailable(entry, "no_task", str(exc)) from None
-        episode = Episode(scene, goal, dirty, redraws=len(unsolved))
+        episode = Episode(scene, goal, dirty, redraws=len(unsolved), start=start)
         if not config.verify_expert:
             return episode, world
         plan = _prove(episode, worlds)
         if plan is not None:
-            return Episode(scene, goal, dirty, plan, redraws=len(unsolved)), world
+            return Episode(scene, goal, dirty, plan, redraws=len(unsolved), start=start), world
         worlds.put(world)
         unsolved.append(goal.instruction)
     raise EpisodeUnavailable(entry, "expert", f"the expert solves none of the {len(unsolved)} tasks drawn: "

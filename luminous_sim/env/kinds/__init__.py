@@ -25,11 +25,18 @@ KINDS: dict[str, str] = {
     **dict.fromkeys(ALFRED_TASK_TYPES, "alfred:AlfredKind"),
     "goto_object": "goto_object:GotoObject",
     "pickup_object": "pickup_object:PickupObject",
+    "objectnav": "objectnav:ObjectNav",
+    "objectnav_pickup": "objectnav_pickup:ObjectNavPickup",
 }
 """Kind name -> `module:Class` in this package (the class is made with the name)."""
 TASK_KINDS: tuple[str, ...] = tuple(KINDS)
+KIND_OPTIONS: dict[str, tuple[str, ...]] = {
+    "objectnav": ("success_distance", "min_start_distance"),
+    "objectnav_pickup": ("min_start_distance",),
+}
+"""Kind name -> the names of its options (`EnvConfig.task_options`; `TaskKind.defaults` holds their values)."""
 
-__all__ = ["KINDS", "TASK_KINDS", "TaskKind", "goal_from_dict", "kind_templates", "set_up", "task_kind"]
+__all__ = ["KIND_OPTIONS", "KINDS", "TASK_KINDS", "TaskKind", "goal_from_dict", "kind_templates", "set_up", "task_kind"]
 
 
 @cache
