@@ -23,8 +23,8 @@ MoveAhead makes; turns and looks cost no distance):
 * `d_T` (`distance_to_goal`): the geodesic distance from where the agent ends to the success region.
 * SPL = S * l / max(p, l); soft SPL (Habitat) = max(0, 1 - d_T / l) * l / max(p, l).
 
-A goal takes part by having `object_type`, `instances(view)` and `region(view)` (`NavScored`); the env then puts the start
-figures in the reset's `info` and the end figures in the last step's (`NavScore`).
+A goal takes part by having `object_type`, `instances(view)` and `region(view)` (`NavScored`); the env then
+puts the start figures in the reset's `info` and the end figures in the last step's (`NavScore`).
 """
 
 from __future__ import annotations

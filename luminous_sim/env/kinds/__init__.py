@@ -36,7 +36,7 @@ KIND_OPTIONS: dict[str, tuple[str, ...]] = {
 }
 """Kind name -> the names of its options (`EnvConfig.task_options`; `TaskKind.defaults` holds their values)."""
 
-__all__ = ["KIND_OPTIONS", "KINDS", "TASK_KINDS", "TaskKind", "goal_from_dict", "kind_templates", "set_up", "task_kind"]
+__all__ = ["KINDS", "KIND_OPTIONS", "TASK_KINDS", "TaskKind", "goal_from_dict", "kind_templates", "set_up", "task_kind"]
 
 
 @cache
@@ -74,5 +74,5 @@ def goal_from_dict(data: dict[str, Any]) -> Goal:
 
 @cache
 def kind_templates() -> tuple[str, ...]:
-    """The instruction templates of every kind's own goals."""
-    return tuple(t for name in TASK_KINDS for t in task_kind(name).templates)
+    """The instruction templates of every kind's own goals (each once)."""
+    return tuple(dict.fromkeys(t for name in TASK_KINDS for t in task_kind(name).templates))

@@ -17,6 +17,7 @@ once its plan is done).
 from __future__ import annotations
 
 import math
+from itertools import pairwise
 from typing import Any, ClassVar
 
 import networkx as nx
@@ -117,7 +118,7 @@ class ObjectNavGoal:
                                      weight=lambda u, v, e: MOVE_COST if e["action"] == "MoveAhead" else TURN_COST)
         except (nx.NetworkXNoPath, nx.NodeNotFound):
             return None
-        walk = [graph.graph.edges[u, v]["action"] for u, v in zip(nodes, nodes[1:], strict=False)]
+        walk = [graph.graph.edges[u, v]["action"] for u, v in pairwise(nodes)]
         actions = tuple(nav_api(a) for a in look_steps(start.horizon, target.horizon) + walk)
         for api in actions:
             if not world.step(api).success:
