@@ -184,7 +184,7 @@ def main(argv: list[str] | None = None) -> int:
         rows: dict[str, list[dict[str, Any]]] = {name: [] for name in policies}
         t0, w0 = time.process_time(), time.perf_counter()
         for i, seed in enumerate(seeds):
-            for j, name in enumerate(policies):  # every policy on one episode, then the next: the scene's worlds are reused
+            for j, name in enumerate(policies):  # all policies on one episode, then the next: its worlds are reused
                 rows[name].append(play(env, make_policy(name, env, seed * 16 + j), seed))
             if (i + 1) % 10 == 0:
                 print(f"  {env_id}: {i + 1}/{len(seeds)} episodes, {time.process_time() - t0:.0f} CPU s, "
