@@ -13,6 +13,9 @@ Policies (each seeded; every one plays the same held-out seeds, `reset(seed=s)`,
   soon as an instance of the target type has a pixel in the segmentation; PickUp, it picks an instance up by
   id as soon as one is visible by ALFRED's rule (the pixel threshold, within 1.5 m). A bound for exploration
   without learning, not a target.
+* `walk-seg-near` (ObjectNav): the same walk, calling Stop as soon as Stop would succeed (an instance of the
+  target visible by ALFRED's rule within the success distance): the bound of a random walk that always
+  recognises its goal. On PickUp it is `walk-seg`.
 * `oracle`: the env's expert (`env.expert_action()`; its plan ends with Stop).
 
 SR comes with a 95% Wilson interval; SPL and soft SPL with a 95% percentile bootstrap interval (2,000
@@ -43,9 +46,10 @@ import gymnasium  # noqa: E402
 import luminous_sim  # noqa: E402, F401  (registers the ids)
 from luminous_sim.env import LuminousEnv, eval_seeds  # noqa: E402
 from luminous_sim.env.actions import NAVIGATION, STOP  # noqa: E402
+from luminous_sim.env.shaping import goal_scores  # noqa: E402
 
 ENV_IDS = ("Luminous-ObjectNav-64-v2", "Luminous-PickUp-64-v2")
-POLICIES = ("random", "walk-stop", "walk-seg", "oracle")
+POLICIES = ("random", "walk-stop", "walk-seg", "walk-seg-near", "oracle")
 Policy = Callable[[LuminousEnv], Any]
 
 
@@ -109,9 +113,13 @@ def make_policy(name: str, env: LuminousEnv, seed: int) -> Policy:
             steps[0] += 1
             return stop if steps[0] >= stop_at else nav[int(rng.integers(len(nav)))]
         return walk_stop
-    if name == "walk-seg":
+    if name in ("walk-seg", "walk-seg-near"):
         def walk_seg(e: LuminousEnv) -> Any:
             stops = e.episode is not None and e.episode.goal.stop_to_succeed
+            if stops and name == "walk-seg-near":
+                assert e.world is not None and e.episode is not None
+                met = goal_scores(e.episode.goal, e.world) == e.episode.goal.weights()
+                return stop if met else nav[int(rng.integers(len(nav)))]
             oid = _target_in_segmentation(e, within_reach=not stops)
             if oid is None:
                 return nav[int(rng.integers(len(nav)))]

@@ -2,10 +2,10 @@
 that fits it physically, and (optionally) the expert's plan, which also proves the episode solvable, as
 ALFRED's generator keeps only tasks its expert solves.
 
-Scenes come from CSSG (`cssg.generate(empty_cdf(room_type), seed)`): layer L4 may use the generator, as
-task-driven generation in `luminous_sim.data` does (this module repeats the small part of that it needs
-rather than import layer L5). A drawn scene whose task does not fit is replaced by a new one, a bounded
-number of times (`EnvConfig.scene_attempts`).
+Scenes come from CSSG (`TaskKind.generate_scene`, by default `cssg.generate(empty_cdf(room_type), seed)`):
+layer L4 may use the generator, as task-driven generation in `luminous_sim.data` does (this module repeats
+the small part of that it needs rather than import layer L5). A drawn scene whose task does not fit is
+replaced by a new one, a bounded number of times (`EnvConfig.scene_attempts`).
 
 An entry of a split (`luminous_sim.splits`: S+, U+, U+test) fixes everything instead: the ALFRED room
 structure (`rooms.load_room(floor_plan)`), the layout (`generate(empty_cdf(room_type), seed=layout_seed,
@@ -137,8 +137,6 @@ def draw_episode(config: EnvConfig, rng: np.random.Generator, worlds: WorldPool,
     Raises:
         LuminousError: no attempt gave an episode that fits (the message lists why).
     """
-    from luminous_sim.cssg import empty_cdf, generate
-
     why: list[str] = []
     for _ in range(config.scene_attempts):
         task_type = config.task_types[int(rng.integers(len(config.task_types)))]
@@ -147,7 +145,7 @@ def draw_episode(config: EnvConfig, rng: np.random.Generator, worlds: WorldPool,
             room = rooms[int(rng.integers(len(rooms)))]
             seed = int(rng.integers(2**31))
             try:
-                candidate = generate(empty_cdf(room), seed=seed).scene
+                candidate = task_kind(task_type).configured(config.task_options).generate_scene(room, seed)
             except InfeasibleSceneError as exc:
                 why.append(f"{room} seed {seed}: {exc}")
                 continue

@@ -172,6 +172,10 @@ class NavScore:
     start_distance: float
     instances: int
     distractor_types: int
+    start_room: str | None = None
+    """In a house: the room the agent starts in (None in a single room)."""
+    target_rooms: tuple[str, ...] = ()
+    """In a house: the rooms that hold a target instance."""
 
     @classmethod
     def start(cls, goal: NavScored, world: World) -> NavScore:
@@ -188,12 +192,24 @@ class NavScore:
         start_distance = GRID * min(reachable) if reachable else UNREACHABLE
         shortest = GRID * field[here] if here in field else UNREACHABLE
         types = {st.object_type for st in state.objects.values()} - {goal.object_type}
-        return cls(field, shortest, start_distance, len(targets), len(types))
+        shell = view.scene.room
+        if shell.house is None:
+            return cls(field, shortest, start_distance, len(targets), len(types))
+        rooms = set()
+        for oid in targets:
+            lo, hi = view.aabb(oid)
+            rooms.add(shell.room_at(float(lo[0] + hi[0]) / 2, float(lo[1] + hi[1]) / 2))
+        return cls(field, shortest, start_distance, len(targets), len(types),
+                   shell.room_at(world.agent.x, world.agent.y), tuple(sorted(r for r in rooms if r is not None)))
 
     def at_start(self) -> dict[str, Any]:
         """The reset's figures."""
-        return {"shortest_path_length": self.shortest, "start_distance": self.start_distance,
-                "target_instances": self.instances, "distractor_types": self.distractor_types}
+        out: dict[str, Any] = {"shortest_path_length": self.shortest, "start_distance": self.start_distance,
+                               "target_instances": self.instances, "distractor_types": self.distractor_types}
+        if self.start_room is not None:
+            out.update(start_room=self.start_room, target_rooms=self.target_rooms,
+                       cross_room=self.start_room not in self.target_rooms)
+        return out
 
     def at_end(self, agent: AgentPose, history: Sequence[Sent], success: bool) -> dict[str, Any]:
         """The last step's figures: success, SPL, soft SPL and what they are made of."""

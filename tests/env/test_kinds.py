@@ -19,7 +19,7 @@ from tests.conftest import REPO
 
 def test_every_registered_kind_is_a_task_kind_and_the_config_accepts_exactly_those():
     assert TASK_KINDS == tuple(KINDS) == ALFRED_TASK_TYPES + ("goto_object", "pickup_object", "objectnav",
-                                                              "objectnav_pickup")
+                                                              "objectnav_pickup", "house_objectnav")
     for name in TASK_KINDS:
         kind = task_kind(name)
         assert isinstance(kind, TaskKind) and kind.name == name and task_kind(name) is kind

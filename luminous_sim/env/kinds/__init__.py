@@ -27,12 +27,14 @@ KINDS: dict[str, str] = {
     "pickup_object": "pickup_object:PickupObject",
     "objectnav": "objectnav:ObjectNav",
     "objectnav_pickup": "objectnav_pickup:ObjectNavPickup",
+    "house_objectnav": "house_objectnav:HouseObjectNav",
 }
 """Kind name -> `module:Class` in this package (the class is made with the name)."""
 TASK_KINDS: tuple[str, ...] = tuple(KINDS)
 KIND_OPTIONS: dict[str, tuple[str, ...]] = {
     "objectnav": ("success_distance", "min_start_distance"),
     "objectnav_pickup": ("min_start_distance",),
+    "house_objectnav": ("success_distance", "min_start_distance", "cross_room_share"),
 }
 """Kind name -> the names of its options (`EnvConfig.task_options`; `TaskKind.defaults` holds their values)."""
 

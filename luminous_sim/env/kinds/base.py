@@ -54,6 +54,17 @@ class TaskKind:
         """The room types an episode of this kind may be generated in."""
         return ROOM_TYPES
 
+    def generate_scene(self, room_type: str, seed: int) -> Scene:
+        """A scene for an episode generated on the fly (the room type drawn from `rooms`, the seed drawn too):
+        by default CSSG lays out one room of the type; a kind may generate something else (a house).
+
+        Raises:
+            InfeasibleSceneError: no scene could be laid out for the seed.
+        """
+        from luminous_sim.cssg import empty_cdf, generate
+
+        return generate(empty_cdf(room_type), seed=seed).scene
+
     def set_up(self, world: World) -> tuple[str, ...]:
         """The objects to make dirty before the episode (in `world`, as built); none by default."""
         return ()
