@@ -47,7 +47,7 @@ def test_the_v2_ids_fix_their_parameters_and_held_out_seeds_in_the_spec():
     for env_id in (NAV, PICK, "Luminous-ObjectNav-96-v2"):
         spec = gymnasium.spec(env_id)
         config = EnvConfig.from_kwargs(spec.kwargs)
-        assert config.task_options["min_start_distance"] == MIN_START and config.max_steps == 200
+        assert config.task_options["min_start_distance"] == MIN_START and config.max_steps == config.max_failures == 200
         assert eval_seeds(env_id) == tuple(range(1_000_000, 1_000_500))
     assert gymnasium.spec(NAV).kwargs["task_options"]["success_distance"] == 1.0
     assert gymnasium.spec("Luminous-NavToObject-64-v1") and eval_seeds("Luminous-NavToObject-64-v1") == ()
