@@ -173,3 +173,24 @@ def test_the_start_is_a_function_of_the_seed(envs):
     _, b = env.reset(seed=5)
     assert env.world.agent == pose_a and a["shortest_path_length"] == b["shortest_path_length"]
     assert np.isfinite(a["start_distance"])
+
+
+def test_a_pickled_episode_ends_with_the_same_figures(envs):
+    import pickle
+
+    env = envs[NAV]
+    env.reset(seed=SEEDS[2])
+    for _ in range(3):
+        env.step(env.expert_action())
+    copy = pickle.loads(pickle.dumps(env))
+    try:
+        ends = []
+        for e in (env, copy):
+            while True:
+                _, _, terminated, truncated, info = e.step(e.expert_action())
+                if terminated or truncated:
+                    break
+            ends.append({k: info[k] for k in ("success", "spl", "soft_spl", "path_length", "distance_to_goal")})
+        assert ends[0] == ends[1] and ends[0]["success"]
+    finally:
+        copy.close()
