@@ -7,10 +7,11 @@ within 1.0 m of the object). The episode ends at Stop either way; Stop without s
 
 The start is drawn uniformly over the grid points at least `min_start_distance` m (geodesic, on the agent's
 grid) from the success region of every target instance (`navscore`), so that no episode is won where it
-starts. Targets: the types an agent can interact with (as `goto_object`'s) that some reachable pose can see;
-the room holds other types beside it (distractors; the reset's `info["distractor_types"]` counts them).
-The oracle walks the shortest path (fewest MoveAheads, then fewest turns) to the nearest grid point from which
-an instance is seen within the success distance, and its plan ends with Stop (the env's expert answers Stop
+starts. Targets: the types an agent can interact with (as `goto_object`'s) with an instance that some
+reachable pose can see without opening anything (one shut in a fridge or a drawer does not count); the room
+holds other types beside it (distractors; the reset's `info["distractor_types"]` counts them). The oracle
+walks the shortest path (fewest MoveAheads, then fewest turns) to the nearest grid point from which an
+instance is seen within the success distance, and its plan ends with Stop (the env's expert answers Stop
 once its plan is done).
 """
 
@@ -27,6 +28,7 @@ from luminous_sim.env.goals import ExpertPlan, Goal
 from luminous_sim.env.kinds.base import TaskKind
 from luminous_sim.env.navscore import Key, footprint_distance, grid_distances, region_of, start_keys
 from luminous_sim.scene import Scene
+from luminous_sim.states import enclosing_closed
 from luminous_sim.tasks import TaskSamplingError
 from luminous_sim.vocab import abilities
 from luminous_sim.world import AgentPose, World, WorldView
@@ -42,10 +44,13 @@ MAX_VIEWS = 120
 """Candidate views the oracle renders before it gives up."""
 
 
-def seeable_instances(view: WorldView, object_type: str) -> tuple[str, ...]:
-    """The objects of the type that some reachable pose can see (`WorldView.unseeable` leaves out the rest)."""
+def seeable_instances(view: WorldView, object_type: str, *, shut_in: bool = False) -> tuple[str, ...]:
+    """The objects of the type that some reachable pose can see (`WorldView.unseeable` leaves out the rest);
+    with `shut_in`, also those inside a closed receptacle that can be seen (and opened)."""
     hidden = view.unseeable()
-    return tuple(sorted(o for o in view.state.of_type(object_type) if o not in hidden))
+    state = view.state
+    return tuple(sorted(o for o in state.of_type(object_type) if o not in hidden
+                        and (shut_in or enclosing_closed(state, o) is None)))
 
 
 def _views(view: WorldView, oid: str, key: Key) -> list[tuple[float, AgentPose]]:
@@ -162,11 +167,13 @@ class ObjectNavGoal:
         return {"kind": self.task_type, "object_type": self.object_type, "success_distance": self.success_distance}
 
 
-def target_types(view: WorldView, worthy: Any) -> list[str]:
-    """The `worthy` types that have an instance some reachable pose can see, sorted."""
+def target_types(view: WorldView, worthy: Any, *, shut_in: bool = False) -> list[str]:
+    """The `worthy` types that have an instance some reachable pose can see (`seeable_instances`), sorted."""
     hidden = view.unseeable()
-    return sorted({st.object_type for oid, st in view.state.objects.items()
-                   if oid not in hidden and worthy(st.object_type)})
+    state = view.state
+    return sorted({st.object_type for oid, st in state.objects.items()
+                   if oid not in hidden and worthy(st.object_type)
+                   and (shut_in or enclosing_closed(state, oid) is None)})
 
 
 def _worth_finding(object_type: str) -> bool:

@@ -34,7 +34,7 @@ class PickupNavGoal(TaskGoal):
         self.scene_seed = scene_seed
 
     def instances(self, view: WorldView) -> tuple[str, ...]:
-        return seeable_instances(view, self.object_type)
+        return seeable_instances(view, self.object_type, shut_in=True)
 
     def region(self, view: WorldView) -> frozenset[Key]:
         return region_of(view, self.instances(view), within=None, reach=view.config.visibility_distance)
@@ -51,7 +51,7 @@ class ObjectNavPickup(TaskKind):
 
     def draw_goal(self, world: World, scene: Scene, rng: np.random.Generator) -> Goal:
         view = world.view()
-        types = target_types(view, lambda t: abilities(t).pickupable)
+        types = target_types(view, lambda t: abilities(t).pickupable, shut_in=True)
         for i in rng.permutation(len(types)):
             goal = PickupNavGoal(types[int(i)], scene.seed)
             if start_keys(view, goal.region(view), self.options["min_start_distance"]):
