@@ -18,7 +18,8 @@ MoveAhead makes; turns and looks cost no distance):
   agent must stand in the region to succeed), so SPL <= 1 always; the oracle reaches SPL 1 whenever the
   nearest region point has a view of the target.
 * `start_distance`: the geodesic distance from the start to the nearest target instance's own grid point
-  (the grid point nearest its footprint); at least `l`.
+  (the grid point nearest its footprint); usually at least `l` (not always: that point may lie outside the
+  success region, under an object high on a wall).
 * `p`, the agent's path length (`path_length`): 0.25 m per successful MoveAhead.
 * `d_T` (`distance_to_goal`): the geodesic distance from where the agent ends to the success region.
 * SPL = S * l / max(p, l); soft SPL (Habitat) = max(0, 1 - d_T / l) * l / max(p, l).
