@@ -4,6 +4,9 @@ held-out episodes (the spec's `eval` seeds), and the start-distance distribution
     python benchmarks/bench_nav_baselines.py                          # 50 episodes of each v2 id, 4 policies
     python benchmarks/bench_nav_baselines.py --env Luminous-ObjectNav-64-v2 --episodes 100 --json out.json
 
+The first policy's resets of each episode are timed (`reset_s_median`: a new scene is generated, its world
+built, the expert's plan proved; the other policies' resets of the episode reuse the scene's worlds).
+
 Policies (each seeded; every one plays the same held-out seeds, `reset(seed=s)`, s from the id's `eval` table):
 
 * `random`: uniform over the whole action space (navigation, Stop, the interactions on the 3x3 grid).
@@ -132,7 +135,9 @@ def make_policy(name: str, env: LuminousEnv, seed: int) -> Policy:
 
 def play(env: LuminousEnv, policy: Policy, seed: int) -> dict[str, Any]:
     """One episode from `reset(seed=seed)`: its figures."""
+    t = time.perf_counter()
     _, start = env.reset(seed=seed)
+    reset_s = time.perf_counter() - t
     steps, info, end = 0, start, "step limit"
     while True:
         action = policy(env)
@@ -150,7 +155,8 @@ def play(env: LuminousEnv, policy: Policy, seed: int) -> dict[str, Any]:
             "soft_spl": float(info["soft_spl"]), "steps": steps, "end": end,
             "path_length": float(info["path_length"]), "shortest_path_length": float(start["shortest_path_length"]),
             "start_distance": float(start["start_distance"]), "room": env.world.scene.room.name if env.world else "",
-            "target": getattr(env.episode.goal, "object_type", "") if env.episode else ""}
+            "target": getattr(env.episode.goal, "object_type", "") if env.episode else "",
+            "reset_s": reset_s, "cross_room": start.get("cross_room")}
 
 
 def summary(rows: list[dict[str, Any]]) -> dict[str, Any]:
@@ -172,7 +178,9 @@ def distances(rows: list[dict[str, Any]]) -> dict[str, Any]:
             "start_distance_m": dict(zip(("min", "q25", "median", "q75", "max"),
                                          np.percentile(ds, q).round(2).tolist(), strict=True)),
             "shortest_path_length_hist_1m": dict(Counter(f"{int(v)}-{int(v) + 1}" for v in ls)),
-            "rooms": dict(Counter(r["room"].split("_")[0] for r in rows))}
+            "rooms": dict(Counter(r["room"].split("_")[0] for r in rows)),
+            "cross_room": dict(Counter(str(r["cross_room"]) for r in rows if r["cross_room"] is not None)),
+            "reset_s_median": round(float(np.median([r["reset_s"] for r in rows])), 2)}
 
 
 def main(argv: list[str] | None = None) -> int:
