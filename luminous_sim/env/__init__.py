@@ -26,7 +26,7 @@ if TYPE_CHECKING:
     from luminous_sim.env.expert import Expert
     from luminous_sim.env.kinds import TASK_KINDS, TaskKind
     from luminous_sim.env.oracle_policy import OraclePolicy
-    from luminous_sim.env.registration import EnvEntry, load_entries, register_envs
+    from luminous_sim.env.registration import EnvEntry, eval_seeds, load_entries, register_envs
     from luminous_sim.env.reset_options import RESET_OPTIONS, ResetOptions, reset_options
     from luminous_sim.env.rewards import RewardConfig
     from luminous_sim.env.wrappers import (
@@ -48,6 +48,7 @@ _WHERE = {
     "OraclePolicy": "oracle_policy",
     "EnvEntry": "registration", "load_entries": "registration", "register_envs": "registration",
     "RESET_OPTIONS": "reset_options", "ResetOptions": "reset_options", "reset_options": "reset_options",
+    "eval_seeds": "registration",
     "RewardConfig": "rewards",
     "InstructionTokens": "wrappers", "ActionFeedback": "wrappers", "ActionSubset": "wrappers",
     "FailureLimitEnds": "wrappers", "NewPlaceBonus": "wrappers",
@@ -75,6 +76,7 @@ __all__ = [
     "RewardConfig",
     "SceneRepeat",
     "TaskKind",
+    "eval_seeds",
     "load_entries",
     "register_envs",
     "reset_options",

@@ -20,9 +20,13 @@ a failure; it never raises. `info["failure_code"]` says why (a `FailureCode` val
 
 Episodes end (`terminated`) on success or Stop, and are cut off (`truncated`) after `max_steps` steps or
 `max_failures` failed actions; `step` after that raises `ResetNeeded` (call `reset`), as before the first
-`reset`. `info`: `success`, `goal_conditions` (met, total), `subgoal` (the first
+`reset`. A goal that counts only at Stop (`objectnav`) succeeds only on the Stop step. `info`: `success`,
+`goal_conditions` (met, total), `subgoal` (the first
 condition not yet met), `task_type`, `failures`, `failure_code`, `error`, and with `expert_in_info` the
-expert's next action (`expert_action`, in this env's action form).
+expert's next action (`expert_action`, in this env's action form). For a goal scored the navigation way
+(`objectnav`, `objectnav_pickup`; see `luminous_sim.env.navscore`), the reset's `info` has
+`shortest_path_length`, `start_distance`, `target_instances` and `distractor_types`, and the last step's
+`spl`, `soft_spl`, `path_length`, `distance_to_goal` and `shortest_path_length`.
 
 `reset(seed=s)` is deterministic: the same seed gives the same scene, task and first observation;
 `options={"scene": scene}` plays in a given `Scene`; `options={"split": "U+", "index": 3}` plays episode 3
@@ -56,6 +60,7 @@ from luminous_sim.env.config import EnvConfig
 from luminous_sim.env.episodes import Episode, check_rooms, draw_episode, requested_entry, split_episode
 from luminous_sim.env.expert import Expert
 from luminous_sim.env.history import Sent
+from luminous_sim.env.navscore import NavScore, nav_score
 from luminous_sim.env.replay import episode_data, episode_from_data, history_data, replay
 from luminous_sim.env.reset_options import reset_options
 from luminous_sim.env.rewards import RewardConfig
@@ -139,6 +144,8 @@ class LuminousEnv(gymnasium.Env):
         """The episode's expert (None before the first reset)."""
         self.shaper = RewardShaper(self.rewards, self.config.navigation_reward)
         """The episode's goal scores and reward."""
+        self.navscore: NavScore | None = None
+        """The episode's navigation figures (start distance, SPL) when its goal is scored so (`navscore`)."""
         self._slots: list[str] = []
         self._steps = 0
         self._failures = 0
@@ -164,12 +171,14 @@ class LuminousEnv(gymnasium.Env):
         else:
             self.episode, self.world = draw_episode(self.config, rng, self.worlds, scene=checked.scene)
         self._start(self.episode, self.world)
-        return self._observation(), {**self._info(None, ""), "redraws": self.episode.redraws}
+        extra = self.navscore.at_start() if self.navscore is not None else {}
+        return self._observation(), {**self._info(None, ""), "redraws": self.episode.redraws, **extra}
 
     def _start(self, episode: Episode, world: World) -> None:
         self.history, self._steps, self._failures, self._ended = [], 0, 0, False
         self.expert = Expert.for_episode(episode, self.worlds)
         self.shaper.start(episode.goal, world, episode.expert)
+        self.navscore = nav_score(episode.goal, world)
 
     def step(self, action: Any):
         """One action (a discrete index or an ALFRED dict); see the module docstring.
@@ -195,7 +204,10 @@ class LuminousEnv(gymnasium.Env):
         truncated = not terminated and (self._steps >= self.config.max_steps
                                         or self._failures >= self.config.max_failures)
         self._ended = terminated or truncated
-        return self._observation(), reward, terminated, truncated, self._info(code, error)
+        info = self._info(code, error)
+        if self.navscore is not None and (terminated or truncated):
+            info.update(self.navscore.at_end(world.agent, self.history, self.shaper.success))
+        return self._observation(), reward, terminated, truncated, info
 
     def render(self) -> np.ndarray | None:
         """The agent's view (rgb_array), or None without a render mode."""

@@ -12,7 +12,7 @@ from dataclasses import asdict, dataclass, field, fields
 from pathlib import Path
 from typing import Any
 
-from luminous_sim.env.kinds import TASK_KINDS
+from luminous_sim.env.kinds import KIND_OPTIONS, TASK_KINDS
 from luminous_sim.env.rewards import RewardConfig
 from luminous_sim.errors import LuminousError
 from luminous_sim.vocab import ALFRED_TASK_TYPES, ROOM_TYPES
@@ -38,6 +38,8 @@ MAX_NAMES = 64
 """Most entries in `task_types` or `room_types` (an entry may repeat to weight the draw)."""
 MAX_CDF_FILES = 10_000
 """Most CDF files in `cdf` (each is checked to exist when the env is made)."""
+MAX_TASK_DISTANCE = 100.0
+"""Largest distance (metres) a task option may name (a success or minimum start distance): a house is under 30 m."""
 
 
 @dataclass(frozen=True)
@@ -92,6 +94,9 @@ class EnvConfig:
             reset; see `luminous_sim.env.cdf_scenes`): a CDF's own task is the goal, else a task of
             `task_types` is drawn. `reset(options={"cdf": path, "scene_seed": s})` does the same for one
             episode of any env; () (the default) generates scenes on the fly.
+        task_options: options of the task kinds, by name (`luminous_sim.env.kinds.KIND_OPTIONS`: `objectnav`'s
+            `success_distance` and `min_start_distance` in metres, `objectnav_pickup`'s `min_start_distance`);
+            each kind takes its own, the rest keep their defaults.
     """
 
     task_types: tuple[str, ...] = ALFRED_TASK_TYPES
@@ -117,6 +122,7 @@ class EnvConfig:
     min_visible_pixels: int = 0
     split: str = ""
     cdf: tuple[str, ...] = ()
+    task_options: dict[str, float] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         for f in fields(self):
@@ -127,6 +133,11 @@ class EnvConfig:
                 object.__setattr__(self, f.name, _names(f.name, value, MAX_CDF_FILES if f.name == "cdf" else MAX_NAMES))
             elif f.name == "reward":
                 _check_reward(value)
+            elif f.name == "task_options":
+                if not isinstance(value, dict) or not all(isinstance(v, (int, float)) and not isinstance(v, bool)
+                                                          and math.isfinite(v) for v in value.values()):
+                    raise LuminousError(f"env config task_options: expected a table of finite numbers, got "
+                                        f"{short_repr(value)}")
             elif f.type == "bool" and not isinstance(value, bool):
                 raise LuminousError(f"env config {f.name}: expected true or false, got {short_repr(value)}")
             elif f.type == "int" and (isinstance(value, bool) or not isinstance(value, int)):
@@ -140,6 +151,14 @@ class EnvConfig:
         if not self.task_types or bad:
             raise LuminousError(f"env config task_types: {short_repr(bad) if bad else 'empty'}; expected some of "
                                 f"{', '.join(TASK_KINDS)}")
+        known = {o for t in self.task_types for o in KIND_OPTIONS.get(t, ())}
+        bad = sorted(set(self.task_options) - known)
+        if bad:
+            raise LuminousError(f"env config task_options: {bad}; the task types {', '.join(self.task_types)} take "
+                                f"{', '.join(sorted(known)) or 'none'}")
+        if any(not 0 <= v <= MAX_TASK_DISTANCE for v in self.task_options.values()):
+            raise LuminousError(f"env config task_options: expected distances in 0..{MAX_TASK_DISTANCE:g} m, got "
+                                f"{short_repr(self.task_options)}")
         bad = [r for r in self.room_types if r not in ROOM_TYPES]
         if bad:
             raise LuminousError(f"env config room_types: {short_repr(bad)}; expected some of {', '.join(ROOM_TYPES)}")

@@ -2,10 +2,10 @@
 that fits it physically, and (optionally) the expert's plan, which also proves the episode solvable, as
 ALFRED's generator keeps only tasks its expert solves.
 
-Scenes come from CSSG (`cssg.generate(empty_cdf(room_type), seed)`): layer L4 may use the generator, as
-task-driven generation in `luminous_sim.data` does (this module repeats the small part of that it needs
-rather than import layer L5). A drawn scene whose task does not fit is replaced by a new one, a bounded
-number of times (`EnvConfig.scene_attempts`).
+Scenes come from CSSG (`TaskKind.generate_scene`, by default `cssg.generate(empty_cdf(room_type), seed)`):
+layer L4 may use the generator, as task-driven generation in `luminous_sim.data` does (this module repeats
+the small part of that it needs rather than import layer L5). A drawn scene whose task does not fit is
+replaced by a new one, a bounded number of times (`EnvConfig.scene_attempts`).
 
 An entry of a split (`luminous_sim.splits`: S+, U+, U+test) fixes everything instead: the ALFRED room
 structure (`rooms.load_room(floor_plan)`), the layout (`generate(empty_cdf(room_type), seed=layout_seed,
@@ -119,13 +119,27 @@ def _unfit(task_types: list[str], rooms: tuple[str, ...]) -> str:
             "task_types")
 
 
-def draw_goal(world: World, scene: Scene, task_type: str, rng: np.random.Generator) -> Goal:
-    """A goal of the kind that fits this world (`TaskKind.draw_goal`).
+def draw_goal(world: World, scene: Scene, task_type: str, rng: np.random.Generator,
+              options: dict[str, float] | None = None) -> Goal:
+    """A goal of the kind that fits this world (`TaskKind.draw_goal`, the kind configured with `options`).
 
     Raises:
         TaskSamplingError: none fits.
     """
-    return task_kind(task_type).draw_goal(world, scene, rng)
+    return task_kind(task_type).configured(options or {}).draw_goal(world, scene, rng)
+
+
+def draw_start(world: World, goal: Goal, task_type: str, rng: np.random.Generator,
+               options: dict[str, float] | None = None) -> AgentPose | None:
+    """The kind's start for the goal (`TaskKind.draw_start`), set in `world`; None keeps the default start.
+
+    Raises:
+        TaskSamplingError: no start fits.
+    """
+    start = task_kind(task_type).configured(options or {}).draw_start(world, goal, rng)
+    if start is not None:
+        world.set_start(start)
+    return start
 
 
 def _prove(episode: Episode, worlds: WorldPool) -> ExpertPlan | None:
@@ -161,8 +175,6 @@ def draw_episode(config: EnvConfig, rng: np.random.Generator, worlds: WorldPool,
     Raises:
         LuminousError: no attempt gave an episode that fits (the message lists why).
     """
-    from luminous_sim.cssg import empty_cdf, generate
-
     why: list[str] = []
     for _ in range(config.scene_attempts):
         task_type = config.task_types[int(rng.integers(len(config.task_types)))]
@@ -171,7 +183,7 @@ def draw_episode(config: EnvConfig, rng: np.random.Generator, worlds: WorldPool,
             room = rooms[int(rng.integers(len(rooms)))]
             seed = int(rng.integers(2**31))
             try:
-                candidate = generate(empty_cdf(room), seed=seed).scene
+                candidate = task_kind(task_type).configured(config.task_options).generate_scene(room, seed)
             except InfeasibleSceneError as exc:
                 why.append(f"{room} seed {seed}: {exc}")
                 continue
@@ -180,12 +192,13 @@ def draw_episode(config: EnvConfig, rng: np.random.Generator, worlds: WorldPool,
         world = worlds.get(candidate)
         dirty = set_up_world(world, task_type)
         try:
-            goal = draw_goal(world, candidate, task_type, rng)
+            goal = draw_goal(world, candidate, task_type, rng, config.task_options)
+            start = draw_start(world, goal, task_type, rng, config.task_options)
         except TaskSamplingError as exc:
             worlds.put(world)
             why.append(str(exc))
             continue
-        episode = Episode(candidate, goal, dirty, redraws=len(why))
+        episode = Episode(candidate, goal, dirty, redraws=len(why), start=start)
         if config.verify_expert:
             plan = _prove(episode, worlds)
             if plan is None:
@@ -193,7 +206,7 @@ def draw_episode(config: EnvConfig, rng: np.random.Generator, worlds: WorldPool,
                 why.append(f"the expert does not solve {goal.instruction!r} in {candidate.room.name} "
                            f"(seed {candidate.seed})")
                 continue
-            episode = Episode(candidate, goal, dirty, plan, len(why))
+            episode = Episode(candidate, goal, dirty, plan, len(why), start)
         return episode, world
     raise LuminousError(f"no episode of {', '.join(config.task_types)} after {config.scene_attempts} attempts: "
                         + "; ".join(why[-3:]))
@@ -260,16 +273,17 @@ def split_episode(config: EnvConfig, entry: SplitEntry, worlds: WorldPool) -> tu
         world = worlds.get(scene)
         dirty = set_up_world(world, entry.task_type)
         try:
-            goal = draw_goal(world, scene, entry.task_type, rng)
+            goal = draw_goal(world, scene, entry.task_type, rng, config.task_options)
+            start = draw_start(world, goal, entry.task_type, rng, config.task_options)
         except TaskSamplingError as exc:
             worlds.put(world)
             raise EpisodeUnavailable(entry, "no_task", str(exc)) from None
-        episode = Episode(scene, goal, dirty, redraws=len(unsolved))
+        episode = Episode(scene, goal, dirty, redraws=len(unsolved), start=start)
         if not config.verify_expert:
             return episode, world
         plan = _prove(episode, worlds)
         if plan is not None:
-            return Episode(scene, goal, dirty, plan, redraws=len(unsolved)), world
+            return Episode(scene, goal, dirty, plan, redraws=len(unsolved), start=start), world
         worlds.put(world)
         unsolved.append(goal.instruction)
     raise EpisodeUnavailable(entry, "expert", f"the expert solves none of the {len(unsolved)} tasks drawn: "

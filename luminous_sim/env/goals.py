@@ -34,6 +34,9 @@ class Goal(Protocol):
 
     task_type: str
     instruction: str
+    stop_to_succeed: bool
+    """Whether the goal counts only when the agent calls Stop with its conditions met (ObjectNav's rule);
+    otherwise the episode succeeds the moment they are met."""
 
     def weights(self) -> dict[str, int]:
         """Condition name -> how many counts it is worth."""
@@ -62,6 +65,8 @@ class Goal(Protocol):
 
 class TaskGoal:
     """A task's goal conditions (ALFRED's reading for the seven types, the goal's own for a custom one)."""
+
+    stop_to_succeed = False
 
     def __init__(self, task: TaskInstance):
         self.task = task

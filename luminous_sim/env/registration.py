@@ -13,6 +13,7 @@ an environment, a data-only change). A spec file looks like::
     id = "Luminous-ALFRED-PickHeat-v1"
     description = "..."
     kwargs.task_types = ["pick_heat_then_place_in_recep"]
+    eval = { first_seed = 1000000, episodes = 200 }   # optional: the id's held-out evaluation seeds
 
 Registration is lazy: ids map to a string entry point, so registering imports neither the simulator
 nor pybullet; the keyword arguments are plain JSON data (`EnvConfig` fields, checked here).
@@ -34,8 +35,9 @@ REPO_SPECS = Path(__file__).resolve().parents[2] / "envs"
 """The specs, in a source checkout or an editable install (the one copy)."""
 PACKAGE_SPECS = "specs"
 """Where a wheel holds them, inside this package (copied from `envs/` at build time, absent from the source)."""
-_FAMILY_KEYS = {"entry_point", "kwargs"}
-_ENV_KEYS = {"id", "description", "kwargs", "entry_point"}
+_FAMILY_KEYS = {"entry_point", "kwargs", "eval"}
+_ENV_KEYS = {"id", "description", "kwargs", "entry_point", "eval"}
+_EVAL_KEYS = {"first_seed", "episodes"}
 
 
 @dataclass(frozen=True)
@@ -47,6 +49,9 @@ class EnvEntry:
     kwargs: dict[str, Any] = field(default_factory=dict)
     description: str = ""
     source: str = ""
+    eval_seeds: tuple[int, ...] = ()
+    """The held-out evaluation episodes, as `reset(seed=...)` seeds (the spec's `eval` table; empty if none):
+    `first_seed`, `first_seed + 1`, ... (`episodes` of them). Train on other seeds."""
 
 
 def spec_folder() -> Traversable:
@@ -102,8 +107,32 @@ def read_spec(text: str, source: str) -> list[EnvEntry]:
             EnvConfig.from_kwargs(kwargs)
         except LuminousError as exc:
             raise LuminousError(f"{where} ({env['id']}): {exc}") from None
-        entries.append(EnvEntry(env["id"], entry_point, kwargs, env.get("description", ""), source))
+        seeds = _eval_seeds(env.get("eval", family.get("eval")), f"{where} ({env['id']}): eval")
+        entries.append(EnvEntry(env["id"], entry_point, kwargs, env.get("description", ""), source, seeds))
     return entries
+
+
+def _eval_seeds(table: Any, where: str) -> tuple[int, ...]:
+    """The seeds of an `eval` table (`first_seed`, `episodes`); () for none."""
+    if table is None:
+        return ()
+    if not isinstance(table, dict) or set(table) != _EVAL_KEYS or not all(
+            isinstance(table[k], int) and not isinstance(table[k], bool) and table[k] >= 0 for k in _EVAL_KEYS):
+        raise LuminousError(f"{where}: expected a table {{ first_seed = <int >= 0>, episodes = <int >= 0> }}, "
+                            f"got {table!r}")
+    return tuple(range(table["first_seed"], table["first_seed"] + table["episodes"]))
+
+
+def eval_seeds(env_id: str) -> tuple[int, ...]:
+    """The held-out evaluation seeds a spec fixes for the id (`reset(seed=s)` for each); () if it fixes none.
+
+    Raises:
+        LuminousError: no spec defines the id.
+    """
+    for e in load_entries():
+        if e.id == env_id:
+            return e.eval_seeds
+    raise LuminousError(f"no environment spec defines {env_id!r}")
 
 
 def load_entries() -> list[EnvEntry]:

@@ -4,6 +4,7 @@ navigation term of the expert's go-to subgoals, `goto_reward.GotoReward`)."""
 
 from __future__ import annotations
 
+from luminous_sim.env.actions import STOP_NAMES
 from luminous_sim.env.goals import ExpertPlan, Goal
 from luminous_sim.env.goto_reward import GotoReward, goto_targets
 from luminous_sim.env.rewards import RewardConfig, step_reward
@@ -33,10 +34,11 @@ class RewardShaper:
         self.goto: GotoReward | None = None
         """ALFRED's navigation reward of the episode (dense rewards with the expert's plan known), else None."""
         self._expert_length = 0
+        self._stopped = False
 
     def start(self, goal: Goal, world: World, expert: ExpertPlan | None) -> None:
         """A new episode in `world`, at its start."""
-        self.goal, self.reached = goal, False
+        self.goal, self.reached, self._stopped = goal, False, False
         self._expert_length = len(expert.actions) if expert is not None else 0
         self.scores = goal_scores(goal, world)
         self.goto = None
@@ -50,13 +52,16 @@ class RewardShaper:
 
     @property
     def success(self) -> bool:
-        """Whether every goal condition is met after the last step."""
-        return self.goal is not None and self.scores == self.goal.weights()
+        """Whether every goal condition is met after the last step (and, for a goal that counts only at Stop,
+        the last step was Stop)."""
+        return (self.goal is not None and self.scores == self.goal.weights()
+                and (self._stopped or not self.goal.stop_to_succeed))
 
     def step(self, world: World, action: str | None, ok: bool, step: int) -> float:
         """The reward of step number `step` (from 1), which left `world` as it is after `action` (its name; None
         when nothing was sent) succeeded or not."""
         assert self.goal is not None, "start an episode first"
+        self._stopped = action in STOP_NAMES
         before, self.scores = self.scores, goal_scores(self.goal, world)
         success = self.success
         reached = success and not self.reached

@@ -18,7 +18,8 @@ from tests.conftest import REPO
 
 
 def test_every_registered_kind_is_a_task_kind_and_the_config_accepts_exactly_those():
-    assert TASK_KINDS == tuple(KINDS) == ALFRED_TASK_TYPES + ("goto_object", "pickup_object")
+    assert TASK_KINDS == tuple(KINDS) == ALFRED_TASK_TYPES + ("goto_object", "pickup_object", "objectnav",
+                                                              "objectnav_pickup", "house_objectnav")
     for name in TASK_KINDS:
         kind = task_kind(name)
         assert isinstance(kind, TaskKind) and kind.name == name and task_kind(name) is kind
@@ -33,8 +34,9 @@ def test_every_registered_kind_is_a_task_kind_and_the_config_accepts_exactly_tho
 def test_alfred_kinds_keep_alfreds_room_table_and_the_small_kinds_play_everywhere():
     for name in ALFRED_TASK_TYPES:
         assert task_kind(name).rooms() == tuple(sorted(task_info(name).rooms))
-    assert task_kind("goto_object").rooms() == task_kind("pickup_object").rooms() == ROOM_TYPES
-    assert kind_templates() == ("go to the {obj}", "pick up the {obj}")
+    for name in ("goto_object", "pickup_object", "objectnav", "objectnav_pickup"):
+        assert task_kind(name).rooms() == ROOM_TYPES
+    assert kind_templates() == ("go to the {obj}", "pick up the {obj}", "find the {obj}")
 
 
 def test_goals_read_back_from_their_data():

@@ -25,11 +25,20 @@ KINDS: dict[str, str] = {
     **dict.fromkeys(ALFRED_TASK_TYPES, "alfred:AlfredKind"),
     "goto_object": "goto_object:GotoObject",
     "pickup_object": "pickup_object:PickupObject",
+    "objectnav": "objectnav:ObjectNav",
+    "objectnav_pickup": "objectnav_pickup:ObjectNavPickup",
+    "house_objectnav": "house_objectnav:HouseObjectNav",
 }
 """Kind name -> `module:Class` in this package (the class is made with the name)."""
 TASK_KINDS: tuple[str, ...] = tuple(KINDS)
+KIND_OPTIONS: dict[str, tuple[str, ...]] = {
+    "objectnav": ("success_distance", "min_start_distance"),
+    "objectnav_pickup": ("min_start_distance",),
+    "house_objectnav": ("success_distance", "min_start_distance", "cross_room_share"),
+}
+"""Kind name -> the names of its options (`EnvConfig.task_options`; `TaskKind.defaults` holds their values)."""
 
-__all__ = ["KINDS", "TASK_KINDS", "TaskKind", "goal_from_dict", "kind_templates", "set_up", "task_kind"]
+__all__ = ["KINDS", "KIND_OPTIONS", "TASK_KINDS", "TaskKind", "goal_from_dict", "kind_templates", "set_up", "task_kind"]
 
 
 @cache
@@ -67,5 +76,5 @@ def goal_from_dict(data: dict[str, Any]) -> Goal:
 
 @cache
 def kind_templates() -> tuple[str, ...]:
-    """The instruction templates of every kind's own goals."""
-    return tuple(t for name in TASK_KINDS for t in task_kind(name).templates)
+    """The instruction templates of every kind's own goals (each once)."""
+    return tuple(dict.fromkeys(t for name in TASK_KINDS for t in task_kind(name).templates))

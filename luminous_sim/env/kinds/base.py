@@ -8,8 +8,9 @@ A new kind is one module in this package with a `TaskKind` subclass, and one lin
 
 from __future__ import annotations
 
-from collections.abc import Callable
-from typing import TYPE_CHECKING, Any
+import copy
+from collections.abc import Callable, Mapping
+from typing import TYPE_CHECKING, Any, ClassVar
 
 from luminous_sim.errors import LuminousError
 from luminous_sim.vocab import ROOM_TYPES
@@ -19,7 +20,7 @@ if TYPE_CHECKING:
 
     from luminous_sim.env.goals import Goal
     from luminous_sim.scene import Scene
-    from luminous_sim.world import World
+    from luminous_sim.world import AgentPose, World
 
 
 class TaskKind:
@@ -28,16 +29,41 @@ class TaskKind:
     Attributes:
         name: the kind's name, as `EnvConfig.task_types` and `info["task_type"]` give it.
         templates: instruction templates of the kind's own goals (their words join the token vocabulary).
+        defaults: the kind's options (`EnvConfig.task_options`) and their values when a config gives none;
+            their names are listed in `kinds.KIND_OPTIONS` too, so that checking a config imports no kind.
+        options: the options in force (`configured`).
     """
 
     templates: tuple[str, ...] = ()
+    defaults: ClassVar[Mapping[str, float]] = {}
 
     def __init__(self, name: str):
         self.name = name
+        self.options: Mapping[str, float] = dict(self.defaults)
+
+    def configured(self, options: Mapping[str, float]) -> TaskKind:
+        """This kind with the options it takes from `options` (others are left to other kinds)."""
+        mine = {k: float(v) for k, v in options.items() if k in self.defaults}
+        if not mine:
+            return self
+        kind = copy.copy(self)
+        kind.options = {**self.defaults, **mine}
+        return kind
 
     def rooms(self) -> tuple[str, ...]:
         """The room types an episode of this kind may be generated in."""
         return ROOM_TYPES
+
+    def generate_scene(self, room_type: str, seed: int) -> Scene:
+        """A scene for an episode generated on the fly (the room type drawn from `rooms`, the seed drawn too):
+        by default CSSG lays out one room of the type; a kind may generate something else (a house).
+
+        Raises:
+            InfeasibleSceneError: no scene could be laid out for the seed.
+        """
+        from luminous_sim.cssg import empty_cdf, generate
+
+        return generate(empty_cdf(room_type), seed=seed).scene
 
     def set_up(self, world: World) -> tuple[str, ...]:
         """The objects to make dirty before the episode (in `world`, as built); none by default."""
@@ -50,6 +76,15 @@ class TaskKind:
             TaskSamplingError: none fits.
         """
         raise NotImplementedError(f"task kind {self.name}: draw_goal")
+
+    def draw_start(self, world: World, goal: Goal, rng: np.random.Generator) -> AgentPose | None:
+        """Where the agent starts, drawn for `goal` in `world` (set up); None (the default) keeps the world's
+        default start.
+
+        Raises:
+            TaskSamplingError: no start fits the goal.
+        """
+        return None
 
     def goal_from_dict(self, data: dict[str, Any]) -> Goal:
         """The goal of `Goal.to_dict` data whose `kind` is this kind's name (a `TaskGoal` reads back as a task

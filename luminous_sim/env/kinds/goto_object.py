@@ -22,6 +22,7 @@ class GotoGoal:
     """Be where an object of a type is visible within reach; one condition, met by a GotoLocation."""
 
     task_type = "goto_object"
+    stop_to_succeed = False
 
     def __init__(self, object_type: str):
         self.object_type = object_type
