@@ -7,6 +7,8 @@ people (the table of codes is in docs/failure_codes.md).
 
 from __future__ import annotations
 
+import os
+import stat
 from dataclasses import dataclass
 from enum import StrEnum
 
@@ -137,3 +139,30 @@ class PlanningError(LuminousError):
 
 class RoomError(LuminousError):
     """A room structure that is malformed, cannot be generated, converted or found in the library."""
+
+
+def mode_kind(mode: int) -> str:
+    """What a file of `os.stat` mode `mode` is, in words for a message: "a regular file", "a folder",
+    "a FIFO (named pipe)", "a device", "a socket", or "not a regular file"."""
+    if stat.S_ISREG(mode):
+        return "a regular file"
+    if stat.S_ISDIR(mode):
+        return "a folder"
+    if stat.S_ISFIFO(mode):
+        return "a FIFO (named pipe)"
+    if stat.S_ISCHR(mode) or stat.S_ISBLK(mode):
+        return "a device"
+    if stat.S_ISSOCK(mode):
+        return "a socket"
+    return "not a regular file"
+
+
+def path_kind(path: str | os.PathLike[str]) -> str:
+    """What `path` is (following links), in words for a message: `mode_kind`'s words, "no such file or folder",
+    or "cannot read (<reason>)". Never opens the path (opening a FIFO would block)."""
+    try:
+        return mode_kind(os.stat(path).st_mode)
+    except FileNotFoundError:
+        return "no such file or folder"
+    except OSError as exc:
+        return f"cannot read ({exc.strerror or exc})"

@@ -18,6 +18,8 @@ MAX_CDF_INSTANCES = 1_000
 """Object instances one CDF may ask for (the sum of every object's count)."""
 MAX_INPUT_BYTES = 64 * 1024 * 1024
 """Largest JSON file read as a layout, a layout-importer input or an evaluation's episode file."""
+MAX_CDF_BYTES = 1_000_000
+"""Largest CDF file (or CDF text) read (`cdf.load`, `cdf.loads`); checked before it is parsed."""
 MAX_EPISODE_FILE_BYTES = 1024 * 1024
 """Largest evaluation outcome file (`episodes/<split>-<index>.json`) read back on resume."""
 MAX_CDF_RELATIONS = 5_000

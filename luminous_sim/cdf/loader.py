@@ -20,6 +20,7 @@ from luminous_sim.cdf.issues import CDFValidationError, Issue, from_validation_e
 from luminous_sim.cdf.reader import MAX_BYTES, check_tree, parse_text
 from luminous_sim.cdf.schema import CDF_VERSION, ChallengeDefinition
 from luminous_sim.cdf.upgrade import document_version, upgrade
+from luminous_sim.errors import mode_kind
 
 SUFFIXES: dict[str, str] = {".yaml": "yaml", ".yml": "yaml", ".json": "json"}
 
@@ -38,16 +39,6 @@ def format_of(path: str | os.PathLike[str]) -> str:
     return SUFFIXES[suffix]
 
 
-def _kind(mode: int) -> str:
-    if stat.S_ISDIR(mode):
-        return "a folder"
-    if stat.S_ISFIFO(mode):
-        return "a FIFO (named pipe)"
-    if stat.S_ISCHR(mode) or stat.S_ISBLK(mode):
-        return "a device"
-    return "not a regular file"
-
-
 def read_document(path: str | os.PathLike[str]) -> Any:
     """The plain data of a CDF file (not validated), read safely.
 
@@ -62,7 +53,7 @@ def read_document(path: str | os.PathLike[str]) -> Any:
     except OSError:
         mode = None  # reported below, where the file is opened
     if mode is not None and not stat.S_ISREG(mode):
-        raise CDFValidationError(source, [Issue("", f"{_kind(mode)}; expected a regular CDF file")])
+        raise CDFValidationError(source, [Issue("", f"{mode_kind(mode)}; expected a regular CDF file")])
     fmt = format_of(path)
     try:
         # O_NONBLOCK: opening a FIFO with no writer returns at once instead of waiting for one
@@ -70,7 +61,7 @@ def read_document(path: str | os.PathLike[str]) -> Any:
         with open(fd, "rb") as fh:
             mode = os.fstat(fd).st_mode
             if not stat.S_ISREG(mode):
-                raise CDFValidationError(source, [Issue("", f"{_kind(mode)}; expected a regular CDF file")])
+                raise CDFValidationError(source, [Issue("", f"{mode_kind(mode)}; expected a regular CDF file")])
             raw = fh.read(MAX_BYTES + 1)
     except OSError as exc:
         raise CDFValidationError(
@@ -84,7 +75,8 @@ def read_document(path: str | os.PathLike[str]) -> Any:
         ) from None
     if len(raw) > MAX_BYTES:
         raise CDFValidationError(
-            source, [Issue("", f"file is larger than {MAX_BYTES} bytes; expected a smaller CDF")]
+            source, [Issue("", f"file is larger than {MAX_BYTES} bytes; a CDF file may hold at most {MAX_BYTES} "
+                                     "(luminous_sim.limits.MAX_CDF_BYTES)")]
         )
     return parse_text(raw, fmt, source)
 

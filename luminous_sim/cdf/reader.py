@@ -17,8 +17,10 @@ from typing import Any
 import yaml
 
 from luminous_sim.cdf.issues import CDFValidationError, Issue
+from luminous_sim.limits import MAX_CDF_BYTES
 
-MAX_BYTES = 1_000_000
+MAX_BYTES = MAX_CDF_BYTES
+"""`limits.MAX_CDF_BYTES`, under its older name."""
 MAX_NODES = 100_000
 MAX_DEPTH = 48
 FORMATS = ("yaml", "json")
@@ -140,7 +142,8 @@ def parse_text(text: str | bytes, fmt: str = "yaml", source: str = "<string>") -
         raise _error(source, f"unknown format {fmt!r}; expected one of {', '.join(FORMATS)}")
     size = len(text) if isinstance(text, bytes) else len(text.encode("utf-8", "surrogatepass"))
     if size > MAX_BYTES:
-        raise _error(source, f"document is {size} bytes; expected at most {MAX_BYTES}")
+        raise _error(source, f"document is {size} bytes; expected at most {MAX_BYTES} "
+                               "(luminous_sim.limits.MAX_CDF_BYTES)")
     if isinstance(text, bytes):
         try:
             text = text.decode("utf-8")

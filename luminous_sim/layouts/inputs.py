@@ -16,7 +16,7 @@ from typing import Any
 
 import numpy as np
 
-from luminous_sim.errors import LuminousError
+from luminous_sim.errors import LuminousError, mode_kind
 from luminous_sim.limits import MAX_INPUT_BYTES, MAX_LAYOUT_COORDINATE_M, MAX_LAYOUT_SIDE_M
 
 __all__ = ["MAX_ANGLE", "Fields", "LayoutError", "read_bytes", "read_json", "short"]
@@ -47,18 +47,6 @@ def type_name(value: Any) -> TypeName:
     return TypeName(type(value).__name__)
 
 
-def _kind(mode: int) -> str:
-    if stat.S_ISDIR(mode):
-        return "a folder"
-    if stat.S_ISFIFO(mode):
-        return "a FIFO (named pipe)"
-    if stat.S_ISCHR(mode) or stat.S_ISBLK(mode):
-        return "a device"
-    if stat.S_ISSOCK(mode):
-        return "a socket"
-    return "not a regular file"
-
-
 def read_bytes(path: str | os.PathLike[str], what: str) -> bytes:
     """The bytes of a regular file within `limits.MAX_INPUT_BYTES`.
 
@@ -75,7 +63,7 @@ def read_bytes(path: str | os.PathLike[str], what: str) -> bytes:
     except OSError as exc:
         raise LayoutError(f"{path}: cannot read ({exc.strerror or exc}); expected {what}") from None
     if not stat.S_ISREG(mode):
-        raise LayoutError(f"{path}: {_kind(mode)}; expected {what}")
+        raise LayoutError(f"{path}: {mode_kind(mode)}; expected {what}")
     try:
         with open(path, "rb") as fh:
             raw = fh.read(MAX_INPUT_BYTES + 1)

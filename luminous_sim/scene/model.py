@@ -14,7 +14,7 @@ from typing import Any, Final, Literal
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator
 
-from luminous_sim.errors import LuminousError
+from luminous_sim.errors import LuminousError, mode_kind
 from luminous_sim.limits import MAX_INPUT_BYTES
 from luminous_sim.rooms.shell import RoomShell
 
@@ -150,9 +150,7 @@ class Scene(BaseModel):
             raise LuminousError(f"{path}: cannot read ({exc.strerror or exc}); expected a scene file (scene.json)"
                                 ) from None
         if not stat.S_ISREG(mode):
-            kind = ("a folder" if stat.S_ISDIR(mode) else "a FIFO (named pipe)" if stat.S_ISFIFO(mode)
-                    else "a device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode) else "not a regular file")
-            raise LuminousError(f"{path}: {kind}; expected a scene file (scene.json)")
+            raise LuminousError(f"{path}: {mode_kind(mode)}; expected a scene file (scene.json)")
         try:
             with open(path, "rb") as fh:
                 raw = fh.read(MAX_INPUT_BYTES + 1)

@@ -104,6 +104,22 @@ def test_size_limit(tmp_path: Path) -> None:
         load(path)
 
 
+def test_an_oversized_file_is_refused_before_parsing_naming_the_limit(tmp_path: Path) -> None:
+    """Issue 27: the size is checked first (a huge sparse file of garbage gets the size error, not a parse
+    error), in a message naming the file and luminous_sim.limits.MAX_CDF_BYTES."""
+    from luminous_sim.limits import MAX_CDF_BYTES
+
+    path = tmp_path / "huge.yaml"
+    with open(path, "wb") as fh:
+        fh.write(b"{{{ not yaml")
+        fh.truncate(10 * MAX_CDF_BYTES)
+    with pytest.raises(CDFValidationError) as err:
+        load(path)
+    text = str(err.value)
+    assert str(path) in text and str(MAX_CDF_BYTES) in text and "MAX_CDF_BYTES" in text, text
+    assert len(text.splitlines()) == 1, text
+
+
 def test_file_errors(tmp_path: Path) -> None:
     with pytest.raises(CDFValidationError, match="cannot read the file"):
         load(tmp_path / "missing.yaml")
