@@ -38,6 +38,26 @@ MAX_MINARI_EPISODES = 100_000
 MAX_MINARI_SEEDS = 10 * MAX_MINARI_EPISODES + 10
 """Seeds one Minari export may try (`--max-seeds`; its default for N episodes is 10 * N + 10)."""
 MAX_WORKERS = 256
-"""Worker processes (or Ray CPUs of a local cluster) one `dataset build` or `eval` starts (`--workers`)."""
+"""Worker processes (or Ray CPUs of a local cluster) one `dataset build` or `eval` starts (`--workers`), and
+those one `assets build` starts (`--jobs`)."""
+MAX_THREADS = 256
+"""Torch threads one training uses (`bc train --threads`)."""
+MAX_EPOCHS = 10_000
+"""Passes over the data one training makes (`speaker train`, `bc train`, `train-layouts`: `--epochs`)."""
+MAX_BATCH_SIZE = 65_536
+"""Examples in one training batch (`speaker train`, `bc train`: `--batch-size`)."""
+MAX_TRAIN_EXAMPLES = 10_000_000
+"""Examples one speaker training may be capped at (`speaker train --max-examples`)."""
+MAX_TRAJECTORIES = 1_000_000
+"""Trajectories one speaker training may be capped at (`speaker train --max-trajectories`); ALFRED holds
+about 8,000."""
+MAX_LAYOUT_ROOMS = 10_000
+"""Rooms of CSSG layouts one `train-layouts` call learns from (`--rooms`)."""
+MAX_EPISODE_INDEX = 1_000_000_000
+"""First episode index of a split one `bc collect` or `bc eval` may start at (`--start`)."""
+MAX_FLOOR_PLAN = 10_000
+"""Largest AI2-THOR floor-plan number `rooms convert --scene` takes (ALFRED's run 1 to 430)."""
+MAX_NGRAM = 100
+"""Longest n-gram a speaker's decoding may forbid repeating (`--no-repeat-ngram`)."""
 MAX_GENERATE_SCENES = 100_000
 """Scenes one `luminous generate` call writes (`--count`)."""

@@ -13,6 +13,8 @@ import os
 from collections.abc import Callable, Iterable
 from pathlib import Path
 
+from luminous_sim import limits
+
 MAX_SEED = 2**63 - 1
 """Largest seed accepted (numpy takes any non-negative integer; this keeps folder names and JSON sane)."""
 
@@ -34,26 +36,30 @@ def _float(text: str) -> float:
     return value
 
 
-def int_range(lo: int, hi: int | None = None) -> Callable[[str], int]:
-    """An integer type accepting lo <= value (<= hi)."""
+def int_range(lo: int, hi: int | None = None, limit: str | None = None) -> Callable[[str], int]:
+    """An integer type accepting lo <= value (<= hi); `limit` names the constant of luminous_sim.limits that `hi`
+    is, for the message (`expected a whole number from 1 to 10000 (luminous_sim.limits.MAX_EPOCHS), got 0`)."""
 
     def parse(text: str) -> int:
         value = _int(text)
         if value < lo or (hi is not None and value > hi):
             top = "2**63-1" if hi == MAX_SEED else str(hi)
             want = f"from {lo} to {top}" if hi is not None else f"at least {lo}"
-            raise argparse.ArgumentTypeError(f"expected a whole number {want}, got {text}")
+            named = f" (luminous_sim.limits.{limit})" if limit else ""
+            raise argparse.ArgumentTypeError(f"expected a whole number {want}{named}, got {text}")
         return value
 
     parse.__name__ = "whole number"
     return parse
 
 
+def limited(lo: int, limit: str) -> Callable[[str], int]:
+    """`int_range(lo, limits.<limit>)`, the limit named in the message."""
+    return int_range(lo, int(getattr(limits, limit)), limit)
+
+
 seed = int_range(0, MAX_SEED)
 """A random seed: a non-negative integer."""
-positive_int = int_range(1, MAX_SEED)
-"""A count or size: 1 .. 2**63-1 (beyond that, range() and progress bars overflow a C long)."""
-non_negative_int = int_range(0, MAX_SEED)
 
 
 def positive_float(text: str) -> float:

@@ -6,7 +6,7 @@ import argparse
 import json
 from pathlib import Path
 
-from luminous_sim.cli.args import int_range, output_dir, output_file, positive_float, positive_int
+from luminous_sim.cli.args import int_range, limited, output_dir, output_file, positive_float
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -16,7 +16,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     build = cmds.add_parser("build", help="regenerate the asset library deterministically")
     build.add_argument("--types", nargs="*", help="only these object types (default: all)")
     build.add_argument("--out", type=output_dir, help="library folder (default: the repository's urdf_assets/)")
-    build.add_argument("--jobs", type=positive_int, default=2, help="worker processes (default 2)")
+    build.add_argument("--jobs", type=limited(1, "MAX_WORKERS"), default=2, help="worker processes (default 2)")
     build.set_defaults(func=_build)
 
     ls = cmds.add_parser("list", help="print the catalog")

@@ -12,11 +12,10 @@ from pathlib import Path
 
 from luminous_sim.cli.args import (
     int_range,
-    non_negative_int,
+    limited,
     output_dir,
     output_file,
     positive_float,
-    positive_int,
     seed,
 )
 from luminous_sim.limits import MAX_EVAL_EPISODES
@@ -31,7 +30,7 @@ def register(sub: argparse._SubParsersAction) -> None:
     bc = parser.add_subparsers(dest="bc_command", required=True, metavar="STEP")
     collect = bc.add_parser("collect", help="record the oracle on pickup episodes of a split (resumable)")
     collect.add_argument("--split", choices=SPLITS, default="S+", help="the split (default S+)")
-    collect.add_argument("--start", type=non_negative_int, default=28,
+    collect.add_argument("--start", type=limited(0, "MAX_EPISODE_INDEX"), default=28,
                          help="first episode index (default 28: S+ 0-27 are kept for evaluation)")
     collect.add_argument("--episodes", type=int_range(1, MAX_EVAL_EPISODES), required=True, metavar="N",
                          help=f"episodes to record (at most {MAX_EVAL_EPISODES})")
@@ -41,18 +40,19 @@ def register(sub: argparse._SubParsersAction) -> None:
     train.add_argument("--demos", type=Path, required=True, help="demonstrations folder (`luminous bc collect`)")
     train.add_argument("--out", type=output_file((".pt",), "a .pt checkpoint"), required=True,
                        help="checkpoint file to write")
-    train.add_argument("--epochs", type=positive_int, default=20, help="passes over the demos (default 20)")
-    train.add_argument("--batch-size", type=positive_int, default=64, help="batch size (default 64)")
+    train.add_argument("--epochs", type=limited(1, "MAX_EPOCHS"), default=20, help="passes over the demos (default 20)")
+    train.add_argument("--batch-size", type=limited(1, "MAX_BATCH_SIZE"), default=64, help="batch size (default 64)")
     train.add_argument("--lr", type=positive_float, default=1e-3, help="Adam's learning rate (default 0.001)")
     train.add_argument("--seed", type=seed, default=0, help="seed of the weights and shuffling (default 0)")
-    train.add_argument("--threads", type=positive_int, default=1, help="torch threads (default 1)")
+    train.add_argument("--threads", type=limited(1, "MAX_THREADS"), default=1, help="torch threads (default 1)")
     train.set_defaults(func=_train)
     evaluate = bc.add_parser("eval", help="a policy on pickup episodes of a split: SR, GC, PLW-SR, PLW-GC")
     evaluate.add_argument("--policy", required=True,
                           help="oracle, random, or MODULE:CALLABLE (the clone: luminous_sim.bc:bc_agent)")
     evaluate.add_argument("--checkpoint", type=Path, help="the clone's checkpoint (sets LUMINOUS_BC_CHECKPOINT)")
     evaluate.add_argument("--split", choices=SPLITS, required=True, help="the split")
-    evaluate.add_argument("--start", type=non_negative_int, default=0, help="first episode index (default 0)")
+    evaluate.add_argument("--start", type=limited(0, "MAX_EPISODE_INDEX"), default=0,
+                          help="first episode index (default 0)")
     evaluate.add_argument("--episodes", type=int_range(1, MAX_EVAL_EPISODES), required=True, metavar="N",
                           help=f"episodes to play (at most {MAX_EVAL_EPISODES})")
     evaluate.add_argument("--seed", type=seed, default=0, help="seed of the agent's randomness (default 0)")

@@ -8,7 +8,7 @@ import argparse
 import json
 from pathlib import Path
 
-from luminous_sim.cli.args import int_range, output_dir, output_file, seed
+from luminous_sim.cli.args import limited, output_dir, output_file, seed
 from luminous_sim.errors import InfeasibleSceneError
 from luminous_sim.vocab import ROOM_TYPES
 
@@ -52,9 +52,9 @@ def register(sub: argparse._SubParsersAction) -> None:
                            epilog="example: luminous train-layouts --out model.pt; then "
                            "luminous generate --method learned --model model.pt --out out/l")
     train.add_argument("--out", type=output_file([".pt"], "a .pt"), required=True, help="checkpoint to write")
-    train.add_argument("--epochs", type=int_range(1, 10_000), default=DEFAULT_EPOCHS,
+    train.add_argument("--epochs", type=limited(1, "MAX_EPOCHS"), default=DEFAULT_EPOCHS,
                        help=f"passes over the training views (default {DEFAULT_EPOCHS})")
-    train.add_argument("--rooms", type=int_range(1, 10_000), default=DEFAULT_ROOMS,
+    train.add_argument("--rooms", type=limited(1, "MAX_LAYOUT_ROOMS"), default=DEFAULT_ROOMS,
                        help=f"training rooms per room type (default {DEFAULT_ROOMS})")
     train.add_argument("--seed", type=seed, default=0, help="seed of the training draws (default 0)")
     train.add_argument("--no-augment", action="store_true", help="no quarter-turned and mirrored views")

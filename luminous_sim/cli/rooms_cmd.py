@@ -9,7 +9,7 @@ from pathlib import Path
 
 import numpy as np
 
-from luminous_sim.cli.args import output_dir, output_file, positive_int, seed
+from luminous_sim.cli.args import limited, output_dir, output_file, seed
 from luminous_sim.errors import RoomError
 from luminous_sim.rooms.alfred_convert import convert_all
 from luminous_sim.rooms.generate import SHAPES, generate_shell
@@ -40,7 +40,8 @@ def register(subparsers: argparse._SubParsersAction) -> None:
     )
     p.add_argument("--out", required=True, type=output_dir, help="output folder for FloorPlan<N>.json")
     p.add_argument(
-        "--scene", type=positive_int, action="append", help="convert only this scene number (repeatable)"
+        "--scene", type=limited(1, "MAX_FLOOR_PLAN"), action="append",
+        help="convert only this scene number (repeatable)"
     )
     p.set_defaults(func=cmd_convert)
 

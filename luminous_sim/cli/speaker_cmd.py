@@ -12,7 +12,7 @@ import sys
 from pathlib import Path
 from types import ModuleType
 
-from luminous_sim.cli.args import fraction, int_range, non_negative_int, output_file, positive_float, positive_int, seed
+from luminous_sim.cli.args import fraction, int_range, limited, output_file, positive_float, seed
 from luminous_sim.language.speaker.errors import SpeakerError
 
 
@@ -42,8 +42,9 @@ def register(subparsers: argparse._SubParsersAction) -> None:
         "--out", required=True, type=output_file((), "a checkpoint"),
         help="checkpoint file to write (e.g. speaker.pt)",
     )
-    p.add_argument("--epochs", type=positive_int, default=10, help="total epochs (default 10)")
-    p.add_argument("--batch-size", type=positive_int, default=32, help="examples per batch (default 32)")
+    p.add_argument("--epochs", type=limited(1, "MAX_EPOCHS"), default=10, help="total epochs (default 10)")
+    p.add_argument("--batch-size", type=limited(1, "MAX_BATCH_SIZE"), default=32,
+                   help="examples per batch (default 32)")
     p.add_argument("--lr", type=positive_float, default=2e-3, help="learning rate (default 0.002)")
     p.add_argument("--seed", type=seed, default=0, help="random seed, a whole number >= 0 (default 0)")
     p.add_argument(
@@ -53,10 +54,11 @@ def register(subparsers: argparse._SubParsersAction) -> None:
         help="fraction of trajectories held out (default 0.1)",
     )
     p.add_argument(
-        "--max-examples", type=positive_int, default=None, help="train on a seeded sample of N examples"
+        "--max-examples", type=limited(1, "MAX_TRAIN_EXAMPLES"), default=None,
+        help="train on a seeded sample of N examples"
     )
     p.add_argument(
-        "--max-trajectories", type=positive_int, default=None, help="use the first N trajectories"
+        "--max-trajectories", type=limited(1, "MAX_TRAJECTORIES"), default=None, help="use the first N trajectories"
     )
     p.add_argument("--emb-dim", type=int_range(1, 4096), default=64, help="word embedding size (default 64)")
     p.add_argument("--hid-dim", type=int_range(1, 4096), default=128, help="LSTM hidden size (default 128)")
@@ -96,7 +98,7 @@ def register(subparsers: argparse._SubParsersAction) -> None:
 def _no_repeat_option(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--no-repeat-ngram",
-        type=non_negative_int,
+        type=limited(0, "MAX_NGRAM"),
         default=3,
         help="never repeat an n-gram of this length (0: off; default 3)",
     )

@@ -57,3 +57,62 @@ def test_the_library_minari_export_checks_its_bounds_first(kwargs: dict, needle:
         export_minari(NAV, out=tmp_path / "m", **kwargs)
     assert str(err.value) == needle or str(err.value).startswith(needle)
     assert not (tmp_path / "m").exists()
+
+
+@pytest.mark.parametrize(("argv", "option", "limit"), [
+    (["speaker", "train", "--data", "d", "--out", "s.pt", "--epochs", HUGE], "--epochs", "MAX_EPOCHS"),
+    (["speaker", "train", "--data", "d", "--out", "s.pt", "--batch-size", HUGE], "--batch-size", "MAX_BATCH_SIZE"),
+    (["speaker", "train", "--data", "d", "--out", "s.pt", "--max-examples", HUGE], "--max-examples",
+     "MAX_TRAIN_EXAMPLES"),
+    (["speaker", "train", "--data", "d", "--out", "s.pt", "--max-trajectories", HUGE], "--max-trajectories",
+     "MAX_TRAJECTORIES"),
+    (["speaker", "describe", "--model", "s.pt", "--traj", "t.json", "--no-repeat-ngram", HUGE], "--no-repeat-ngram",
+     "MAX_NGRAM"),
+    (["bc", "train", "--demos", "d", "--out", "b.pt", "--epochs", HUGE], "--epochs", "MAX_EPOCHS"),
+    (["bc", "train", "--demos", "d", "--out", "b.pt", "--batch-size", HUGE], "--batch-size", "MAX_BATCH_SIZE"),
+    (["bc", "train", "--demos", "d", "--out", "b.pt", "--threads", HUGE], "--threads", "MAX_THREADS"),
+    (["bc", "collect", "--episodes", "1", "--start", HUGE, "--out", "o"], "--start", "MAX_EPISODE_INDEX"),
+    (["assets", "build", "--jobs", HUGE], "--jobs", "MAX_WORKERS"),
+    (["rooms", "convert", "--layouts", "l", "--out", "o", "--scene", HUGE], "--scene", "MAX_FLOOR_PLAN"),
+    (["train-layouts", "--out", "m.pt", "--epochs", HUGE], "--epochs", "MAX_EPOCHS"),
+    (["train-layouts", "--out", "m.pt", "--rooms", HUGE], "--rooms", "MAX_LAYOUT_ROOMS"),
+])
+def test_training_and_worker_counts_are_bounded_naming_the_limit(argv: list[str], option: str, limit: str,
+                                                                 tmp_path: Path, monkeypatch: pytest.MonkeyPatch,
+                                                                 capsys: pytest.CaptureFixture[str]) -> None:
+    """Issue 27: no integer option accepts up to 2**63-1; the message names the option, the bound and the
+    constant of luminous_sim.limits it comes from."""
+    import luminous_sim.limits as limits
+
+    monkeypatch.chdir(tmp_path)
+    code, _, err = run(argv, capsys)
+    assert code == 2 and one_line_error(err), err
+    assert option in err and str(getattr(limits, limit)) in err and f"luminous_sim.limits.{limit}" in err, err
+    assert sorted(p.name for p in tmp_path.iterdir()) == []
+
+
+def test_no_integer_option_is_unbounded() -> None:
+    """Every `type=` of an integer option of the command has an upper bound below 2**63-1 (seeds excepted)."""
+    import argparse
+
+    from luminous_sim.cli.args import seed
+    from luminous_sim.cli.main import build_parser
+
+    def walk(parser: argparse.ArgumentParser, path: str):
+        for action in parser._actions:
+            if isinstance(action, argparse._SubParsersAction):
+                for name, sub in action.choices.items():
+                    yield from walk(sub, f"{path} {name}")
+            elif getattr(action.type, "__name__", "") == "whole number" and action.type is not seed:
+                yield f"{path} {action.option_strings}", action.type
+
+    options = list(walk(build_parser(), "luminous"))
+    assert len(options) > 20, options
+    unbounded = []
+    for where, parse in options:
+        try:
+            parse(HUGE)
+        except argparse.ArgumentTypeError:
+            continue
+        unbounded.append(where)
+    assert not unbounded
