@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import argparse
+import sys
 from collections.abc import Iterable
 from pathlib import Path
 from typing import Any
@@ -18,6 +19,10 @@ def register(subparsers: argparse._SubParsersAction) -> None:
         "parse",
         help="parse every traj_data.json under DIR into a CDF (and merge per floor plan), realise each with CSSG "
         "in its own floor plan's shell, and write report.json / report.md",
+        description="Parse every traj_data.json under DIR into a CDF (and merge per floor plan), realise each with "
+        "CSSG in its own floor plan's shell, and write report.json / report.md.",
+        epilog="Exit status: 0 when at least one trajectory parsed, 1 when none did (the reports are written all "
+        "the same and say why), 2 for a bad argument or a folder without traj_data.json.",
     )
     p.add_argument("dir", type=Path, help="folder with ALFRED trajectories (.../traj_data.json), e.g. valid_seen")
     p.add_argument("--out", required=True, type=output_dir, help="folder to write cdf/, merged/ and the reports")
@@ -43,4 +48,10 @@ def cmd_parse(args: argparse.Namespace) -> int:
     write_report(report, args.out)
     print(report.summary())
     print(f"wrote {args.out / 'report.json'} and {args.out / 'report.md'}")
+    if report.parsed == 0:
+        first = next((f.error for f in report.files if f.error), None)
+        why = f" (the first: {first.splitlines()[0]})" if first else ""
+        print(f"luminous alfred parse: none of the {len(report.files)} trajectories under {args.dir} parsed{why}",
+              file=sys.stderr)
+        return 1
     return 0

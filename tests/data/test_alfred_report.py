@@ -58,6 +58,28 @@ def test_cli_writes_cdfs_merged_cdfs_and_reports(tmp_path, capsys):
     assert main(["cdf", "validate", *(str(out / p) for p in written)]) == 0
 
 
+def test_cli_exits_1_when_no_trajectory_parsed(tmp_path, capsys):
+    """Issue 27: a parse in which every trajectory fails is not a success (exit 1, one line on stderr naming the
+    folder and the first error); the reports are still written. One that parses is exit 0 (above)."""
+    src, out = tmp_path / "alfred", tmp_path / "out"
+    for name in ("a", "b"):
+        path = src / name / "trial_x" / "traj_data.json"
+        path.parent.mkdir(parents=True)
+        path.write_text(json.dumps({"task_type": "pick_and_place_simple"}))
+    assert main(["alfred", "parse", str(src), "--out", str(out)]) == 1
+    captured = capsys.readouterr()
+    assert "parsed: 0/2" in captured.out
+    (line,) = captured.err.strip().splitlines()
+    assert f"none of the 2 trajectories under {src} parsed" in line and "missing key" in line, line
+    assert json.loads((out / "report.json").read_text())["parsed"] == 0
+
+
+def test_cli_help_states_the_exit_status(capsys):
+    with pytest.raises(SystemExit):
+        main(["alfred", "parse", "--help"])
+    assert "1 when none did" in " ".join(capsys.readouterr().out.split())
+
+
 def test_cli_refuses_a_folder_without_trajectories(tmp_path, capsys):
     assert main(["alfred", "parse", str(tmp_path), "--out", str(tmp_path / "o")]) == 2
     assert "no traj_data.json found" in capsys.readouterr().err
