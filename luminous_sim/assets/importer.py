@@ -16,7 +16,7 @@ from luminous_sim.assets.objio import write_atomic
 from luminous_sim.assets.paths import coacd_cache_dir, user_asset_root
 from luminous_sim.assets.spec import AssetSpec, Link, Part, Region
 from luminous_sim.assets.urdf_writer import write_asset
-from luminous_sim.errors import AssetError
+from luminous_sim.errors import AssetError, path_kind
 from luminous_sim.vocab import abilities, check_type
 
 MESH_SUFFIXES = {".obj", ".glb", ".gltf", ".stl", ".ply", ".off"}
@@ -43,8 +43,9 @@ class ImportResult:
 def load_user_mesh(path: Path) -> trimesh.Trimesh:
     """Read a mesh file into one triangle mesh, with a clear AssetError for every way it can be bad."""
     path = Path(path)
-    if not path.is_file():
-        what = "not a regular file" if path.exists() else "no such file"
+    kind = path_kind(path)
+    if kind != "a regular file":
+        what = "no such file" if kind == "no such file or folder" else kind
         raise AssetError(f"{path}: {what}; expected a mesh file")
     if path.suffix.lower() not in MESH_SUFFIXES:
         raise AssetError(f"{path}: not a mesh file (expected one of {', '.join(sorted(MESH_SUFFIXES))})")

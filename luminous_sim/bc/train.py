@@ -23,7 +23,7 @@ from luminous_sim.bc.demos import TOKENS, Demo, load_demos
 from luminous_sim.bc.family import PICKUP_ENV
 from luminous_sim.bc.model import BCPolicy, PolicyShape
 from luminous_sim.env.vocabulary import vocabulary
-from luminous_sim.errors import LuminousError
+from luminous_sim.errors import LuminousError, path_kind
 from luminous_sim.vocab import ALL_TYPES
 
 FORMAT = "luminous-bc/1"
@@ -138,8 +138,8 @@ def load_checkpoint(path: Path) -> tuple[BCPolicy, dict[str, Any]]:
     """
     if not path.exists():
         raise LuminousError(f"{path}: no such checkpoint (train one with `luminous bc train`)")
-    if not path.is_file():
-        kind = "a folder" if path.is_dir() else "not a regular file (a device or a FIFO)"
+    kind = path_kind(path)
+    if kind != "a regular file":
         raise LuminousError(f"{path}: {kind}; expected a behaviour-cloning checkpoint (.pt)")
     try:
         saved = torch.load(path, map_location="cpu", weights_only=True)

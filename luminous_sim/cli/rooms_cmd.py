@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 
 from luminous_sim.cli.args import limited, output_dir, output_file, seed
-from luminous_sim.errors import RoomError
+from luminous_sim.errors import RoomError, path_kind
 from luminous_sim.rooms.alfred_convert import convert_all
 from luminous_sim.rooms.generate import SHAPES, generate_shell
 from luminous_sim.rooms.library import check_name, room_files, room_names, shell_for
@@ -106,8 +106,10 @@ def cmd_list(args: argparse.Namespace) -> int:
 
 def cmd_convert(args: argparse.Namespace) -> int:
     """Convert ALFRED layouts, with a progress bar on stderr."""
-    if not args.layouts.is_dir():
-        raise RoomError(f"{args.layouts}: no such layouts folder")
+    kind = path_kind(args.layouts)
+    if kind != "a folder":
+        what = "no such layouts folder" if kind == "no such file or folder" else kind
+        raise RoomError(f"{args.layouts}: {what}; expected a folder of FloorPlan<N>-layout.npy files")
     total = len(args.scene) if args.scene else len(list(args.layouts.glob("FloorPlan*-layout.npy")))
     try:
         from tqdm import tqdm

@@ -95,10 +95,68 @@ def test_bc_checkpoints_and_demo_folders_are_named(tmp_path: Path) -> None:
     garbage = tmp_path / "bad.pt"
     garbage.write_text('{"a": [1,')
     for path, needle in [(tmp_path, "a folder; expected a behaviour-cloning checkpoint"),
-                         (Path("/dev/null"), "not a regular file (a device or a FIFO)"),
+                         (Path("/dev/null"), "a device; expected a behaviour-cloning checkpoint"),
                          (garbage, "not a behaviour-cloning checkpoint (")]:
         with pytest.raises(LuminousError) as err:
             load_checkpoint(path)
         assert str(err.value).startswith(f"{path}: {needle}") and "\n" not in str(err.value), str(err.value)
     with pytest.raises(LuminousError, match="bad.pt: not a folder; expected the demonstrations folder"):
         load_demos(garbage)
+
+
+PATH_KIND = {"folder": "a folder", "device": "a device", "fifo": "a FIFO (named pipe)"}
+NAMED_COMMANDS = {
+    "rooms convert --layouts": (lambda p, o: ["rooms", "convert", "--layouts", p, "--out", o],
+                                {"missing": "no such layouts folder", "file": "a regular file", "device": "a device",
+                                 "fifo": "a FIFO (named pipe)"}),
+    "assets import": (lambda p, o: ["assets", "import", p, "--type", "Mug"],
+                      {"missing": "no such file", **PATH_KIND}),
+    "speaker describe --model": (lambda p, o: ["speaker", "describe", "--model", p, "--traj", p],
+                                 {"missing": "no such file or folder", **PATH_KIND}),
+    "speaker evaluate --model": (lambda p, o: ["speaker", "evaluate", "--model", p, "--data", o],
+                                 {"missing": "no such file or folder", **PATH_KIND}),
+    "speaker train --data": (lambda p, o: ["speaker", "train", "--data", p, "--out", o + ".pt"],
+                             {"missing": "no such file or folder", "device": "a device",
+                              "fifo": "a FIFO (named pipe)"}),
+}
+
+
+@pytest.mark.parametrize(("command", "case"), [(c, k) for c, (_, kinds) in NAMED_COMMANDS.items() for k in kinds])
+def test_paths_are_named_by_what_they_are(command: str, case: str, inputs: dict[str, str], tmp_path: Path,
+                                          capsys: pytest.CaptureFixture[str]) -> None:
+    """Issue 27: a folder, a device or a FIFO given where a file (or a file where a folder) is expected is named as
+    such, never "not found" or "not a regular file"; FIFOs are never opened."""
+    if command.startswith("speaker"):
+        pytest.importorskip("torch")
+    argv, kinds = NAMED_COMMANDS[command]
+    paths = {**inputs, "file": inputs["malformed"]}
+    path = paths[case]
+    out = str(tmp_path / "out")
+    code, _, err = run(argv(path, out), capsys)
+    assert code == 2 and one_line_error(err), err
+    assert f"{path}: {kinds[case]}" in err and "not found" not in err, err
+    assert not Path(out).exists() and not Path(out + ".pt").exists()
+
+
+def test_a_trajectory_fifo_is_named_without_being_opened(inputs: dict[str, str]) -> None:
+    from luminous_sim.errors import LuminousError
+    from luminous_sim.language.speaker.records import load_trajectory
+
+    with pytest.raises(LuminousError, match=r"pipe.json: a FIFO \(named pipe\); expected a trajectory file"):
+        load_trajectory(inputs["fifo"])
+
+
+def test_a_foreign_speaker_checkpoint_is_named_without_torchs_weights_only_note(tmp_path: Path) -> None:
+    torch = pytest.importorskip("torch")
+    import argparse
+
+    from luminous_sim.errors import LuminousError
+    from luminous_sim.language.speaker.checkpoint import load_checkpoint
+
+    path = tmp_path / "foreign.pt"
+    torch.save({"a": argparse.Namespace(x=1)}, path)
+    with pytest.raises(LuminousError) as err:
+        load_checkpoint(path)
+    text = str(err.value)
+    assert text.startswith(f"{path}: not a readable speaker checkpoint (") and "argparse.Namespace" in text, text
+    assert "weights_only" not in text and "trust" not in text and "\n" not in text and "\x1b" not in text, text

@@ -306,7 +306,7 @@ def test_traj_without_turk_annotations_raises(tmp_path: Path) -> None:
 
 
 def test_missing_file_empty_folder_and_broken_plan(tmp_path: Path) -> None:
-    with pytest.raises(SpeakerError, match="not found"):
+    with pytest.raises(SpeakerError, match="nope.json: no such file or folder; expected a trajectory file"):
         load_trajectory(tmp_path / "nope.json")
     with pytest.raises(SpeakerError, match="no traj_data.json"):
         load_trajectories(tmp_path)
@@ -424,7 +424,7 @@ def test_resume_continues_and_matches_an_uninterrupted_run(synthetic: Path, tmp_
     assert not [
         p for p in tmp_path.iterdir() if p.name.endswith(".tmp")
     ]  # atomic writes left nothing
-    with pytest.raises(SpeakerError, match="not found"):
+    with pytest.raises(SpeakerError, match="absent.pt: no such file or folder; expected a speaker checkpoint"):
         train(synthetic, tmp_path / "absent.pt", epochs=2, resume=True, progress=False)
 
 

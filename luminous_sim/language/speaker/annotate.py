@@ -13,7 +13,7 @@ from functools import cache
 from pathlib import Path
 from typing import Any
 
-from luminous_sim.language.speaker.errors import SpeakerError
+from luminous_sim.language.speaker.errors import SpeakerError, check_checkpoint_path
 
 BEAMS = (3, 1, 5)
 """Beam width of each annotation's decoding (a trial has three; more reuse the last)."""
@@ -26,8 +26,7 @@ def checkpoint_digest(path: str | Path) -> str:
         SpeakerError: the file is missing.
     """
     p = Path(path)
-    if not p.is_file():
-        raise SpeakerError(f"{p}: speaker checkpoint not found")
+    check_checkpoint_path(p)
     return hashlib.sha256(p.read_bytes()).hexdigest()
 
 

@@ -13,6 +13,7 @@ from pathlib import Path
 
 import numpy as np
 
+from luminous_sim.errors import path_kind
 from luminous_sim.language.speaker.errors import SpeakerError
 from luminous_sim.language.speaker.records import LowAction, Subgoal, Trajectory, load_trajectory
 from luminous_sim.language.speaker.text import tokenize
@@ -113,10 +114,11 @@ def find_trajectory_files(root: str | Path) -> list[Path]:
         SpeakerError: ``root`` does not exist or holds no traj_data.json.
     """
     root = Path(root)
-    if root.is_file():
+    kind = path_kind(root)
+    if kind == "a regular file":
         return [root]
-    if not root.is_dir():
-        raise SpeakerError(f"{root}: data folder not found")
+    if kind != "a folder":
+        raise SpeakerError(f"{root}: {kind}; expected a data folder of traj_data.json files (or one such file)")
     files = sorted(root.rglob("traj_data.json"))
     if not files:
         raise SpeakerError(f"{root}: no traj_data.json files under this folder")

@@ -9,7 +9,7 @@ from typing import Any
 
 import numpy as np
 
-from luminous_sim.language.speaker.errors import SpeakerError
+from luminous_sim.language.speaker.errors import SpeakerError, check_regular_file
 from luminous_sim.scene.ids import type_of_id
 
 
@@ -103,6 +103,7 @@ class Trajectory:
 
 
 def _read_json(path: Path) -> dict[str, Any]:
+    check_regular_file(path, "a trajectory file (traj_data.json)")
     try:
         text = path.read_text(encoding="utf-8")
     except FileNotFoundError:

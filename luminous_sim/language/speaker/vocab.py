@@ -7,7 +7,7 @@ from collections import Counter
 from collections.abc import Iterable
 from pathlib import Path
 
-from luminous_sim.language.speaker.errors import SpeakerError
+from luminous_sim.language.speaker.errors import SpeakerError, check_regular_file
 
 PAD, BOS, EOS, UNK = "<pad>", "<bos>", "<eos>", "<unk>"
 SPECIALS: tuple[str, ...] = (PAD, BOS, EOS, UNK)
@@ -101,6 +101,7 @@ class Vocab:
         Raises:
             SpeakerError: The file is missing, not JSON, or not a vocabulary.
         """
+        check_regular_file(path, "a vocabulary file (JSON)")
         try:
             items = json.loads(Path(path).read_text())
         except FileNotFoundError:
