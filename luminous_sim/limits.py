@@ -57,6 +57,8 @@ MAX_EPISODE_INDEX = 1_000_000_000
 """First episode index of a split one `bc collect` or `bc eval` may start at (`--start`)."""
 MAX_FLOOR_PLAN = 10_000
 """Largest AI2-THOR floor-plan number `rooms convert --scene` takes (ALFRED's run 1 to 430)."""
+MAX_INSTRUCTION_TOKENS = 1_000
+"""Instruction tokens an observation may hold (`InstructionTokens(length=...)`, `dataset minari --token-length`)."""
 MAX_NGRAM = 100
 """Longest n-gram a speaker's decoding may forbid repeating (`--no-repeat-ngram`)."""
 MAX_GENERATE_SCENES = 100_000

@@ -11,7 +11,7 @@ import tomllib
 from pathlib import Path
 from typing import Any
 
-from luminous_sim.cli.args import int_range, output_dir, seed
+from luminous_sim.cli.args import int_range, limited, output_dir, seed
 from luminous_sim.data.backends import BACKENDS
 from luminous_sim.limits import MAX_BUILD_JOBS, MAX_MINARI_EPISODES, MAX_MINARI_SEEDS, MAX_WORKERS
 from luminous_sim.splits import PLUS_SPLITS
@@ -80,7 +80,8 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--dataset-id", default=None, help="Minari dataset id (default luminous/<env>/oracle-v0)")
     p.add_argument("--env-kwarg", type=env_option, action="append", default=[], metavar="NAME=VALUE",
                    help="env option (repeatable), e.g. targets=objects or max_steps=100")
-    p.add_argument("--token-length", type=int_range(1, 1000), default=32, help="instruction tokens (default 32)")
+    p.add_argument("--token-length", type=limited(1, "MAX_INSTRUCTION_TOKENS"), default=32,
+                   help="instruction tokens (default 32)")
     p.add_argument("--max-seeds", type=int_range(1, MAX_MINARI_SEEDS), default=None,
                    help=f"give up after this many seeds (default 10 * episodes + 10; at most {MAX_MINARI_SEEDS})")
     p.add_argument("--jpeg", action="store_true", help="store images JPEG-encoded (lossy, smaller)")

@@ -99,6 +99,21 @@ def _clean_text(text: str) -> str:
     return out or "."
 
 
+def _checked_seed(seed: Any) -> int | None:
+    """`reset`'s seed: None or a whole number >= 0 (a numpy integer is taken as its value).
+
+    Raises:
+        LuminousError: anything else (a string, a float, a bool, a negative number), naming `seed`; checked
+            before gymnasium sees it, which would raise its own `gymnasium.error.Error`.
+    """
+    if seed is None:
+        return None
+    if isinstance(seed, (bool, np.bool_)) or not isinstance(seed, (int, np.integer)) or seed < 0:
+        shown = repr(seed) if len(repr(seed)) <= 40 else repr(seed)[:37] + "..."
+        raise LuminousError(f"reset seed: expected a whole number >= 0 or None, got {shown}")
+    return int(seed)
+
+
 class LuminousEnv(gymnasium.Env):
     """ALFRED's low-level actions, observations and limits in a generated room; see the module docstring.
 
@@ -157,6 +172,7 @@ class LuminousEnv(gymnasium.Env):
         """A new episode: a scene (generated, `options["scene"]`, a split's entry or a CDF's), a goal that fits
         it, the first view. The options are checked first (`reset_options`): a bad one is a `LuminousError`
         naming it, and nothing changes."""
+        seed = _checked_seed(seed)
         checked = reset_options(options, self.config)
         super().reset(seed=seed)
         rng = np.random.default_rng(int(self.np_random.integers(2**63)))

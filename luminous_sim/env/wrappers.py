@@ -11,7 +11,14 @@ import numpy as np
 from gymnasium import spaces
 
 from luminous_sim.env.vocabulary import encode, vocabulary
+from luminous_sim.errors import LuminousError
+from luminous_sim.limits import MAX_INSTRUCTION_TOKENS
 from luminous_sim.scene import STEP
+
+
+class WrapperArgumentError(LuminousError, ValueError):
+    """A wrapper given a bad argument; the message names the wrapper and the argument (a ValueError too, as
+    before)."""
 
 
 class InstructionTokens(gymnasium.ObservationWrapper, gymnasium.utils.RecordConstructorArgs):
@@ -23,7 +30,8 @@ class InstructionTokens(gymnasium.ObservationWrapper, gymnasium.utils.RecordCons
 
     Args:
         env: an env whose observation is a Dict with a `Text` `instruction`.
-        length: tokens kept (longer instructions are cut, shorter ones padded with `<pad>`, id 0).
+        length: tokens kept (longer instructions are cut, shorter ones padded with `<pad>`, id 0), 1 to
+            `limits.MAX_INSTRUCTION_TOKENS`.
         space: `multidiscrete` (SB3 one-hot encodes each token) or `box` (int64 ids).
     """
 
@@ -31,7 +39,13 @@ class InstructionTokens(gymnasium.ObservationWrapper, gymnasium.utils.RecordCons
         gymnasium.utils.RecordConstructorArgs.__init__(self, length=length, space=space)
         gymnasium.ObservationWrapper.__init__(self, env)
         if space not in ("multidiscrete", "box"):
-            raise ValueError(f"space {space!r}: expected 'multidiscrete' or 'box'")
+            raise WrapperArgumentError(f"InstructionTokens space: expected 'multidiscrete' or 'box', got {space!r}")
+        if isinstance(length, bool) or not isinstance(length, (int, np.integer)) or not \
+                1 <= length <= MAX_INSTRUCTION_TOKENS:
+            raise WrapperArgumentError(f"InstructionTokens length: expected a whole number from 1 to "
+                                       f"{MAX_INSTRUCTION_TOKENS} (luminous_sim.limits.MAX_INSTRUCTION_TOKENS), "
+                                       f"got {length!r}")
+        length = int(length)
         self.length = length
         n = len(vocabulary())
         tokens: spaces.Space = (spaces.MultiDiscrete(np.full(length, n, dtype=np.int64)) if space == "multidiscrete"
@@ -67,9 +81,9 @@ class ActionFeedback(gymnasium.Wrapper, gymnasium.utils.RecordConstructorArgs):
             raise TypeError("ActionFeedback needs a Discrete action space and a Dict observation space, got "
                             f"{env.action_space} and {type(env.observation_space).__name__}")
         if isinstance(history, bool) or not isinstance(history, int) or history < 1:
-            raise ValueError(f"ActionFeedback history: expected a positive integer, got {history!r}")
+            raise WrapperArgumentError(f"ActionFeedback history: expected a positive integer, got {history!r}")
         if isinstance(failures, bool) or not isinstance(failures, int) or failures < 0:
-            raise ValueError(f"ActionFeedback failures: expected an integer >= 0, got {failures!r}")
+            raise WrapperArgumentError(f"ActionFeedback failures: expected an integer >= 0, got {failures!r}")
         self.none = int(env.action_space.n)
         self.history, self.failures = history, failures
         self._past = np.tile(np.array([self.none, 0], np.int64), history)
@@ -139,7 +153,7 @@ class SceneRepeat(gymnasium.Wrapper, gymnasium.utils.RecordConstructorArgs):
         gymnasium.utils.RecordConstructorArgs.__init__(self, repeats=repeats)
         gymnasium.Wrapper.__init__(self, env)
         if isinstance(repeats, bool) or not isinstance(repeats, int) or repeats < 1:
-            raise ValueError(f"SceneRepeat repeats: expected a positive integer, got {repeats!r}")
+            raise WrapperArgumentError(f"SceneRepeat repeats: expected a positive integer, got {repeats!r}")
         self.repeats = repeats
         self._left = 0
 
@@ -174,8 +188,8 @@ class ActionSubset(gymnasium.ActionWrapper, gymnasium.utils.RecordConstructorArg
         labels = env.unwrapped.actions.labels()  # type: ignore[attr-defined]
         unknown = [n for n in names if n not in labels]
         if not names or unknown or len(set(names)) != len(names):
-            raise ValueError(f"ActionSubset names: {unknown or names} are not distinct names of this env's actions "
-                             f"(e.g. {', '.join(labels[:7])}, ...)")
+            raise WrapperArgumentError(f"ActionSubset names: {unknown or names} are not distinct names of this env's "
+                                       f"actions (e.g. {', '.join(labels[:7])}, ...)")
         self.names = names
         self.indices = [labels.index(n) for n in names]
         self.action_space = spaces.Discrete(len(names))

@@ -346,3 +346,44 @@ def test_random_options_and_actions_raise_only_the_documented_errors(env, scene,
         obs, reward, terminated, truncated, _ = env.step(action)
         assert env.observation_space.contains(obs) and np.isfinite(reward)
         ended = terminated or truncated
+
+
+# ------------------------------------------------------------------ reset's seed and the wrappers' arguments
+
+
+@pytest.mark.parametrize("seed", ["3", -1, 1.5, True, [1], 2.0])
+def test_a_bad_seed_is_a_luminous_error_naming_seed(env, seed):
+    """Issue 27: checked before gymnasium's own `gymnasium.error.Error`, and before anything changes."""
+    episode, world = env.episode, env.world
+    with pytest.raises(LuminousError, match=r"reset seed: expected a whole number >= 0 or None, got ") as exc:
+        env.reset(seed=seed)
+    one_line(exc)
+    assert not isinstance(exc.value, gymnasium.error.Error)
+    assert env.episode is episode and env.world is world
+
+
+def test_a_numpy_seed_is_taken_as_its_value(env, scene):
+    env.reset(seed=np.int64(4), options={"scene": scene})
+    a = env.np_random.integers(1000)
+    env.reset(seed=4, options={"scene": scene})
+    assert env.np_random.integers(1000) == a
+
+
+@pytest.mark.parametrize(("kwargs", "message"), [
+    ({"space": "boxes"}, "InstructionTokens space: expected 'multidiscrete' or 'box', got 'boxes'"),
+    ({"length": 0}, "InstructionTokens length: expected a whole number from 1 to 1000 "
+                    "(luminous_sim.limits.MAX_INSTRUCTION_TOKENS), got 0"),
+    ({"length": 10**12}, "InstructionTokens length: expected a whole number from 1"),
+    ({"length": "32"}, "InstructionTokens length: expected a whole number from 1"),
+])
+def test_bad_wrapper_arguments_are_luminous_errors_naming_them(kwargs, message):
+    from luminous_sim.env import InstructionTokens
+
+    inner = gymnasium.make(SMALL, verify_expert=False)
+    try:
+        with pytest.raises(LuminousError) as exc:
+            InstructionTokens(inner, **kwargs)
+        assert one_line(exc).startswith(message), exc.value
+        assert isinstance(exc.value, ValueError)  # as before, for code that caught ValueError
+    finally:
+        inner.close()
