@@ -166,3 +166,8 @@ def path_kind(path: str | os.PathLike[str]) -> str:
         return "no such file or folder"
     except OSError as exc:
         return f"cannot read ({exc.strerror or exc})"
+
+
+def link_or_kind(path: str | os.PathLike[str]) -> str:
+    """`path_kind`'s words, or "a symbolic link" for a link (which builds and evaluations never follow)."""
+    return "a symbolic link" if os.path.islink(path) else path_kind(path)

@@ -30,7 +30,7 @@ from typing import Any
 
 from luminous_sim.assets.catalog import default_catalog
 from luminous_sim.cdf import CDFValidationError, ChallengeDefinition, from_document, to_sexpr
-from luminous_sim.errors import LuminousError, RoomError, VocabularyError
+from luminous_sim.errors import LuminousError, RoomError, VocabularyError, path_kind
 from luminous_sim.rooms import load_room
 from luminous_sim.scene.ids import type_of_id
 from luminous_sim.tasks import PddlParams, TaskError, cdf_for_task, required_objects
@@ -227,7 +227,7 @@ def read_traj(path: str | Path, source: str | None = None) -> Mapping[str, Any]:
     if path.is_dir():
         raise AlfredParseError(f"{source}: a folder; expected a traj_data.json file")
     if not path.is_file():
-        raise AlfredParseError(f"{source}: not a regular file (a device or a pipe?); expected a traj_data.json file")
+        raise AlfredParseError(f"{source}: {path_kind(path)}; expected a traj_data.json file")
     size = path.stat().st_size
     if size > MAX_TRAJ_BYTES:
         raise AlfredParseError(f"{source}: {size} bytes; a traj_data.json may hold at most {MAX_TRAJ_BYTES}")

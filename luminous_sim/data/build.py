@@ -54,7 +54,7 @@ from luminous_sim.assets.objio import write_atomic
 from luminous_sim.data.alfred_export import ExportError, export_alfred
 from luminous_sim.data.backends import Backend, map_jobs
 from luminous_sim.data.manifest import Manifest, Record, plain_name
-from luminous_sim.errors import LuminousError
+from luminous_sim.errors import LuminousError, link_or_kind
 from luminous_sim.limits import MAX_BUILD_JOBS
 from luminous_sim.scene import Scene
 from luminous_sim.splits import SplitEntry, oct21_document, split_entry
@@ -502,7 +502,7 @@ def _check_settings(out: Path, options: BuildOptions) -> None:
     wanted = options.settings()
     if path.exists() or path.is_symlink():
         if path.is_symlink() or not path.is_file():
-            raise BuildError(f"{path}: not a regular file; expected the build's settings")
+            raise BuildError(f"{path}: {link_or_kind(path)}; expected the build's settings")
         try:
             have = json.loads(path.read_bytes()[:1_000_000])
         except (ValueError, RecursionError) as exc:

@@ -24,7 +24,7 @@ from pathlib import Path
 from typing import Any
 
 from luminous_sim.assets.objio import write_atomic
-from luminous_sim.errors import LuminousError
+from luminous_sim.errors import LuminousError, link_or_kind
 
 Record = dict[str, Any]
 STATUSES = ("built", "failed")
@@ -72,7 +72,7 @@ class Manifest:
 
     def _load(self) -> None:
         if self.path.is_symlink() or not self.path.is_file():
-            raise ManifestError(f"{self.path}: not a regular file; expected the build's manifest")
+            raise ManifestError(f"{self.path}: {link_or_kind(self.path)}; expected the build's manifest")
         size = self.path.stat().st_size
         if size > MAX_BYTES:
             raise ManifestError(f"{self.path}: {size} bytes; a manifest may hold at most {MAX_BYTES}")

@@ -37,7 +37,7 @@ import numpy as np
 from luminous_sim.assets.objio import write_atomic
 from luminous_sim.data.backends import Backend
 from luminous_sim.env import EnvConfig, EpisodeUnavailable, LuminousEnv
-from luminous_sim.errors import LuminousError
+from luminous_sim.errors import LuminousError, link_or_kind
 from luminous_sim.eval.metrics import AGENT_FAULT, EpisodeOutcome, Metrics, metrics, metrics_by_type
 from luminous_sim.eval.policies import Agent, PolicyError, check_policy, make_agent
 from luminous_sim.eval.workers import map_local, map_ordered
@@ -212,8 +212,7 @@ def read_outcome(path: Path, split: str, index: int) -> EpisodeOutcome:
             fields (an edit), or another episode's outcome; the message names the file and the field.
     """
     if path.is_symlink() or not path.is_file():
-        kind = "a symbolic link" if path.is_symlink() else "a folder" if path.is_dir() else "not a regular file"
-        raise LuminousError(f"{path}: {kind}; expected an episode outcome file")
+        raise LuminousError(f"{path}: {link_or_kind(path)}; expected an episode outcome file")
     size = path.stat().st_size
     if size > MAX_EPISODE_FILE_BYTES:
         raise LuminousError(f"{path}: {size} bytes; an episode outcome file holds at most {MAX_EPISODE_FILE_BYTES} "
@@ -290,7 +289,7 @@ def _claim(out_dir: Path, run: dict[str, Any]) -> None:
                             "expected the folder of episode outcomes")
     if path.exists() or path.is_symlink():
         if path.is_symlink() or not path.is_file():
-            raise LuminousError(f"{path}: {'a symbolic link' if path.is_symlink() else 'not a regular file'}; "
+            raise LuminousError(f"{path}: {link_or_kind(path)}; "
                                 "expected the evaluation's run.json")
         try:
             old = json.loads(path.read_bytes()[:MAX_EPISODE_FILE_BYTES])

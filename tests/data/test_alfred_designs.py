@@ -226,5 +226,5 @@ def test_the_design_reader_refuses_what_alfred_parse_refuses(shared_alfred, tmp_
     folder.mkdir(parents=True)
     with pytest.raises(DesignError, match="traj_data.json: a folder; expected a traj_data.json file"):
         read_design(folder)
-    with pytest.raises(DesignError, match="/dev/null: not a regular file"):
+    with pytest.raises(DesignError, match="/dev/null: a device; expected a traj_data.json file"):
         read_design("/dev/null")

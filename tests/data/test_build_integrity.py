@@ -226,7 +226,7 @@ def test_a_manifest_that_is_a_folder_is_named(tmp_path):
     build(out, jobs(count=1), options=QUICK, progress=False)
     (out / MANIFEST).unlink()
     (out / MANIFEST).mkdir()
-    with pytest.raises(ManifestError, match="manifest.jsonl: not a regular file"):
+    with pytest.raises(ManifestError, match="manifest.jsonl: a folder; expected the build.s manifest"):
         build(out, jobs(count=1), options=QUICK, progress=False)
 
 

@@ -61,7 +61,7 @@ def test_a_non_empty_folder_that_holds_no_evaluation_is_refused(tmp_path, fast, 
 
 
 @pytest.mark.parametrize("make, match", [
-    (lambda p: (p / "run.json").mkdir(), "run.json: not a regular file"),
+    (lambda p: (p / "run.json").mkdir(), "run.json: a folder; "),
     (lambda p: (p / "run.json").write_text("[]"), "run.json: expected a JSON object"),
     (lambda p: (p / "run.json").write_text("{"), "run.json: not JSON"),
     (lambda p: (p / "episodes").write_text("x"), "episodes: not a folder"),
