@@ -196,23 +196,32 @@ class Oracle:
 
             def stay(pose) -> bool:  # looking up or down, or turning, rather than walking
                 return (pose.x, pose.y) == (here.x, here.y)
-            self._goto(look_at, high_idx, traj, prefer_pose=stay)
-            mask = self._mask(look_at)
+            try:
+                self._goto(look_at, high_idx, traj, prefer_pose=stay)
+                mask = self._mask(look_at)
+            except ExecutionError:  # no pose shows it fully (an apple at the back of a microwave): as it is
+                mask = self._mask(look_at, few_pixels=True)
+                if mask is None:
+                    raise
+            if mask is None:
+                mask = self._mask(look_at, few_pixels=True)
         if mask is None:
             raise ExecutionError(f"{look_at} is not visible enough for {step.action} to point at it",
                                  FailureCode.NOT_VISIBLE)
         api = interaction_api(step.action, step.object_id, step.receptacle_id)
         self._low(api, {"action": step.action, "args": interaction_args(mask)}, high_idx, traj)
 
-    def _mask(self, look_at: str) -> np.ndarray | None:
-        """The object's own mask, if it is visible (enough pixels, within reach) and ALFRED's mask-to-object
-        lookup (`ThorEnv.va_interact`: the most-overlapping interactable object, the held one excluded)
-        returns it for that mask; else None. Never another object's mask: ALFRED would act on that object."""
+    def _mask(self, look_at: str, few_pixels: bool = False) -> np.ndarray | None:
+        """The object's own mask, if it is visible (`min_visible_pixels` within reach; with `few_pixels`, any
+        pixel of it when it sits in an open container in view, which AI2-THOR lets the agent reach into) and
+        ALFRED's mask-to-object lookup (`ThorEnv.va_interact`: the instance that best overlaps the mask,
+        the held object excluded, interactable objects only) returns it for that mask; else None. Never
+        another object's mask: ALFRED would act on that object."""
         view = self.view
-        if look_at not in view.visible_objects():
+        if look_at not in view.visible_objects() and not (few_pixels and view.open_container_in_view(look_at)):
             return None
         mask = view.instance_masks().get(look_at)
-        if mask is None:
+        if mask is None or not mask.any():
             return None
         world = self.world
         state = view.state
