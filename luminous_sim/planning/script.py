@@ -163,6 +163,8 @@ class ScriptOracle(Oracle):
         if look_at is None:
             raise ExecutionError(f"{step.action} names no object", FailureCode.NO_TARGET)
         mask = self._mask(look_at)
+        if mask is None:  # its own few pixels in an open container in view, never the container's
+            mask = self._mask(look_at, few_pixels=True)
         if mask is None:
             raise ExecutionError(f"{look_at} is not visible enough from here for {step.action} to point at it",
                                  FailureCode.NOT_VISIBLE)
