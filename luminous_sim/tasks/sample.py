@@ -77,7 +77,7 @@ def _where(scene: Scene) -> str:
 
 
 def feasible_params(
-    scene: Scene, state: WorldState, task_type: str, sliced: bool | None = None
+    scene: Scene, state: WorldState, task_type: str, sliced: bool | None = None, *, judged_alike: bool = True
 ) -> list[PddlParams]:
     """Every parameter set ALFRED's constraints allow for a task type in a scene, in sorted order.
 
@@ -86,6 +86,8 @@ def feasible_params(
         state: the scene's current object states (what is where, what is held).
         task_type: one of the seven ALFRED task types.
         sliced: True for sliced variants only, False for unsliced only, None for both.
+        judged_alike: leave out tasks ALFRED's objectId substring matching would judge differently from
+            ours (`alfred_name_clash`); False keeps them (ALFRED's own tasks, reproduced by `--from-alfred`).
 
     Raises:
         TaskSamplingError: none is feasible; the message names the scene and the reason.
@@ -105,13 +107,13 @@ def feasible_params(
     open_goals = [p for p in cands if not _already_met(task_type, p, state)]
     if not open_goals:
         raise TaskSamplingError(f"{where}: every candidate goal already holds in the initial state")
-    clashes = {p: alfred_name_clash(p, state) for p in open_goals}
-    judged_alike = [p for p in open_goals if clashes[p] is None]
-    if not judged_alike:
+    clashes = {p: alfred_name_clash(p, state) if judged_alike else None for p in open_goals}
+    alike = [p for p in open_goals if clashes[p] is None]
+    if not alike:
         example = next(c for c in clashes.values() if c is not None)
         raise TaskSamplingError(f"{where}: {SUBSTRING_CLASH}: all {len(open_goals)} open candidate goals "
                                 f"(e.g. {example})")
-    return sorted(judged_alike, key=lambda p: tuple(str(getattr(p, k)) for k in DRAW_ORDER))
+    return sorted(alike, key=lambda p: tuple(str(getattr(p, k)) for k in DRAW_ORDER))
 
 
 SUBSTRING_CLASH = "ALFRED's objectId substring matching would judge the goal differently"

@@ -6,6 +6,7 @@ from __future__ import annotations
 import copy
 import io
 import json
+from itertools import pairwise
 from pathlib import Path
 
 import pytest
@@ -39,7 +40,7 @@ def test_structure_matches_every_real_valid_seen_file(exported, real_structures)
     problems = structure_differences(structure(data), real_structures)
     assert not problems, "\n".join(problems[:50])
     subgoals = [h["planner_action"]["action"] for h in data["plan"]["high_pddl"]]
-    assert not any(a == b == "GotoLocation" for a, b in zip(subgoals, subgoals[1:])), subgoals  # as in ALFRED's
+    assert not any(a == b == "GotoLocation" for a, b in pairwise(subgoals)), subgoals  # as in ALFRED's
 
 
 def test_structure_check_names_what_differs(exported, real_structures):
@@ -108,7 +109,7 @@ def test_other_task_types_match_every_real_file(task_type, room, tmp_path, real_
     problems = structure_differences(structure(data), real_structures)
     assert not problems, "\n".join(problems[:50])
     subgoals = [h["planner_action"]["action"] for h in data["plan"]["high_pddl"]]
-    assert not any(a == b == "GotoLocation" for a, b in zip(subgoals, subgoals[1:])), subgoals  # as in ALFRED's
+    assert not any(a == b == "GotoLocation" for a, b in pairwise(subgoals)), subgoals  # as in ALFRED's
     assert data["scene"]["dirty_and_empty"] == (task_type == "pick_clean_then_place_in_recep")
     assert bool(data["scene"]["object_toggles"]) == (task_type == "look_at_obj_in_light")
 

@@ -474,6 +474,8 @@ def test_a_target_alfred_matches_by_substring_to_another_type_is_rejected_with_t
     assert "ButterKnife" in (alfred_name_clash(PddlParams("Knife", "SinkBasin"), state_of(butter)) or "")
     pots = feasible(KITCHEN, "pick_and_place_simple")
     assert pots and all("Pot" not in (p.object_target, p.mrecep_target) for p in pots)
+    kept = feasible(KITCHEN, "pick_and_place_simple", judged_alike=False)  # ALFRED's own tasks (--from-alfred)
+    assert any(p.object_target == "Pot" for p in kept) and set(pots) < set(kept)
     bathroom = {"Toilet|1": ("Toilet", None), "ToiletPaperHanger|1": ("ToiletPaperHanger", None),
                 "SoapBar|1": ("SoapBar", None)}
     rejected(bathroom, "pick_and_place_simple", SUBSTRING_CLASH + r".*'Toilet' also matches ToiletPaperHanger",
