@@ -147,7 +147,7 @@ def scene_misfit(scene: Scene, design: AlfredDesign, catalog: Catalog | None = N
             return "goal_at_start", f"{design.name}: the goal already holds at the start"
         hidden = unseeable(view)
         try:
-            cands = feasible_params(scene, state.without(hidden), design.task_type)
+            cands = feasible_params(scene, state.without(hidden), design.task_type, judged_alike=False)
         except TaskSamplingError as exc:
             return "infeasible", str(exc)
         if design.params not in cands:

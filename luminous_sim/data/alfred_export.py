@@ -154,6 +154,18 @@ def fold_subgoals(actions: list[str]) -> list[int]:
     return out
 
 
+def merge_walks(actions: list[str]) -> list[int]:
+    """For each ALFRED subgoal, the index of the subgoal it becomes once each run of consecutive
+    GotoLocations is one walk (to where the last of them leads). ALFRED's plans never hold two walks in a
+    row (none of valid_seen's 251 does), and its dense reward reads a Heat/Cool's object two subgoals
+    ahead, where it expects the PutObject after the one walk."""
+    out: list[int] = []
+    for k, a in enumerate(actions):
+        joins = k > 0 and a == "GotoLocation" and actions[k - 1] == "GotoLocation"
+        out.append(out[-1] if joins else (out[-1] + 1 if out else 0))
+    return out
+
+
 def _goto_args(high: list[dict[str, Any]], k: int, fallback: list[str]) -> list[str]:
     """ALFRED names a GotoLocation by the next subgoal's receptacle coordinate, else its object's."""
     if k + 1 >= len(high):
@@ -204,6 +216,9 @@ def alfred_traj_data(scene: Scene, record: EpisodeRecord, seed: int,
     ours = [h for h in traj.high_pddl if h["planner_action"]["action"] != "End"]
     fold = fold_subgoals([h["planner_action"]["action"] for h in ours])
     kept = [i for i, h in enumerate(ours) if h["planner_action"]["action"] in ALFRED_SUBGOALS]
+    merge = merge_walks([ours[i]["planner_action"]["action"] for i in kept])
+    fold = [merge[k] for k in fold]
+    kept = [i for k, i in enumerate(kept) if k + 1 == len(kept) or merge[k + 1] != merge[k]]
     high = [{"discrete_action": ours[i]["discrete_action"], "high_idx": k,
              "planner_action": _planner_action(ours[i]["planner_action"], coords)} for k, i in enumerate(kept)]
     for k, h in enumerate(high):

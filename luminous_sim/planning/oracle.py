@@ -5,6 +5,7 @@ action, and replan from the reached state when something fails."""
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
 from typing import Any
 
 import numpy as np
@@ -17,6 +18,9 @@ from luminous_sim.planning.navigation import NavGraph, goto_actions
 from luminous_sim.planning.trajectory import Trajectory
 from luminous_sim.vocab import DISCRETE_NAVIGATION
 from luminous_sim.world import World, interaction_args
+from luminous_sim.world.agent import AgentPose
+from luminous_sim.world.masks import resolve_target
+from luminous_sim.world.reach import interactable
 
 MAX_REPLANS = 3
 PUT_CHECK_SEED = 7
@@ -160,10 +164,12 @@ class Oracle:
             return args["objectId"], args["receptacleObjectId"]
         return None
 
-    def _goto(self, object_id: str, high_idx: int, traj: Trajectory, put: tuple[str, str] | None = None):
+    def _goto(self, object_id: str, high_idx: int, traj: Trajectory, put: tuple[str, str] | None = None,
+              prefer_pose: Callable[[AgentPose], bool] | None = None):
         """Walk to a pose that sees the object; before a put, preferably one from which the held thing
-        has a free spot in reach (a crowded table may have room only on its far side)."""
-        prefer = None
+        has a free spot in reach (a crowded table may have room only on its far side); else one that
+        passes `prefer_pose`, if any does."""
+        prefer = prefer_pose
         if put is not None:
             view = self.view
 
@@ -184,24 +190,44 @@ class Oracle:
 
     def _interact(self, step: Step, high_idx: int, traj: Trajectory) -> None:
         look_at = step.receptacle_id or step.object_id
-        view = self.view
-        if look_at not in view.visible_objects() and view.open_container_in_view(look_at) is None:
-            self._goto(look_at, high_idx, traj)  # e.g. an apple that an opened door revealed elsewhere
-        mask = self._mask(look_at, step.action)
+        mask = self._mask(look_at)
+        if mask is None:  # e.g. an egg that the opened fridge's shelf hides, or one an opened door revealed elsewhere
+            here = self.view.agent
+
+            def stay(pose) -> bool:  # looking up or down, or turning, rather than walking
+                return (pose.x, pose.y) == (here.x, here.y)
+            try:
+                self._goto(look_at, high_idx, traj, prefer_pose=stay)
+                mask = self._mask(look_at)
+            except ExecutionError:  # no pose shows it fully (an apple at the back of a microwave): as it is
+                mask = self._mask(look_at, few_pixels=True)
+                if mask is None:
+                    raise
+            if mask is None:
+                mask = self._mask(look_at, few_pixels=True)
+        if mask is None:
+            raise ExecutionError(f"{look_at} is not visible enough for {step.action} to point at it",
+                                 FailureCode.NOT_VISIBLE)
         api = interaction_api(step.action, step.object_id, step.receptacle_id)
         self._low(api, {"action": step.action, "args": interaction_args(mask)}, high_idx, traj)
 
-    def _mask(self, look_at: str, action: str) -> np.ndarray:
-        """The mask an interaction with `look_at` points at: the object's, or the open container's it is in."""
+    def _mask(self, look_at: str, few_pixels: bool = False) -> np.ndarray | None:
+        """The object's own mask, if it is visible (`min_visible_pixels` within reach; with `few_pixels`, any
+        pixel of it when it sits in an open container in view, which AI2-THOR lets the agent reach into) and
+        ALFRED's mask-to-object lookup (`ThorEnv.va_interact`: the instance that best overlaps the mask,
+        the held object excluded, interactable objects only) returns it for that mask; else None. Never
+        another object's mask: ALFRED would act on that object."""
         view = self.view
-        masks = view.instance_masks()
-        mask = masks.get(look_at)
-        if mask is None or mask.sum() < view.config.min_visible_pixels:
-            container = view.open_container_in_view(look_at)
-            mask = masks.get(container) if container else mask  # the open container it is taken from
-        if mask is None:
-            raise ExecutionError(f"{look_at} is not visible for {action}", FailureCode.NOT_VISIBLE)
-        return mask
+        if look_at not in view.visible_objects() and not (few_pixels and view.open_container_in_view(look_at)):
+            return None
+        mask = view.instance_masks().get(look_at)
+        if mask is None or not mask.any():
+            return None
+        world = self.world
+        state = view.state
+        found = resolve_target(mask, world.instance_ids(), world.body_to_object(), state.held,
+                               lambda oid: interactable(state, oid))
+        return mask if found == look_at else None
 
     def _low(self, api: dict[str, Any], discrete: dict[str, Any], high_idx: int, traj: Trajectory) -> None:
         result = self.world.step(api)

@@ -162,7 +162,12 @@ class ScriptOracle(Oracle):
         look_at = r or o
         if look_at is None:
             raise ExecutionError(f"{step.action} names no object", FailureCode.NO_TARGET)
-        mask = self._mask(look_at, step.action)
+        mask = self._mask(look_at)
+        if mask is None:  # its own few pixels in an open container in view, never the container's
+            mask = self._mask(look_at, few_pixels=True)
+        if mask is None:
+            raise ExecutionError(f"{look_at} is not visible enough from here for {step.action} to point at it",
+                                 FailureCode.NOT_VISIBLE)
         high_idx = len(traj.high_pddl)
         api: dict[str, Any] = interaction_api(step.action, o or "", r)
         self._low(api, {"action": step.action, "args": interaction_args(mask)}, high_idx, traj)

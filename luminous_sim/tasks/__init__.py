@@ -42,6 +42,8 @@ from luminous_sim.tasks.meanings import MEANINGS, PredicateMeaning
 from luminous_sim.tasks.model import PddlParams, TaskInstance
 from luminous_sim.tasks.rooms import object_rooms, rooms_apart
 from luminous_sim.tasks.sample import (
+    SUBSTRING_CLASH,
+    alfred_name_clash,
     draw_kept,
     draw_params,
     feasible_params,
@@ -62,6 +64,7 @@ __all__ = [
     "MEANINGS",
     "PLAN_ORDER",
     "STATE_LITERALS",
+    "SUBSTRING_CLASH",
     "TASK_TYPES",
     "TEMPLATES",
     "Condition",
@@ -72,6 +75,7 @@ __all__ = [
     "TaskInstance",
     "TaskSamplingError",
     "TaskType",
+    "alfred_name_clash",
     "cdf_for_task",
     "check_initial",
     "closed_receptacles_goal",

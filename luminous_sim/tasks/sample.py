@@ -15,6 +15,7 @@ from dataclasses import replace
 
 import numpy as np
 
+from luminous_sim.errors import LuminousError
 from luminous_sim.scene.model import Scene
 from luminous_sim.states import ObjectState, WorldState
 from luminous_sim.tasks.candidates import candidates
@@ -28,9 +29,12 @@ from luminous_sim.tasks.types import (
     goal_for,
     task_info,
 )
+from luminous_sim.vocab import abilities
 
 __all__ = [
     "DRAW_ORDER",
+    "SUBSTRING_CLASH",
+    "alfred_name_clash",
     "cdf_for_task",
     "draw_kept",
     "draw_params",
@@ -73,7 +77,7 @@ def _where(scene: Scene) -> str:
 
 
 def feasible_params(
-    scene: Scene, state: WorldState, task_type: str, sliced: bool | None = None
+    scene: Scene, state: WorldState, task_type: str, sliced: bool | None = None, *, judged_alike: bool = True
 ) -> list[PddlParams]:
     """Every parameter set ALFRED's constraints allow for a task type in a scene, in sorted order.
 
@@ -82,6 +86,8 @@ def feasible_params(
         state: the scene's current object states (what is where, what is held).
         task_type: one of the seven ALFRED task types.
         sliced: True for sliced variants only, False for unsliced only, None for both.
+        judged_alike: leave out tasks ALFRED's objectId substring matching would judge differently from
+            ours (`alfred_name_clash`); False keeps them (ALFRED's own tasks, reproduced by `--from-alfred`).
 
     Raises:
         TaskSamplingError: none is feasible; the message names the scene and the reason.
@@ -101,7 +107,54 @@ def feasible_params(
     open_goals = [p for p in cands if not _already_met(task_type, p, state)]
     if not open_goals:
         raise TaskSamplingError(f"{where}: every candidate goal already holds in the initial state")
-    return sorted(open_goals, key=lambda p: tuple(str(getattr(p, k)) for k in DRAW_ORDER))
+    clashes = {p: alfred_name_clash(p, state) if judged_alike else None for p in open_goals}
+    alike = [p for p in open_goals if clashes[p] is None]
+    if not alike:
+        example = next(c for c in clashes.values() if c is not None)
+        raise TaskSamplingError(f"{where}: {SUBSTRING_CLASH}: all {len(open_goals)} open candidate goals "
+                                f"(e.g. {example})")
+    return sorted(alike, key=lambda p: tuple(str(getattr(p, k)) for k in DRAW_ORDER))
+
+
+SUBSTRING_CLASH = "ALFRED's objectId substring matching would judge the goal differently"
+"""The rejection reason of `alfred_name_clash` (a `TaskSamplingError` names it when it leaves no candidate)."""
+
+ROLE_ABILITY: tuple[tuple[str, str], ...] = (
+    ("object_type", "pickupable"),
+    ("parent_target", "receptacle"),
+    ("mrecep_target", "pickupable"),
+    ("toggle_target", "toggleable"),
+)
+"""Each task parameter and the ability ALFRED's `env/tasks.py` asks of the objects it matches."""
+
+
+def alfred_name_clash(params: PddlParams, state: WorldState) -> str | None:
+    """Why ALFRED's evaluator would judge this task differently from ours in this scene, or None.
+
+    ALFRED's `env/tasks.py` matches a target by substring of the objectId (`get_objects_with_name_and_prop`):
+    `Knife` also matches `ButterKnife|...`, `Pot` a `Potato|...`, `Pen` a `Pencil|...`, `Toilet` a
+    `ToiletPaperHanger|...`; we match by type (a parent type also matching its slices). Where the scene holds
+    an object with the ability ALFRED asks that matches a target's name by substring but not by type, some
+    state (a butter knife in the sink basin, perhaps from the start) is a success for one judge and not the
+    other: such a task is rejected, as ALFRED's generator never meets it (its floor plans are fixed).
+    """
+    for key, ability in ROLE_ABILITY:
+        name: str = getattr(params, key)
+        if not name:
+            continue
+        base = name.removesuffix("Sliced")
+        ours = {base, f"{base}Sliced"}
+        for oid, obj in state.objects.items():
+            if name in oid and obj.object_type not in ours and _has(obj.object_type, ability):
+                return f"{key} {name!r} also matches {oid} ({obj.object_type})"
+    return None
+
+
+def _has(object_type: str, ability: str) -> bool:
+    try:
+        return bool(getattr(abilities(object_type), ability))
+    except LuminousError:  # a type outside ALFRED's vocabulary: no ability ALFRED's checks ask about
+        return False
 
 
 def _already_met(task_type: str, params: PddlParams, state: WorldState) -> bool:

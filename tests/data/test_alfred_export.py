@@ -6,6 +6,7 @@ from __future__ import annotations
 import copy
 import io
 import json
+from itertools import pairwise
 from pathlib import Path
 
 import pytest
@@ -38,6 +39,8 @@ def test_structure_matches_every_real_valid_seen_file(exported, real_structures)
     *_, data = exported
     problems = structure_differences(structure(data), real_structures)
     assert not problems, "\n".join(problems[:50])
+    subgoals = [h["planner_action"]["action"] for h in data["plan"]["high_pddl"]]
+    assert not any(a == b == "GotoLocation" for a, b in pairwise(subgoals)), subgoals  # as in ALFRED's
 
 
 def test_structure_check_names_what_differs(exported, real_structures):
@@ -105,6 +108,8 @@ def test_other_task_types_match_every_real_file(task_type, room, tmp_path, real_
     data = json.loads((export_alfred(tmp_path, scene, record, seed=0) / "traj_data.json").read_text())
     problems = structure_differences(structure(data), real_structures)
     assert not problems, "\n".join(problems[:50])
+    subgoals = [h["planner_action"]["action"] for h in data["plan"]["high_pddl"]]
+    assert not any(a == b == "GotoLocation" for a, b in pairwise(subgoals)), subgoals  # as in ALFRED's
     assert data["scene"]["dirty_and_empty"] == (task_type == "pick_clean_then_place_in_recep")
     assert bool(data["scene"]["object_toggles"]) == (task_type == "look_at_obj_in_light")
 
@@ -113,6 +118,17 @@ def test_open_and_close_subgoals_fold_into_their_interactions():
     acts = ["GotoLocation", "OpenObject", "PickupObject", "CloseObject", "GotoLocation", "OpenObject", "GotoLocation",
             "PutObject"]
     assert fold_subgoals(acts) == [0, 1, 1, 1, 2, 2, 3, 4]
+
+
+def test_consecutive_walks_merge_into_one_as_in_alfred_plans():
+    from luminous_sim.data.alfred_export import merge_walks
+
+    # the walk, open, walk, put above: the open joins the first walk, and the two walks are one
+    assert merge_walks(["GotoLocation", "PickupObject", "GotoLocation", "GotoLocation", "PutObject"]) == [
+        0, 1, 2, 2, 3]
+    assert merge_walks(["GotoLocation", "GotoLocation", "GotoLocation", "CoolObject", "GotoLocation",
+                        "PutObject"]) == [0, 0, 0, 1, 2, 3]
+    assert merge_walks(["PickupObject", "PutObject"]) == [0, 1]
 
 
 def test_extra_annotations_change_nothing_that_is_written(tmp_path: Path, exported):

@@ -458,3 +458,25 @@ def test_sample_task_with_a_filter_names_the_task_when_nothing_passes():
     keep_mugs = lambda p: p.object_target == "Mug"  # noqa: E731
     task = sample_task(scene, state, "pick_and_place_simple", np.random.default_rng(0), keep=keep_mugs)
     assert task.params.object_target == "Mug"
+
+
+def test_a_target_alfred_matches_by_substring_to_another_type_is_rejected_with_the_reason():
+    from luminous_sim.tasks import SUBSTRING_CLASH, alfred_name_clash
+
+    state = state_of(KITCHEN)
+    assert alfred_name_clash(PddlParams("Pot", "Cabinet"), state) == (
+        "object_type 'Pot' also matches Potato|1 (Potato)")  # ALFRED: `'Pot' in 'Potato|1'`
+    assert alfred_name_clash(PddlParams("Potato", "Cabinet"), state) is None
+    assert alfred_name_clash(PddlParams("Apple", "Cabinet", object_sliced=True), state) is None  # slices are ours too
+    assert alfred_name_clash(PddlParams("Apple", "Sink"), state) == (
+        "parent_target 'Sink' also matches SinkBasin|1 (SinkBasin)")
+    butter = with_(KITCHEN, ButterKnife_1=("ButterKnife", "SinkBasin|1"))  # S+ episode 0's clash
+    assert "ButterKnife" in (alfred_name_clash(PddlParams("Knife", "SinkBasin"), state_of(butter)) or "")
+    pots = feasible(KITCHEN, "pick_and_place_simple")
+    assert pots and all("Pot" not in (p.object_target, p.mrecep_target) for p in pots)
+    kept = feasible(KITCHEN, "pick_and_place_simple", judged_alike=False)  # ALFRED's own tasks (--from-alfred)
+    assert any(p.object_target == "Pot" for p in kept) and set(pots) < set(kept)
+    bathroom = {"Toilet|1": ("Toilet", None), "ToiletPaperHanger|1": ("ToiletPaperHanger", None),
+                "SoapBar|1": ("SoapBar", None)}
+    rejected(bathroom, "pick_and_place_simple", SUBSTRING_CLASH + r".*'Toilet' also matches ToiletPaperHanger",
+             room="Bathroom")

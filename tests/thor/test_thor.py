@@ -35,10 +35,8 @@ def _build_split(out: Path, split: str, count: int, start: int = 0) -> Path:
 
 @pytest.fixture(scope="module")
 def splus1(tmp_path_factory: pytest.TempPathFactory) -> Path:
-    """S+ episode 3 (look_at_obj_in_light, the shortest of the first few: 45 actions), built without frames.
-    Not episode 0: its goal ("a Knife in a SinkBasin") is met at the start by ALFRED's substring matching
-    (a ButterKnife lies in the basin), so its negative control could not fail."""
-    return _build_split(tmp_path_factory.mktemp("thor") / "splus1", "S+", 1, start=3)
+    """S+ episode 2 (look_at_obj_in_light, a Pen under a FloorLamp: 45 actions), built without frames."""
+    return _build_split(tmp_path_factory.mktemp("thor") / "splus1", "S+", 1, start=2)
 
 
 @pytest.fixture(scope="module")
