@@ -63,3 +63,7 @@ MAX_NGRAM = 100
 """Longest n-gram a speaker's decoding may forbid repeating (`--no-repeat-ngram`)."""
 MAX_GENERATE_SCENES = 100_000
 """Scenes one `luminous generate` call writes (`--count`)."""
+MAX_CHECKPOINT_BYTES = 1024 * 1024 * 1024
+"""Largest model checkpoint read (a learned speaker: `speaker describe/evaluate`, `dataset build --speaker`; a
+behaviour-cloning policy: `bc eval`); the project's are a few MB. A trajectory or vocabulary file the speaker reads
+is held to `MAX_INPUT_BYTES`."""

@@ -24,6 +24,7 @@ from luminous_sim.bc.family import PICKUP_ENV
 from luminous_sim.bc.model import BCPolicy, PolicyShape
 from luminous_sim.env.vocabulary import vocabulary
 from luminous_sim.errors import LuminousError, path_kind
+from luminous_sim.limits import MAX_CHECKPOINT_BYTES
 from luminous_sim.vocab import ALL_TYPES
 
 FORMAT = "luminous-bc/1"
@@ -141,6 +142,9 @@ def load_checkpoint(path: Path) -> tuple[BCPolicy, dict[str, Any]]:
     kind = path_kind(path)
     if kind != "a regular file":
         raise LuminousError(f"{path}: {kind}; expected a behaviour-cloning checkpoint (.pt)")
+    if path.stat().st_size > MAX_CHECKPOINT_BYTES:
+        raise LuminousError(f"{path}: {path.stat().st_size:,} bytes; a behaviour-cloning checkpoint is at most "
+                            f"{MAX_CHECKPOINT_BYTES:,} bytes (luminous_sim.limits.MAX_CHECKPOINT_BYTES)")
     try:
         saved = torch.load(path, map_location="cpu", weights_only=True)
         meta = saved["meta"]

@@ -160,3 +160,22 @@ def test_a_foreign_speaker_checkpoint_is_named_without_torchs_weights_only_note(
     text = str(err.value)
     assert text.startswith(f"{path}: not a readable speaker checkpoint (") and "argparse.Namespace" in text, text
     assert "weights_only" not in text and "trust" not in text and "\n" not in text and "\x1b" not in text, text
+
+
+def test_checkpoints_over_the_limit_are_refused_before_loading(tmp_path):
+    """A speaker or behaviour-cloning checkpoint larger than `limits.MAX_CHECKPOINT_BYTES` is named with its size and
+    the limit, before torch reads a byte (a sparse file: nothing is written)."""
+    from luminous_sim.errors import LuminousError
+    from luminous_sim.language.speaker.errors import SpeakerError, check_checkpoint_path
+    from luminous_sim.limits import MAX_CHECKPOINT_BYTES
+
+    big = tmp_path / "big.pt"
+    with big.open("wb") as f:
+        f.truncate(MAX_CHECKPOINT_BYTES + 1)
+    with pytest.raises(SpeakerError, match=r"big\.pt: .* bytes; .*MAX_CHECKPOINT_BYTES"):
+        check_checkpoint_path(big)
+    pytest.importorskip("torch", reason="the behaviour-cloning checkpoint reader needs torch")
+    from luminous_sim.bc.train import load_checkpoint
+
+    with pytest.raises(LuminousError, match=r"big\.pt: .* bytes; .*MAX_CHECKPOINT_BYTES"):
+        load_checkpoint(big)
