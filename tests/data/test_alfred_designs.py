@@ -24,7 +24,9 @@ SAMPLE = {  # one design per task type, quick to solve, each exercising one of t
     "pick_and_place_simple": "pick_and_place_simple-SprayBottle-None-GarbageCan-409",  # reach into a low can
     "pick_two_obj_and_place": "pick_two_obj_and_place-SoapBar-None-GarbageCan-418",
     "pick_clean_then_place_in_recep": "pick_clean_then_place_in_recep-Cloth-None-Drawer-423",  # a low drawer
-    "pick_heat_then_place_in_recep": "pick_heat_then_place_in_recep-Apple-None-DiningTable-26",
+    # not ...-Apple-None-DiningTable-26: nothing placed in its microwave (Microwave_03) shows in any frame, and the
+    # oracle no longer points at the microwave's mask instead (ALFRED's lookup would pick up the microwave)
+    "pick_heat_then_place_in_recep": "pick_heat_then_place_in_recep-Apple-None-SinkBasin-25",
     "pick_cool_then_place_in_recep": "pick_cool_then_place_in_recep-Pan-None-StoveBurner-18",  # a pan on a burner
     "pick_and_place_with_movable_recep": "pick_and_place_with_movable_recep-AppleSliced-Pan-CounterTop-8",
 }
