@@ -31,7 +31,6 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import platform
 import sys
 import time
 from collections import Counter
@@ -47,6 +46,7 @@ sys.path.insert(0, str(ROOT))
 import gymnasium  # noqa: E402
 
 import luminous_sim  # noqa: E402, F401  (registers the ids)
+from benchmarks.machine import cpu_model, load  # noqa: E402  (after the path)
 from luminous_sim.env import LuminousEnv, eval_seeds  # noqa: E402
 from luminous_sim.env.actions import NAVIGATION, STOP  # noqa: E402
 from luminous_sim.env.shaping import goal_scores  # noqa: E402
@@ -56,18 +56,8 @@ POLICIES = ("random", "walk-stop", "walk-seg", "walk-seg-near", "oracle")
 Policy = Callable[[LuminousEnv], Any]
 
 
-def cpu_model() -> str:
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown"
 
 
-def load() -> str:
-    return " ".join(f"{x:.2f}" for x in os.getloadavg())
 
 
 def wilson(k: int, n: int, z: float = 1.959964) -> tuple[float, float]:

@@ -33,7 +33,6 @@ from __future__ import annotations
 import argparse
 import json
 import os
-import platform
 import subprocess
 import sys
 import time
@@ -44,24 +43,14 @@ from typing import Any
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
+from benchmarks.machine import machine  # noqa: E402  (after the path)
 from tests.thor import alfred_code  # noqa: E402  (ALFRED's code folder, laid out as it runs)
 
 DRIVER = ROOT / "tests" / "thor" / "alfred_driver.py"
 
 
-def cpu_model() -> str:
-    try:
-        for line in Path("/proc/cpuinfo").read_text().splitlines():
-            if line.startswith("model name"):
-                return line.split(":", 1)[1].strip()
-    except OSError:
-        pass
-    return platform.processor() or "unknown CPU"
 
 
-def machine() -> str:
-    load = "/".join(f"{x:.1f}" for x in os.getloadavg())
-    return f"{cpu_model()}, {os.cpu_count()} cores, load average (1/5/15 min) {load}"
 
 
 def build_split(out: Path, split: str, count: int, start: int) -> Path:

@@ -69,13 +69,7 @@ def poses_along(traj: Trajectory, start: AgentPose) -> list[AgentPose]:
     """The agent's pose after each low-level action (navigation replayed from the start pose)."""
     pose, out = start, [start]
     for a in traj.low_actions:
-        name = a["api_action"]["action"]
-        if name == "MoveAhead":
-            pose = pose.moved()
-        elif name in ("RotateLeft", "RotateRight"):
-            pose = pose.rotated(-1 if name == "RotateLeft" else 1)
-        elif name in ("LookUp", "LookDown"):
-            pose = pose.looked(-1 if name == "LookUp" else 1) or pose
+        pose = pose.after(a["api_action"]["action"])
         out.append(pose)
     return out
 

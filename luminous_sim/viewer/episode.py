@@ -116,12 +116,7 @@ def load_episode(folder: Path | str) -> Episode:
             name = str(a["api_action"]["action"])
         except (KeyError, TypeError):
             raise ViewerError(f"{path}: plan.low_actions[{k - 1}]: expected api_action.action") from None
-        if name == "MoveAhead":
-            pose = pose.moved()
-        elif name in ("RotateLeft", "RotateRight"):
-            pose = pose.rotated(-1 if name == "RotateLeft" else 1)
-        elif name in ("LookUp", "LookDown"):
-            pose = pose.looked(-1 if name == "LookUp" else 1) or pose
+        pose = pose.after(name)
         high_idx = int(a.get("high_idx", 0))
         steps.append(EpisodeStep(k, name, pose, frames[k], high_idx, said(high_idx)))
     task = data.get("task")

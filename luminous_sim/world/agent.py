@@ -40,6 +40,17 @@ class AgentPose:
         h = self.horizon + HORIZON_STEP * steps
         return replace(self, horizon=h) if HORIZON_MIN <= h <= HORIZON_MAX else None
 
+    def after(self, action: str) -> AgentPose:
+        """The pose after a navigation action taken without hindrance (MoveAhead, Rotate*, Look*; a look past the
+        horizon limits, or any other action, leaves it as it is): how a recorded trajectory's poses are replayed."""
+        if action == "MoveAhead":
+            return self.moved()
+        if action in ("RotateLeft", "RotateRight"):
+            return self.rotated(-1 if action == "RotateLeft" else 1)
+        if action in ("LookUp", "LookDown"):
+            return self.looked(-1 if action == "LookUp" else 1) or self
+        return self
+
     def grid_key(self) -> tuple[int, int]:
         return (round(self.x / GRID), round(self.y / GRID))
 

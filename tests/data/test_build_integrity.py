@@ -8,9 +8,7 @@ corrupt builds at random and rerun them many times; one test does the issue's ca
 
 from __future__ import annotations
 
-import hashlib
 import json
-import os
 import shutil
 from dataclasses import dataclass
 from pathlib import Path
@@ -21,6 +19,7 @@ from hypothesis import strategies as st
 
 from luminous_sim.data import BuildError, BuildOptions, JobOutcome, Manifest, ManifestError, build, build_split
 from luminous_sim.data.build import MANIFEST, PARTIAL, SETTINGS, SPLITS
+from tests.conftest import file_tree
 
 QUICK = BuildOptions(frames=False, video=False)
 N = 5
@@ -52,15 +51,7 @@ def jobs(split: str = "mine", count: int = N) -> list[_Writing]:
     return [_Writing(split, i) for i in range(count)]
 
 
-def tree(root: Path) -> dict[str, str]:
-    """Every file and link under `root` (relative path -> sha256 of its content, or of the link's target)."""
-    out = {}
-    for p in sorted(root.rglob("*")):
-        if p.is_symlink():
-            out[p.relative_to(root).as_posix()] = "link:" + os.readlink(p)
-        elif p.is_file():
-            out[p.relative_to(root).as_posix()] = hashlib.sha256(p.read_bytes()).hexdigest()
-    return out
+tree = file_tree
 
 
 @pytest.fixture()

@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import hashlib
 import json
-import os
 import shutil
 from pathlib import Path
 
@@ -20,6 +19,7 @@ from luminous_sim.eval import evaluator as evaluator_module
 from luminous_sim.eval.evaluator import read_outcome
 from luminous_sim.eval.metrics import AGENT_FAULT
 from luminous_sim.splits import split_entry
+from tests.conftest import file_tree
 
 SMALL = {"width": 64, "height": 64}
 INDICES = [2, 0]
@@ -38,14 +38,7 @@ def fast(monkeypatch):
     monkeypatch.setattr(evaluator_module, "play", _fake_play)
 
 
-def tree(root: Path) -> dict[str, str]:
-    out = {}
-    for p in sorted(root.rglob("*")):
-        if p.is_symlink():
-            out[p.relative_to(root).as_posix()] = "link:" + os.readlink(p)
-        elif p.is_file():
-            out[p.relative_to(root).as_posix()] = hashlib.sha256(p.read_bytes()).hexdigest()
-    return out
+tree = file_tree
 
 
 def test_a_non_empty_folder_that_holds_no_evaluation_is_refused(tmp_path, fast, capsys):
