@@ -11,19 +11,7 @@ import trimesh
 from luminous_sim.cli.main import main
 from luminous_sim.export import ExportError, export
 from luminous_sim.scene import Scene
-
-SMALL_HOUSE = """
-cdf_version: 2
-name: small_house
-scene:
-  house:
-    size: {width: 8, depth: 5.5}
-    rooms:
-      - {name: kitchen, type: Kitchen}
-      - {name: living, type: LivingRoom}
-      - {name: bedroom, type: Bedroom}
-    adjacency: [[kitchen, living]]
-"""
+from tests.houses.test_house_scene import SMALL as SMALL_HOUSE
 
 
 def test_a_live_world_exports_as_it_is_now(kitchen: Scene, tmp_path: Path) -> None:
