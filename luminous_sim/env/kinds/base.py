@@ -9,6 +9,7 @@ A new kind is one module in this package with a `TaskKind` subclass, and one lin
 from __future__ import annotations
 
 import copy
+from abc import ABC, abstractmethod
 from collections.abc import Callable, Mapping
 from typing import TYPE_CHECKING, Any, ClassVar
 
@@ -23,7 +24,7 @@ if TYPE_CHECKING:
     from luminous_sim.world import AgentPose, World
 
 
-class TaskKind:
+class TaskKind(ABC):
     """A kind of task, with default hooks (every room type, no set-up); subclasses override what differs.
 
     Attributes:
@@ -69,13 +70,13 @@ class TaskKind:
         """The objects to make dirty before the episode (in `world`, as built); none by default."""
         return ()
 
+    @abstractmethod
     def draw_goal(self, world: World, scene: Scene, rng: np.random.Generator) -> Goal:
-        """A goal of this kind that fits `world` (set up), every draw from `rng`.
+        """A goal of this kind that fits `world` (set up), every draw from `rng` (every kind defines it).
 
         Raises:
             TaskSamplingError: none fits.
         """
-        raise NotImplementedError(f"task kind {self.name}: draw_goal")
 
     def draw_start(self, world: World, goal: Goal, rng: np.random.Generator) -> AgentPose | None:
         """Where the agent starts, drawn for `goal` in `world` (set up); None (the default) keeps the world's
