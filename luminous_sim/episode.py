@@ -93,13 +93,13 @@ def write_video(frames: list[np.ndarray], path: Path, fps: int = 6) -> Path:
 
 def prepared_world(scene: Scene, task_type: str, catalog: Catalog | None = None):
     """The world as ALFRED sets a scene up for a task: for cleaning, everything dirtyable is dirty."""
-    from luminous_sim.vocab import abilities
+    from luminous_sim.tasks import alfred_dirty
     from luminous_sim.world import World
 
     world = World(scene, catalog=catalog)
-    if task_type == "pick_clean_then_place_in_recep":
-        world.set_up_dirty([oid for oid, st in world.view().state.objects.items()
-                            if abilities(st.object_type).dirtyable and abilities(st.object_type).pickupable])
+    dirty = alfred_dirty(world.view().state, task_type)
+    if dirty:
+        world.set_up_dirty(dirty)
     return world
 
 

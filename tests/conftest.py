@@ -16,6 +16,18 @@ REPO = Path(__file__).resolve().parents[1]
 SHARED_ALFRED = REPO.parent / "shared" / "alfred"
 
 
+@pytest.fixture(autouse=True, scope="session")
+def _own_cache(tmp_path_factory) -> Iterator[None]:
+    """Canonical builds made by tests go to a temporary cache, never the user's `~/.cache/luminous`."""
+    old = os.environ.get("LUMINOUS_CACHE")
+    os.environ["LUMINOUS_CACHE"] = str(tmp_path_factory.mktemp("cache"))
+    yield
+    if old is None:
+        os.environ.pop("LUMINOUS_CACHE", None)
+    else:
+        os.environ["LUMINOUS_CACHE"] = old
+
+
 @pytest.fixture(scope="session")
 def shared_alfred() -> Path:
     """The real ALFRED data beside the repository; tests that need it skip with a reason when absent."""

@@ -14,7 +14,7 @@ LAYER = {
     "scene": 1, "rooms": 1, "cssg": 1, "states": 1,
     "world": 2,
     "tasks": 3, "planning": 3, "language": 3, "splits": 3,
-    "env": 4,
+    "env": 4, "benchmark": 4,
     "data": 5, "eval": 5, "export": 5, "thor": 5, "viewer": 5, "bc": 5, "cli": 5, "layouts": 5, "demo": 5, "episode": 5,
     "cdf_episode": 5,
     "scene_outputs": 5,

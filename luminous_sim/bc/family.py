@@ -7,25 +7,24 @@ success rate near zero on both splits, which shows nothing. `pickup_object` keep
 is about (the instruction names an object the agent must find in a room layout, and seen layouts differ
 from unseen room structures) at a scale a CPU can learn: one goal condition, an expert of 10-30 steps.
 
-Episode `i` of a split here is the split's entry `i` (`luminous_sim.splits.split_entry`) with its task
-replaced: the same room structure and layout (CSSG in the ALFRED floor plan, `layout_seed`), and a
-`pickup_object` goal drawn by the env from `reset(seed=entry.task_seed, options={"scene": layout})`, so
-every machine plays the same episodes. An entry whose layout or goal cannot be drawn is an outcome
-(`end` "unavailable"), counted in the population, as in `luminous eval`.
+Episode `i` of a split here is the frozen split's entry `i` (`luminous_sim.benchmark.benchmark_entry`) with
+its task replaced: the same room structure and layout (`benchmark.layout_scene`, the layout every user of
+the split plays), and a `pickup_object` goal drawn by the env from `reset(seed=entry.task_seed,
+options={"scene": layout})`, so every machine plays the same episodes. An entry whose goal cannot be drawn is
+an outcome (`end` "unavailable"), counted in the population, as in `luminous eval`.
 """
 
 from __future__ import annotations
 
-from functools import lru_cache
 from typing import Any
 
 import numpy as np
 
+from luminous_sim.benchmark import benchmark_entry, layout_scene
 from luminous_sim.env import LuminousEnv
 from luminous_sim.errors import InfeasibleSceneError, LuminousError
 from luminous_sim.eval import Agent, EpisodeOutcome, PolicyError, make_agent
-from luminous_sim.scene import Scene
-from luminous_sim.splits import plus_split, split_entry
+from luminous_sim.splits import plus_split
 
 FAMILY = "pickup_object"
 PICKUP_ENV: dict[str, Any] = {
@@ -41,22 +40,9 @@ def pickup_env(**overrides: Any) -> LuminousEnv:
     return LuminousEnv(**{**PICKUP_ENV, **overrides})
 
 
-@lru_cache(maxsize=64)
-def layout_scene(floor_plan: str, room_type: str, layout_seed: int) -> Scene:
-    """A split entry's layout: CSSG in the ALFRED room structure (the env's own split scenes, repeated).
-
-    Raises:
-        InfeasibleSceneError: CSSG found no valid layout.
-    """
-    from luminous_sim.cssg import empty_cdf, generate
-    from luminous_sim.rooms import load_room
-
-    return generate(empty_cdf(room_type), seed=layout_seed, room=load_room(floor_plan)).scene
-
-
 def where(split: str, index: int) -> dict[str, Any]:
     """The fields of an outcome that name the episode."""
-    entry = split_entry(split, index)
+    entry = benchmark_entry(split, index)
     return {"split": split, "index": index, "task_type": FAMILY, "floor_plan": entry.floor_plan,
             "layout": entry.layout}
 
@@ -77,7 +63,7 @@ def reset_episode(env: LuminousEnv, split: str, index: int) -> tuple[dict[str, A
     """
     if tuple(env.config.task_types) != (FAMILY,):
         raise LuminousError(f"a pickup episode needs an env of task_types [{FAMILY!r}], got {env.config.task_types}")
-    entry = split_entry(split, index)
+    entry = benchmark_entry(split, index)
     try:
         scene = layout_scene(entry.floor_plan, entry.room_type, entry.layout_seed)
     except InfeasibleSceneError as exc:

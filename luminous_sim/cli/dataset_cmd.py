@@ -37,8 +37,9 @@ def register(sub: argparse._SubParsersAction) -> None:
     b = actions.add_parser(
         "build", help="build episodes 0..N-1 of a split, or re-solve the designs of an ALFRED split folder "
                       "(resumable: rerun the same command after a stop)",
-        description="--split: episode i of the split: its room structure's shared layout, a task of the episode's "
-                    "type drawn with its seed and solved by the oracle (method (a)). --from-alfred: each task "
+        description="--split: episode i of the frozen split (luminous_sim.benchmark: its layout, task, start and "
+                    "initial state, the episode `luminous eval` and the env play) solved by the oracle (method "
+                    "(a)); the manifest records each episode's episode_key. --from-alfred: each task "
                     "design (traj_data.json) of your own copy of an ALFRED split, solved in a scene generated in "
                     "its own floor plan's room shell (method (b)). Trials are written under OUT/<split>/ in "
                     "ALFRED's json_2.1.0 layout; OUT/manifest.jsonl records each episode (built, or failed and "
@@ -50,7 +51,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                         help="an ALFRED split folder of <task>/<trial>/traj_data.json, e.g. valid_seen (method "
                              "(b)); its trials are written under OUT/<its folder name>/")
     b.add_argument("--count", type=int_range(0, MAX_BUILD_JOBS), default=None,
-                   help=f"episodes 0..COUNT-1 of the split (required with --split; at most {MAX_BUILD_JOBS}); with "
+                   help=f"episodes 0..COUNT-1 of the split (default: all of it; at most {MAX_BUILD_JOBS}); with "
                         "--from-alfred, the first COUNT designs in path order (default all). A rerun may extend a "
                         "build, never shrink it")
     b.add_argument("--out", required=True, type=output_dir, help="build folder (new, empty, or an earlier build)")
@@ -93,7 +94,9 @@ def _build(args: argparse.Namespace) -> int:
     from luminous_sim.data import BuildOptions, build_from_alfred, build_split, make_backend
 
     if args.split is not None and args.count is None:
-        args.build_parser.error("--count is required with --split")
+        from luminous_sim.benchmark import benchmark_size
+
+        args.count = benchmark_size(args.split)
     speaker = None
     if args.speaker is not None:
         from luminous_sim.language.speaker.annotate import check_speaker

@@ -1,4 +1,6 @@
-"""`luminous eval`: a policy on episodes of an evaluation split, with ALFRED's metrics (see luminous_sim.eval)."""
+"""`luminous eval`: a policy on the trials of a built dataset (`--data`), of the canonical build of a frozen
+split (`--split`, built where missing), or on a split's entries played live (`--live`), with ALFRED's metrics
+(see luminous_sim.eval)."""
 
 from __future__ import annotations
 
@@ -18,15 +20,27 @@ SPLITS: tuple[str, ...] = ("S+", "U+", "U+test")
 
 def register(sub: argparse._SubParsersAction) -> None:
     parser = sub.add_parser(
-        "eval", help="run a policy on S+/U+ episodes: SR, GC, PLW-SR, PLW-GC per task type",
-        description="Run a policy on the first N episodes of an evaluation split with ALFRED's limits (1000 "
-                    "steps, 10 failed actions) and write report.json, table.md (the paper's Table 4 layout), "
-                    "metrics.png and one file per episode (an interrupted run resumes in the same folder).")
+        "eval", help="run a policy on S+/U+ (or a built dataset's trials): SR, GC, PLW-SR, PLW-GC per task type",
+        description="Evaluate a policy with ALFRED's limits (1000 steps, 10 failed actions) as ALFRED's evaluation "
+                    "does: over the trials of a built dataset (--data DIR, each restored from its traj_data.json "
+                    "and sidecar), or over the canonical build of a frozen split (--split S+|U+: built into "
+                    "--build, default $LUMINOUS_CACHE/benchmark-v1 or ~/.cache/luminous/benchmark-v1, where "
+                    "missing, resumable). The oracle replays each trial's recorded actions through the agent "
+                    "interface. --live plays the split's entries in the env instead (the oracle then replans "
+                    "live). Writes report.json, table.md (the paper's Table 4 layout), metrics.png and one file "
+                    "per episode (an interrupted run resumes in the same folder).")
     parser.add_argument("--policy", required=True, metavar="POLICY",
                         help="oracle, random, or MODULE:CALLABLE, a factory of your agent (docs/evaluation.md)")
-    parser.add_argument("--split", required=True, choices=SPLITS, help="the evaluation split")
-    parser.add_argument("--episodes", type=int_range(1, MAX_EVAL_EPISODES), required=True, metavar="N",
-                        help=f"evaluate the split's episodes 0 .. N-1 (at most {MAX_EVAL_EPISODES})")
+    parser.add_argument("--split", choices=SPLITS, default=None,
+                        help="the frozen split (with --data: only that split's trials)")
+    parser.add_argument("--data", type=Path, default=None, metavar="DIR",
+                        help="a built dataset folder (`luminous dataset build` output) to evaluate on")
+    parser.add_argument("--build", type=output_dir, default=None, metavar="DIR",
+                        help="where the canonical build of --split is kept (default: the cache folder)")
+    parser.add_argument("--live", action="store_true",
+                        help="play the split's entries live in the env (no build; the oracle replans live)")
+    parser.add_argument("--episodes", type=int_range(1, MAX_EVAL_EPISODES), default=None, metavar="N",
+                        help=f"the first N episodes (trials) only (default all; at most {MAX_EVAL_EPISODES})")
     parser.add_argument("--out", type=output_dir, required=True,
                         help="output folder: new, empty, or one this same evaluation was run in (it resumes)")
     parser.add_argument("--workers", type=int_range(1, MAX_WORKERS), default=1,
@@ -58,7 +72,15 @@ def env_option(text: str) -> tuple[str, object]:
 def _run(args: argparse.Namespace) -> int:
     from luminous_sim.data import Backend, make_backend
     from luminous_sim.errors import LuminousError
-    from luminous_sim.eval import EpisodeOutcome, EvalReport, check_policy, evaluate, markdown_table, write_reports
+    from luminous_sim.eval import (
+        EpisodeOutcome,
+        EvalReport,
+        check_policy,
+        evaluate,
+        evaluate_data,
+        markdown_table,
+        write_reports,
+    )
 
     if os.getcwd() not in sys.path:  # MODULE may be a file in the current folder, as with `python -m`
         sys.path.insert(0, os.getcwd())
@@ -72,9 +94,24 @@ def _run(args: argparse.Namespace) -> int:
         print(f"{o.split} {o.index:4d} {o.task_type:<34} {what:<22} gc {gc:<5} steps {o.steps:4d} "
               f"expert {o.expert_length:4d}", file=sys.stderr)
 
+    if args.data is None and args.split is None:
+        raise LuminousError("give --split (a frozen split) or --data (a built dataset folder)")
+    if args.data is not None and (args.build is not None or args.live):
+        raise LuminousError("--data evaluates the folder it names; leave out --build and --live")
+    if args.live and args.build is not None:
+        raise LuminousError("--live plays the split's entries without a build; leave out --build")
+
     def run(backend: Backend | None) -> EvalReport:
-        return evaluate(args.policy, args.split, args.episodes, seed=args.seed, workers=args.workers,
-                        out_dir=Path(args.out), progress=show, env_kwargs=dict(args.env), backend=backend)
+        common = {"seed": args.seed, "workers": args.workers, "out_dir": Path(args.out), "progress": show,
+                  "env_kwargs": dict(args.env), "backend": backend}
+        if args.live:
+            from luminous_sim.benchmark import benchmark_size
+
+            return evaluate(args.policy, args.split, args.episodes or benchmark_size(args.split), **common)
+        data = args.data
+        if data is None:
+            data = _canonical_build(args, backend)
+        return evaluate_data(args.policy, Path(data), split=args.split, episodes=args.episodes, **common)
 
     if args.backend == "local":
         report = run(None)
@@ -88,3 +125,23 @@ def _run(args: argparse.Namespace) -> int:
     print(markdown_table([report]), end="")
     print(f"wrote {paths['json']}, {paths['table']}, {paths['plot']}")
     return 0
+
+
+def _canonical_build(args: argparse.Namespace, backend: object) -> Path:
+    """The canonical build of `args.split` (at least its first `args.episodes`), built where missing (without
+    frames: evaluation renders its own), resumable; its folder. The output folder is checked first."""
+    from luminous_sim.benchmark import benchmark_size, canonical_build_dir
+    from luminous_sim.data import BuildOptions, build_split, built_count, make_backend
+    from luminous_sim.eval import check_output, data_run
+
+    out = Path(args.build) if args.build is not None else canonical_build_dir()
+    check_output(Path(args.out), data_run(args.policy, out, args.split, args.seed, dict(args.env)))
+    want = max(args.episodes or benchmark_size(args.split), built_count(out, args.split))
+    options = BuildOptions(frames=False, video=False)
+    if backend is None:
+        with make_backend("local", args.workers, None) as local:
+            report = build_split(out, args.split, want, local, options, progress=True)
+    else:
+        report = build_split(out, args.split, want, backend, options, progress=True)  # type: ignore[arg-type]
+    print(f"canonical {args.split} build: {report.built} trials in {out} ({report.ran} built now)", file=sys.stderr)
+    return out

@@ -53,9 +53,8 @@ from luminous_sim.data.build import (
     SplitJob,
     build,
     build_split,
-    layout_scene,
+    built_count,
     split_jobs,
-    task_fallback_scene,
 )
 from luminous_sim.data.manifest import Manifest, ManifestError
 from luminous_sim.data.minari_export import (
@@ -100,6 +99,7 @@ __all__ = [
     "build",
     "build_from_alfred",
     "build_split",
+    "built_count",
     "clear_for_put",
     "default_minari_id",
     "design_jobs",
@@ -108,7 +108,6 @@ __all__ = [
     "export_alfred",
     "export_minari",
     "fold_subgoals",
-    "layout_scene",
     "make_backend",
     "map_jobs",
     "merge_by_floor_plan",
@@ -126,7 +125,6 @@ __all__ = [
     "split_jobs",
     "structure",
     "structure_differences",
-    "task_fallback_scene",
     "task_misfit",
     "write_report",
 ]

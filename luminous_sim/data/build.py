@@ -1,9 +1,9 @@
 """Dataset builds: many independent jobs, each writing one ALFRED trial (or recording why it could not),
 resumable and safe against a kill at any moment, on any backend (`data.backends`).
 
-Method (a) of the paper is `SplitJob`: episode `index` of an S+/U+/U+test split (`splits.split_entry`)
-in its room structure's shared layout (`layout_scene`), a task of the entry's type drawn with the
-entry's task seed and solved by the oracle, exported in ALFRED's json_2.1.0 layout. Another job kind
+Method (a) of the paper is `SplitJob`: episode `index` of a frozen S+/U+/U+test split
+(`benchmark.entry_episode`: its layout, task, initial state and start) solved by the oracle, exported in
+ALFRED's json_2.1.0 layout. Another job kind
 (a real ALFRED task design re-solved in its own floor plan, method (b)) plugs into the same `build`.
 
 A build folder holds::
@@ -48,16 +48,13 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Protocol
 
-import numpy as np
-
 from luminous_sim.assets.objio import write_atomic
 from luminous_sim.data.alfred_export import ExportError, export_alfred
 from luminous_sim.data.backends import Backend, map_jobs
 from luminous_sim.data.manifest import Manifest, Record, plain_name
 from luminous_sim.errors import LuminousError, link_or_kind
 from luminous_sim.limits import MAX_BUILD_JOBS
-from luminous_sim.scene import Scene
-from luminous_sim.splits import SplitEntry, oct21_document, split_entry
+from luminous_sim.splits import oct21_document
 
 BUILD_FORMAT = "luminous-dataset-build/1"
 SETTINGS = "build.json"
@@ -106,7 +103,8 @@ class JobOutcome:
 
     trial: Path | None = None
     stage: str | None = None
-    """Where a job failed: "layout" (generating the layout), "task" (no task of the type fits the scene),
+    """Where a job failed: "version" (this checkout makes another episode than the frozen split), "layout"
+    (generating the layout), "task" (no task of the type fits the scene),
     "oracle" (the oracle did not solve it), "export" (the export refused it) or "crash" (an unexpected error,
     a bug: its type and message are the cause)."""
     cause: str | None = None
@@ -133,43 +131,16 @@ class Job(Protocol):
     def run(self, work: Path, options: BuildOptions) -> JobOutcome: ...
 
 
-@functools.lru_cache(maxsize=4)
-def layout_scene(floor_plan: str, room_type: str, layout_seed: int) -> Scene:
-    """The shared layout of a split's (structure, layout): CSSG's default furnishing of `room_type` in
-    the floor plan's shell, from the layout seed (cached: consecutive episodes often share it)."""
-    from luminous_sim.cssg import empty_cdf, generate
-    from luminous_sim.rooms import load_room
-
-    return generate(empty_cdf(room_type), seed=layout_seed, room=load_room(floor_plan)).scene
-
-
-def task_fallback_scene(entry: SplitEntry, cause: str) -> Scene:
-    """The scene to solve `entry`'s task in when its type does not fit the shared layout (`cause`): a
-    room generated for the task in the entry's own floor plan (`data.scene_for_task(..., room=...)`), from
-    a seed derived from the entry's layout and task seeds. The manifest marks such episodes
-    (`fallback_scene`), so the share of the split that needed one is known.
-
-    Raises:
-        TaskSamplingError: no room generated in the floor plan fits such a task either; the message
-            starts with `cause`.
-    """
-    from luminous_sim.data.task_scenes import scene_for_task
-    from luminous_sim.tasks import TaskSamplingError
-
-    seed = int(np.random.SeedSequence([entry.layout_seed, entry.task_seed]).generate_state(1)[0] % (2**31))
-    try:
-        return scene_for_task(entry.task_type, entry.room_type, seed, room=entry.floor_plan)
-    except TaskSamplingError as exc:
-        raise TaskSamplingError(f"{cause}; and in a room generated for the task: {exc}") from exc
-
-
 def _failure_cause(exc: BaseException) -> str:
     return str(exc) or type(exc).__name__
 
 
 @dataclass(frozen=True)
 class SplitJob:
-    """Episode `index` of split `split` (method (a))."""
+    """Episode `index` of frozen split `split` (method (a)): `benchmark.entry_episode` of its entry (the
+    episode `luminous eval --split` and the env's `reset(options={"split": ..., "index": ...})` play), solved
+    by the oracle from the entry's start, exported in ALFRED's layout; the manifest record and the trial's
+    sidecar carry its `episode_key`."""
 
     split: str
     index: int
@@ -184,49 +155,44 @@ class SplitJob:
 
     @property
     def task_type(self) -> str:
-        return split_entry(self.split, self.index).task_type
+        from luminous_sim.benchmark import benchmark_entry
+
+        return benchmark_entry(self.split, self.index).task_type
 
     def run(self, work: Path, options: BuildOptions) -> JobOutcome:
-        from luminous_sim.tasks import TaskSamplingError
+        from luminous_sim.benchmark import SplitVersionError, benchmark_entry, entry_episode, start_fields
+        from luminous_sim.cdf import AgentPoseSpec
+        from luminous_sim.episode import run_task
 
-        entry = split_entry(self.split, self.index)
+        entry = benchmark_entry(self.split, self.index)
         details: dict[str, Any] = {"floor_plan": entry.floor_plan, "layout": entry.layout,
-                                   "layout_seed": entry.layout_seed, "task_seed": entry.task_seed,
-                                   "fallback_scene": False}
+                                   "layout_seed": entry.layout_seed, "draw": entry.draw, "task_seed": entry.task_seed,
+                                   "episode_key": entry.episode_key}
 
         def failed(stage: str, cause: str) -> JobOutcome:
             return JobOutcome(stage=stage, cause=cause, details=details)
 
         try:
-            scene = layout_scene(entry.floor_plan, entry.room_type, entry.layout_seed)
-        except LuminousError as exc:
-            return failed("layout", _failure_cause(exc))
-        try:
-            result, record = self._episode(scene, entry, options)
-        except TaskSamplingError as exc:
-            try:
-                scene = task_fallback_scene(entry, _failure_cause(exc))
-                details["fallback_scene"] = True
-                result, record = self._episode(scene, entry, options)
-            except TaskSamplingError as again:
-                return failed("task", _failure_cause(again))
+            made = entry_episode(entry)
+        except SplitVersionError as exc:
+            return failed("version", _failure_cause(exc))
+        start = AgentPoseSpec(position=(made.start.x, made.start.y), rotation=made.start.rotation,
+                              horizon=made.start.horizon)
+        result, record = run_task(made.scene, made.task, entry.task_seed, start=start, record_frames=options.frames,
+                                  return_record=True, extra_annotations=ANNOTATIONS - 1)
         traj = record.trajectory
         details.update(goal=result.goal, low_actions=len(traj.low_actions), replans=traj.replans)
         if not result.success:
             done, total = result.goal_conditions
             return failed("oracle", traj.failures[0] if traj.failures else f"{done}/{total} goal conditions met")
+        sidecar = {"benchmark": {"split": entry.split, "index": entry.index, "episode_key": made.key,
+                                 "start": start_fields(made.start), "dirty": list(made.dirty)}}
         try:
-            trial = export_alfred(work, scene, record, seed=entry.task_seed, video=options.video and options.frames)
+            trial = export_alfred(work, made.scene, record, seed=entry.task_seed,
+                                  video=options.video and options.frames, sidecar=sidecar)
         except ExportError as exc:
             return failed("export", _failure_cause(exc))
         return JobOutcome(trial=trial, details=details)
-
-    @staticmethod
-    def _episode(scene: Scene, entry: SplitEntry, options: BuildOptions):
-        from luminous_sim.episode import run_episode
-
-        return run_episode(scene, entry.task_type, entry.task_seed, record_frames=options.frames,
-                           extra_annotations=ANNOTATIONS - 1)
 
 
 def split_jobs(split: str, count: int, start: int = 0) -> list[SplitJob]:
@@ -234,10 +200,14 @@ def split_jobs(split: str, count: int, start: int = 0) -> list[SplitJob]:
     a count over `limits.MAX_BUILD_JOBS`)."""
     if not 0 <= count <= MAX_BUILD_JOBS:
         raise BuildError(f"count must be from 0 to {MAX_BUILD_JOBS} (luminous_sim.limits.MAX_BUILD_JOBS), got {count}")
-    jobs = [SplitJob(split, i) for i in range(start, start + count)]
-    for job in jobs[:1]:
-        split_entry(job.split, job.index)  # raises SplitError for an unknown split or a negative start
-    return jobs
+    from luminous_sim.benchmark import benchmark_size
+
+    size = benchmark_size(split)  # raises SplitError for an unknown or unfrozen split
+    if start < 0 or start + count > size:
+        from luminous_sim.splits import SplitError
+
+        raise SplitError(f"split {split} holds episodes 0..{size - 1}; asked for {start}..{start + count - 1}")
+    return [SplitJob(split, i) for i in range(start, start + count)]
 
 
 def tree_digest(root: Path) -> tuple[int, str]:
@@ -655,7 +625,21 @@ def build(out: Path, jobs: Sequence[Job], backend: Backend | None = None, option
                            tuple(redone), tuple(dropped), others, tuple(manifest.rejected))
 
 
-def build_split(out: Path, split: str, count: int, backend: Backend | None = None,
+def build_split(out: Path, split: str, count: int | None = None, backend: Backend | None = None,
                 options: BuildOptions | None = None, progress: bool = True) -> BuildReport:
-    """Method (a): episodes 0 .. count-1 of `split` (S+, U+, U+test) into the build folder `out`."""
-    return build(out, split_jobs(split, count), backend, options, progress)
+    """Method (a): episodes 0 .. count-1 of the frozen split `split` (S+, U+, U+test; None: all of them) into
+    the build folder `out`."""
+    from luminous_sim.benchmark import benchmark_size
+
+    return build(out, split_jobs(split, benchmark_size(split) if count is None else count), backend, options,
+                 progress)
+
+
+def built_count(out: Path, split: str) -> int:
+    """How many leading episodes of `split` the build folder `out` has records for (0 for a new folder): what
+    a build of at least that count resumes without shrinking."""
+    path = Path(out) / MANIFEST
+    if not path.is_file() or path.is_symlink():
+        return 0
+    orders = [r["order"] for r in Manifest(path, repair=True) if r["split"] == split]
+    return max(orders) + 1 if orders else 0

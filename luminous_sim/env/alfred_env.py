@@ -1,7 +1,9 @@
 """`LuminousEnv`: ALFRED-style household tasks in generated rooms, as a Gymnasium environment.
 
 Observations (a `Dict`): `rgb` (H, W, 3) uint8; `instruction` (`Text`: the goal directive, and with
-`step_instructions` the expert plan's step-by-step instructions after it); with `objects` targets,
+`step_instructions` the expert plan's step-by-step instructions after it); with `high_descs`, `high_descs`
+(`Text`: the step-by-step instructions, one per line, as ALFRED's `high_descs`; the same string every step
+of an episode); with `objects` targets,
 `objects` (the type of the object in each slot, as `inventory` gives it); optionally
 `depth` (H, W, 1) float32 metres, `segmentation` (H, W) int32 instance ids (PyBullet bodies, -1 for none),
 `pose` (x, y metres, yaw and horizon degrees) and `inventory` (the held object's type, an index into
@@ -30,8 +32,9 @@ expert's next action (`expert_action`, in this env's action form). For a goal sc
 
 `reset(seed=s)` is deterministic: the same seed gives the same scene, task and first observation;
 `options={"scene": scene}` plays in a given `Scene`; `options={"split": "U+", "index": 3}` plays episode 3
-of an evaluation split (or `split=` at construction and `options={"index": 3}`; see `EnvConfig.split`), and
-raises `EpisodeUnavailable` (with its cause) for an entry whose layout or task cannot be drawn;
+of a frozen evaluation split (or `split=` at construction and `options={"index": 3}`; see `EnvConfig.split`):
+the episode `luminous_sim.benchmark.entry_episode` defines, the same one `dataset build` and `luminous eval`
+play; the reset's `info["episode_key"]` is the episode's content key (`benchmark.episode_key`);
 `options={"cdf": path, "scene_seed": s}` (or `cdf=` at construction) generates the scene from a CDF file,
 whose task section, if any, is the goal (see `luminous_sim.env.cdf_scenes`). The options are checked before
 anything happens (`luminous_sim.env.reset_options`): an unknown key, options of two sources, or a value of
@@ -48,6 +51,7 @@ planner solves), so the population is "solvable by the expert", and redraws say 
 from __future__ import annotations
 
 import string
+from dataclasses import replace
 from typing import Any
 
 import gymnasium
@@ -57,7 +61,15 @@ from gymnasium import spaces
 from luminous_sim.env.actions import ALFRED_ACTIONS, INTERACTIONS, NAVIGATION, STOP_NAMES, ActionTable, EmptySlot
 from luminous_sim.env.cdf_scenes import cdf_episode, cdf_paths
 from luminous_sim.env.config import EnvConfig
-from luminous_sim.env.episodes import Episode, check_rooms, draw_episode, requested_entry, split_episode
+from luminous_sim.env.episodes import (
+    Episode,
+    check_rooms,
+    content_key,
+    draw_episode,
+    requested_entry,
+    split_episode,
+    trial_episode,
+)
 from luminous_sim.env.expert import Expert
 from luminous_sim.env.history import Sent
 from luminous_sim.env.navscore import NavScore, nav_score
@@ -73,6 +85,8 @@ from luminous_sim.world import World
 INSTRUCTION_CHARSET = string.ascii_letters + string.digits + " .,;:'!?-()\n"
 MAX_INSTRUCTION = 1000
 """Characters of `instruction` kept (a directive is under 100; step instructions add about 60 a step)."""
+MAX_HIGH_DESCS = 4000
+"""Characters of `high_descs` kept (ALFRED's longest plans have about 25 steps of under 150 characters)."""
 DEPTH_FAR = 20.0
 """The camera's far plane (metres): the largest depth."""
 POSE_BOUND = 1000.0
@@ -94,8 +108,8 @@ def _interactable(object_type: str) -> bool:
     return ab.pickupable or ab.receptacle or ab.openable or ab.toggleable or ab.sliceable
 
 
-def _clean_text(text: str) -> str:
-    out = "".join(ch if ch in INSTRUCTION_CHARSET else " " for ch in text)[:MAX_INSTRUCTION]
+def _clean_text(text: str, limit: int = MAX_INSTRUCTION) -> str:
+    out = "".join(ch if ch in INSTRUCTION_CHARSET else " " for ch in text)[:limit]
     return out or "."
 
 
@@ -137,6 +151,8 @@ class LuminousEnv(gymnasium.Env):
             "rgb": spaces.Box(0, 255, (c.height, c.width, 3), np.uint8),
             "instruction": spaces.Text(MAX_INSTRUCTION, min_length=1, charset=INSTRUCTION_CHARSET),
         }
+        if c.high_descs:
+            obs["high_descs"] = spaces.Text(MAX_HIGH_DESCS, min_length=1, charset=INSTRUCTION_CHARSET)
         if c.depth:
             obs["depth"] = spaces.Box(0.0, DEPTH_FAR, (c.height, c.width, 1), np.float32)
         if c.segmentation:
@@ -162,6 +178,8 @@ class LuminousEnv(gymnasium.Env):
         self.navscore: NavScore | None = None
         """The episode's navigation figures (start distance, SPL) when its goal is scored so (`navscore`)."""
         self._slots: list[str] = []
+        self._texts = (".", ".")
+        """The episode's `instruction` and `high_descs` texts (made at reset)."""
         self._steps = 0
         self._failures = 0
         self._ended = False
@@ -182,16 +200,22 @@ class LuminousEnv(gymnasium.Env):
         paths = cdf_paths(self.config, checked)
         if entry is not None:
             self.episode, self.world = split_episode(self.config, entry, self.worlds)
+        elif checked.trial:
+            self.episode, self.world = trial_episode(self.config, checked.trial, self.worlds)
         elif paths:
             self.episode, self.world = cdf_episode(self.config, paths, rng, self.worlds, checked.scene_seed)
         else:
             self.episode, self.world = draw_episode(self.config, rng, self.worlds, scene=checked.scene)
+        if not self.episode.key:
+            self.episode = replace(self.episode, key=content_key(self.episode, self.world))
         self._start(self.episode, self.world)
         extra = self.navscore.at_start() if self.navscore is not None else {}
-        return self._observation(), {**self._info(None, ""), "redraws": self.episode.redraws, **extra}
+        return self._observation(), {**self._info(None, ""), "redraws": self.episode.redraws,
+                                     "episode_key": self.episode.key, **extra}
 
     def _start(self, episode: Episode, world: World) -> None:
         self.history, self._steps, self._failures, self._ended = [], 0, 0, False
+        self._texts = self._episode_texts()
         self.expert = Expert.for_episode(episode, self.worlds)
         self.shaper.start(episode.goal, world, episode.expert)
         self.navscore = nav_score(episode.goal, world)
@@ -309,7 +333,9 @@ class LuminousEnv(gymnasium.Env):
         frame = world.frame()
         c = self.config
         obs: dict[str, Any] = {"rgb": np.ascontiguousarray(frame.rgb[..., :3], dtype=np.uint8),
-                               "instruction": self._instruction()}
+                               "instruction": self._texts[0]}
+        if c.high_descs:
+            obs["high_descs"] = self._texts[1]
         if c.depth:
             depth = np.nan_to_num(frame.depth, nan=DEPTH_FAR, posinf=DEPTH_FAR, neginf=0.0)  # never NaN: in the space
             obs["depth"] = np.clip(depth, 0.0, DEPTH_FAR).astype(np.float32)[..., None]
@@ -335,13 +361,15 @@ class LuminousEnv(gymnasium.Env):
                 if o in state.objects and o != state.held and _interactable(state.objects[o].object_type)]
         return [o for _, o in sorted(seen)[: self.actions.slots]]
 
-    def _instruction(self) -> str:
-        """The goal directive, then (with `step_instructions`) the expert plan's step instructions."""
+    def _episode_texts(self) -> tuple[str, str]:
+        """The episode's `instruction` (the goal directive, then with `step_instructions` the expert plan's step
+        instructions) and `high_descs` (the step instructions, one per line): made once per episode."""
         assert self.episode is not None
+        steps = self.episode.expert.steps if self.episode.expert is not None else ()
         text = self.episode.goal.instruction
-        if self.config.step_instructions and self.episode.expert is not None:
-            text = " ".join((text.rstrip(".") + ".", *self.episode.expert.steps))
-        return _clean_text(text)
+        if self.config.step_instructions and steps:
+            text = " ".join((text.rstrip(".") + ".", *steps))
+        return _clean_text(text), _clean_text("\n".join(steps), MAX_HIGH_DESCS)
 
     def _info(self, code: FailureCode | None, error: str) -> dict[str, Any]:
         assert self.episode is not None

@@ -73,6 +73,9 @@ class EnvConfig:
         inventory: add an `inventory` observation (index of the held object's type, 0 for none).
         step_instructions: follow the goal directive in `instruction` with step-by-step instructions (the
             language layer's templates over the expert's plan; needs `verify_expert`).
+        high_descs: add a `high_descs` observation: the step-by-step instructions, one per line (ALFRED's
+            `high_descs`: a built trial's annotation, else the templates over the expert's plan), fixed for
+            the episode; needs `verify_expert`.
         max_steps: episode truncated after this many steps (ALFRED: 1000).
         max_failures: episode truncated after this many failed actions (ALFRED: 10).
         reward_mode: `dense` (ALFRED's configuration driven by the goal conditions) or `sparse`.
@@ -111,6 +114,7 @@ class EnvConfig:
     pose: bool = False
     inventory: bool = False
     step_instructions: bool = False
+    high_descs: bool = False
     max_steps: int = 1000
     max_failures: int = 10
     reward_mode: str = "dense"
@@ -178,6 +182,8 @@ class EnvConfig:
                 raise LuminousError(f"env config {name}: expected an integer in {low}..{high}, got {value}")
         if self.step_instructions and not self.verify_expert:
             raise LuminousError("env config step_instructions: needs verify_expert (they describe the expert's plan)")
+        if self.high_descs and not self.verify_expert:
+            raise LuminousError("env config high_descs: needs verify_expert (they describe the expert's plan)")
         if self.split:
             from luminous_sim.splits import PLUS_SPLITS  # only when asked: `import luminous_sim` stays cheap
 

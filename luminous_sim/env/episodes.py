@@ -7,21 +7,29 @@ layer L4 may use the generator, as task-driven generation in `luminous_sim.data`
 the small part of that it needs rather than import layer L5). A drawn scene whose task does not fit is
 replaced by a new one, a bounded number of times (`EnvConfig.scene_attempts`).
 
-An entry of a split (`luminous_sim.splits`: S+, U+, U+test) fixes everything instead: the ALFRED room
-structure (`rooms.load_room(floor_plan)`), the layout (`generate(empty_cdf(room_type), seed=layout_seed,
-room=...)`) and the task type; the task is drawn from an rng seeded with the entry's task seed. An entry
-whose layout or task cannot be drawn is never replaced by another: `EpisodeUnavailable` says why, so an
-evaluation counts it as a failure of the population.
+An entry of a frozen split (`luminous_sim.benchmark`: S+, U+, U+test) fixes everything instead: its
+scene, task, initial state and start are `benchmark.entry_episode(entry)`, the one definition every user of
+a split calls (dataset builds, evaluation, behaviour cloning). Every split entry has an episode (the split
+holds only episodes the oracle solved); with `verify_expert`, an expert that does not solve one in this env
+(another camera, say) raises `EpisodeUnavailable` (cause `expert`), which an evaluation counts as a failure.
 """
 
 from __future__ import annotations
 
 from dataclasses import dataclass
-from functools import lru_cache
+from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from luminous_sim.benchmark import (
+    BenchmarkEntry,
+    benchmark_entries,
+    benchmark_entry,
+    entry_episode,
+    episode_key,
+    read_trial,
+)
 from luminous_sim.env.config import EnvConfig
 from luminous_sim.env.goals import ExpertPlan, Goal
 from luminous_sim.env.kinds import set_up, task_kind
@@ -29,19 +37,18 @@ from luminous_sim.env.reset_options import ResetOptions
 from luminous_sim.env.worlds import WorldPool
 from luminous_sim.errors import InfeasibleSceneError, LuminousError
 from luminous_sim.scene import Scene
-from luminous_sim.splits import SplitEntry, plus_split, split_entry
-from luminous_sim.tasks import TASK_TYPES, TaskSamplingError
+from luminous_sim.tasks import TaskSamplingError
 from luminous_sim.world import AgentPose, World
 
-UNAVAILABLE_CAUSES: tuple[str, ...] = ("layout", "no_task", "expert")
-"""Why a split entry has no episode: CSSG found no valid layout in the structure; no task of the entry's
-type fits the layout; the expert solves none of the tasks drawn (`EnvConfig.scene_attempts` of them)."""
+UNAVAILABLE_CAUSES: tuple[str, ...] = ("expert",)
+"""Why a split entry has no episode in an env: its expert does not solve it there (the split's oracle did, at
+ALFRED's camera)."""
 
 
 class EpisodeUnavailable(LuminousError):
     """A split entry whose episode cannot be drawn; `cause` is one of `UNAVAILABLE_CAUSES`."""
 
-    def __init__(self, entry: SplitEntry, cause: str, detail: str):
+    def __init__(self, entry: BenchmarkEntry, cause: str, detail: str):
         super().__init__(f"{entry.split} episode {entry.index} ({entry.task_type} in {entry.floor_plan}, "
                          f"layout {entry.layout}): {detail}")
         self.entry, self.cause, self.detail = entry, cause, detail
@@ -64,6 +71,8 @@ class Episode:
     `verify_expert`) the expert did not solve the task drawn."""
     start: AgentPose | None = None
     """Where the agent starts (a CDF's `task.agent`); None for the world's default start."""
+    key: str = ""
+    """`benchmark.episode_key` of the episode (its scene, task, initial state and start)."""
 
 
 def set_up_world(world: World, task_type: str) -> tuple[str, ...]:
@@ -212,19 +221,22 @@ def draw_episode(config: EnvConfig, rng: np.random.Generator, worlds: WorldPool,
                         + "; ".join(why[-3:]))
 
 
-def split_round(name: str) -> int:
-    """Episodes in one round of a split: each task type in each structure and layout at least once."""
-    split = plus_split(name)
-    return len(TASK_TYPES) * len(split.structures) * split.layouts
+def content_key(episode: Episode, world: World) -> str:
+    """`benchmark.episode_key` of an episode (a goal that is no task is keyed by its `to_dict` data)."""
+    from luminous_sim.env.goals import TaskGoal
+
+    goal = episode.goal
+    params = goal.task.params.to_json() if isinstance(goal, TaskGoal) else goal.to_dict()
+    return episode_key(episode.scene, goal.task_type, params, episode.start or world.agent, episode.dirty)
 
 
-def requested_entry(config: EnvConfig, options: ResetOptions, rng: np.random.Generator) -> SplitEntry | None:
+def requested_entry(config: EnvConfig, options: ResetOptions, rng: np.random.Generator) -> BenchmarkEntry | None:
     """The split entry a reset asks for (`options.split`, else `config.split`; `options.index`, else one drawn
-    from `rng` over a round of the split), or None for an episode from elsewhere (a scene or a CDF the
-    options name, the env's CDFs, or generated on the fly).
+    from `rng` over the split's entries of the env's task types), or None for an episode from elsewhere (a
+    scene or a CDF the options name, the env's CDFs, or generated on the fly).
 
     Raises:
-        LuminousError: an entry of a task type the env does not play.
+        LuminousError: an entry of a task type the env does not play, or a split with none of them.
     """
     if options.source not in ("", "split"):
         return None
@@ -233,58 +245,52 @@ def requested_entry(config: EnvConfig, options: ResetOptions, rng: np.random.Gen
         return None
     index = options.index
     if index is None:
-        index = int(rng.integers(split_round(name)))
-    entry = split_entry(name, index)
+        mine = [e.index for e in benchmark_entries(name) if e.task_type in config.task_types]
+        if not mine:
+            raise LuminousError(f"split {name} holds no episode of {', '.join(config.task_types)}")
+        index = mine[int(rng.integers(len(mine)))]
+    entry = benchmark_entry(name, index)
     if entry.task_type not in config.task_types:
         raise LuminousError(f"{name} episode {index} is a {entry.task_type} task; this env plays only "
                             f"{', '.join(config.task_types)}")
     return entry
 
 
-@lru_cache(maxsize=8)
-def split_scene(floor_plan: str, room_type: str, layout_seed: int) -> Scene:
-    """The layout of a split entry: CSSG in the ALFRED structure `floor_plan` (kept: entries share layouts).
+def split_episode(config: EnvConfig, entry: BenchmarkEntry, worlds: WorldPool) -> tuple[Episode, World]:
+    """The episode of a split entry (`benchmark.entry_episode`) and its world, ready for the first step.
 
     Raises:
-        InfeasibleSceneError: CSSG found no valid layout.
+        SplitVersionError: this checkout makes another episode than the frozen split.
+        EpisodeUnavailable: with `verify_expert`, the expert does not solve it in this env (cause `expert`).
     """
-    from luminous_sim.cssg import empty_cdf, generate
-    from luminous_sim.rooms import load_room
+    from luminous_sim.env.goals import TaskGoal
 
-    return generate(empty_cdf(room_type), seed=layout_seed, room=load_room(floor_plan)).scene
-
-
-def split_episode(config: EnvConfig, entry: SplitEntry, worlds: WorldPool) -> tuple[Episode, World]:
-    """The episode of a split entry and its world, ready for the first step (the same every time).
-
-    The task is drawn from an rng seeded with `entry.task_seed`; with `verify_expert`, a task the expert
-    cannot solve is redrawn from the same rng, up to `config.scene_attempts` tasks in all.
-
-    Raises:
-        EpisodeUnavailable: no layout, no task of the type, or no task the expert solves (its `cause`).
-    """
-    try:
-        scene = split_scene(entry.floor_plan, entry.room_type, entry.layout_seed)
-    except InfeasibleSceneError as exc:
-        raise EpisodeUnavailable(entry, "layout", str(exc)) from None
-    rng = np.random.default_rng(entry.task_seed)
-    unsolved: list[str] = []
-    for _ in range(config.scene_attempts):
-        world = worlds.get(scene)
-        dirty = set_up_world(world, entry.task_type)
-        try:
-            goal = draw_goal(world, scene, entry.task_type, rng, config.task_options)
-            start = draw_start(world, goal, entry.task_type, rng, config.task_options)
-        except TaskSamplingError as exc:
-            worlds.put(world)
-            raise EpisodeUnavailable(entry, "no_task", str(exc)) from None
-        episode = Episode(scene, goal, dirty, redraws=len(unsolved), start=start)
-        if not config.verify_expert:
-            return episode, world
-        plan = _prove(episode, worlds)
-        if plan is not None:
-            return Episode(scene, goal, dirty, plan, redraws=len(unsolved), start=start), world
+    made = entry_episode(entry)
+    episode = Episode(made.scene, TaskGoal(made.task), made.dirty, start=made.start)
+    world = worlds.get(made.scene, made.dirty, made.start)
+    if not config.verify_expert:
+        return episode, world
+    plan = _prove(episode, worlds)
+    if plan is None:
         worlds.put(world)
-        unsolved.append(goal.instruction)
-    raise EpisodeUnavailable(entry, "expert", f"the expert solves none of the {len(unsolved)} tasks drawn: "
-                             + "; ".join(repr(u) for u in unsolved[:3]))
+        raise EpisodeUnavailable(entry, "expert", f"the expert does not solve {made.task.instruction!r} in this env")
+    return Episode(made.scene, episode.goal, made.dirty, plan, start=made.start), world
+
+
+def trial_episode(config: EnvConfig, path: str, worlds: WorldPool) -> tuple[Episode, World]:
+    """The episode of a built trial folder, restored from its files alone (`benchmark.read_trial`): its
+    scene, task, start and ALFRED's set-up; the goal reads annotation 0's directive, and the expert's plan is
+    the recorded one (its length is L*, its steps the annotation's step instructions), as ALFRED's evaluation
+    takes L* from the trajectory it replays.
+
+    Raises:
+        TrialError: a file or field of the trial that cannot be read (named).
+    """
+    from luminous_sim.env.goals import TaskGoal
+
+    trial = read_trial(Path(path))
+    world = worlds.get(trial.scene)
+    dirty = set_up_world(world, trial.task.task_type) if trial.dirty_and_empty else ()
+    world.set_start(trial.start)
+    plan = ExpertPlan(trial.api_actions, exact=True, steps=trial.steps) if config.verify_expert else None
+    return Episode(trial.scene, TaskGoal(trial.task), dirty, plan, start=trial.start), world

@@ -23,7 +23,7 @@ def episode_data(episode: Episode) -> dict[str, Any]:
     ep = episode
     return {"scene": ep.scene.to_json(), "goal": ep.goal.to_dict(), "dirty": list(ep.dirty),
             "expert": None if ep.expert is None else [list(ep.expert.actions), list(ep.expert.steps)],
-            "redraws": ep.redraws, "start": None if ep.start is None else list(astuple(ep.start))}
+            "redraws": ep.redraws, "start": None if ep.start is None else list(astuple(ep.start)), "key": ep.key}
 
 
 def episode_from_data(data: dict[str, Any]) -> Episode:
@@ -32,7 +32,7 @@ def episode_from_data(data: dict[str, Any]) -> Episode:
     expert = None if plan is None else ExpertPlan(tuple(plan[0]), steps=tuple(plan[1]))
     start = None if data["start"] is None else AgentPose(*data["start"])
     return Episode(Scene.from_json(data["scene"]), goal_from_dict(data["goal"]), tuple(data["dirty"]), expert,
-                   data["redraws"], start)
+                   data["redraws"], start, data.get("key", ""))
 
 
 def history_data(history: Iterable[Sent]) -> list[tuple[Any, dict[str, Any], bool]]:

@@ -2,12 +2,15 @@
 starts, or refused with a one-line `LuminousError` naming the option and what was expected.
 
 - `scene`: a `luminous_sim.scene.Scene`; the episode is played in it (only the goal is drawn).
-- `split`, `index`: a split name (`S+`, `U+`, `U+test`) and a whole number 0..2**63-1; entry `index` of the
-  split (`index` alone: of the env's `split`; `split` alone: an entry drawn over a round of it).
+- `split`, `index`: a frozen split's name (`S+`, `U+`, `U+test`) and a whole number below its size; entry
+  `index` of the split (`index` alone: of the env's `split`; `split` alone: an entry drawn over the split's
+  entries of the env's task types).
+- `trial`: a built trial's folder (`traj_data.json` and the sidecar `luminous.json` of `luminous dataset
+  build`); the episode restored from its files (`benchmark.read_trial`), its annotation 0 the instructions.
 - `cdf`, `scene_seed`: a CDF file path, or a list of at most `MAX_CDF_FILES`, and a whole number
   0..2**63-1; a scene generated from a CDF (`scene_seed` alone: from the env's `cdf`).
 
-The three sources exclude each other: `scene`; `split`/`index`; `cdf`/`scene_seed`. An option given as None
+The sources exclude each other: `scene`; `split`/`index`; `trial`; `cdf`/`scene_seed`. An option given as None
 counts as not given. A source named in the options replaces the env's own (`EnvConfig.split`, `.cdf`) for
 that reset.
 """
@@ -26,9 +29,9 @@ from luminous_sim.env.config import MAX_CDF_FILES, EnvConfig, short_repr
 from luminous_sim.errors import LuminousError
 from luminous_sim.scene import Scene
 
-RESET_OPTIONS: tuple[str, ...] = ("scene", "split", "index", "cdf", "scene_seed")
+RESET_OPTIONS: tuple[str, ...] = ("scene", "split", "index", "trial", "cdf", "scene_seed")
 """The keys `reset(options=...)` knows."""
-SOURCES: tuple[tuple[str, ...], ...] = (("scene",), ("split", "index"), ("cdf", "scene_seed"))
+SOURCES: tuple[tuple[str, ...], ...] = (("scene",), ("split", "index"), ("trial",), ("cdf", "scene_seed"))
 """Groups of options that name where the episode comes from; options of two groups exclude each other."""
 SEED_LIMIT = 2**63
 """`index` and `scene_seed` lie in 0..SEED_LIMIT - 1 (what a `numpy.random.SeedSequence` of an int64 takes)."""
@@ -42,6 +45,7 @@ class ResetOptions:
         scene: play in this scene.
         split: play an entry of this split ("" for none given).
         index: the entry of `split` (else of the env's split) to play; None to draw one.
+        trial: restore the episode of this built trial folder ("" for none given).
         cdf: generate the scene from one of these CDF files (() for none given).
         scene_seed: the seed to generate the CDF's scene with; None to draw one.
     """
@@ -51,6 +55,7 @@ class ResetOptions:
     index: int | None = None
     cdf: tuple[str, ...] = ()
     scene_seed: int | None = None
+    trial: str = ""
 
     @property
     def source(self) -> str:
@@ -59,6 +64,8 @@ class ResetOptions:
             return "scene"
         if self.split or self.index is not None:
             return "split"
+        if self.trial:
+            return "trial"
         if self.cdf or self.scene_seed is not None:
             return "cdf"
         return ""
@@ -87,7 +94,7 @@ def reset_options(options: Any, config: EnvConfig) -> ResetOptions:
     named = [g for g in groups if g]
     if len(named) > 1:
         raise LuminousError(f"reset options: {' and '.join(repr(g[0]) for g in named)} exclude each other; give "
-                            "one of 'scene', 'split'/'index' or 'cdf'/'scene_seed'")
+                            "one of 'scene', 'split'/'index', 'trial' or 'cdf'/'scene_seed'")
     scene = given.get("scene")
     if scene is not None and not isinstance(scene, Scene):
         raise LuminousError(f"reset options scene: expected a luminous_sim.scene.Scene, got {type(scene).__name__}")
@@ -96,12 +103,29 @@ def reset_options(options: Any, config: EnvConfig) -> ResetOptions:
     if index is not None and not (split or config.split):
         raise LuminousError("reset options index: names an episode of a split; give 'split' too (or make the env "
                             "with split=...)")
+    if index is not None:
+        from luminous_sim.benchmark import benchmark_size
+
+        size = benchmark_size(split or config.split)
+        if index >= size:
+            raise LuminousError(f"reset options index: {index}; split {split or config.split} holds episodes "
+                                f"0..{size - 1}")
+    trial = _trial(given["trial"]) if "trial" in given else ""
     cdf = _cdf(given["cdf"]) if "cdf" in given else ()
     seed = _whole("scene_seed", given["scene_seed"]) if "scene_seed" in given else None
     if seed is not None and not (cdf or config.cdf):
         raise LuminousError("reset options scene_seed: seeds the scene of a CDF; give 'cdf' too (or make the env "
                             "with cdf=...)")
-    return ResetOptions(scene, split, index, cdf, seed)
+    return ResetOptions(scene, split, index, cdf, seed, trial)
+
+
+def _trial(value: Any) -> str:
+    if not isinstance(value, (str, os.PathLike)):
+        raise LuminousError(f"reset options trial: expected a trial folder's path, got {short_repr(value)}")
+    path = Path(value)
+    if not (path / "traj_data.json").is_file():
+        raise LuminousError(f"reset options trial: {path} holds no traj_data.json; expected a built trial's folder")
+    return str(path)
 
 
 def _split(value: Any) -> str:

@@ -14,18 +14,30 @@ Typical use::
     write_reports(report, Path("out/eval"))
 """
 
-from luminous_sim.eval.evaluator import EVAL_ENV, EpisodeJob, EvalReport, evaluate, play, run_job
+from luminous_sim.eval.evaluator import (
+    EVAL_ENV,
+    EpisodeJob,
+    EvalReport,
+    check_output,
+    data_run,
+    evaluate,
+    evaluate_data,
+    play,
+    run_job,
+)
 from luminous_sim.eval.metrics import EpisodeOutcome, Metrics, metrics, metrics_by_type, type_average
 from luminous_sim.eval.policies import (
     BUILT_IN,
     Agent,
     AgentContext,
     PolicyError,
+    ReplayAgent,
     check_policy,
     make_agent,
     resolve_factory,
 )
 from luminous_sim.eval.report import TABLE4_ROWS, markdown_table, plot, write_reports
+from luminous_sim.eval.trials import TrialRef, list_trials
 from luminous_sim.eval.workers import map_local, map_ordered
 
 __all__ = [
@@ -39,8 +51,14 @@ __all__ = [
     "EvalReport",
     "Metrics",
     "PolicyError",
+    "ReplayAgent",
+    "TrialRef",
+    "check_output",
     "check_policy",
+    "data_run",
     "evaluate",
+    "evaluate_data",
+    "list_trials",
     "make_agent",
     "map_local",
     "map_ordered",

@@ -35,18 +35,20 @@ from typing import Any
 import numpy as np
 
 from luminous_sim.assets.objio import write_atomic
+from luminous_sim.benchmark import benchmark_entry, benchmark_size
 from luminous_sim.data.backends import Backend
 from luminous_sim.env import EnvConfig, EpisodeUnavailable, LuminousEnv
 from luminous_sim.errors import LuminousError, link_or_kind
 from luminous_sim.eval.metrics import AGENT_FAULT, EpisodeOutcome, Metrics, metrics, metrics_by_type
-from luminous_sim.eval.policies import Agent, PolicyError, check_policy, make_agent
+from luminous_sim.eval.policies import Agent, PolicyError, ReplayAgent, check_policy, make_agent
 from luminous_sim.eval.workers import map_local, map_ordered
-from luminous_sim.limits import MAX_EPISODE_FILE_BYTES, MAX_EVAL_EPISODES
-from luminous_sim.splits import plus_split, split_entry
+from luminous_sim.limits import MAX_EPISODE_FILE_BYTES, MAX_EVAL_EPISODES, MAX_INPUT_BYTES
+from luminous_sim.splits import plus_split
 
 EVAL_ENV: dict[str, Any] = {"width": 300, "height": 300, "max_steps": 1000, "max_failures": 10,
-                            "verify_expert": True, "expert_in_info": False}
-"""ALFRED's camera and limits; the expert is proved at reset (it gives L*, the path-length weight)."""
+                            "verify_expert": True, "expert_in_info": False, "high_descs": True}
+"""ALFRED's camera and limits; the expert is proved at reset (it gives L*, the path-length weight); the agent
+reads the goal directive (`instruction`) and the step-by-step instructions (`high_descs`), as ALFRED's do."""
 EVAL_SETS = ("split", "cdf")
 """Env options the evaluation sets itself for each episode (`--split`, the split's entries): a value for
 them in `env_kwargs` other than the evaluation's own is refused, never silently overridden."""
@@ -68,10 +70,27 @@ class EpisodeJob:
     env_json: str
     """The env's options (`EnvConfig.to_kwargs`) as JSON."""
     out_dir: str | None = None
+    trial: str = ""
+    """A built trial's folder to play (restored from its files); "" plays the split's entry `index` live."""
+    trial_rel: str = ""
+    """`trial` relative to the dataset folder (what the outcome records)."""
+    unbuilt: str = ""
+    """A build job that wrote no trial (its stage and cause): the outcome is `unavailable`, cause `build`."""
+    named: tuple[str, str, int] | None = None
+    """(task type, floor plan, layout) of an unbuilt job, as the build recorded them."""
 
     @property
     def path(self) -> Path | None:
         return None if self.out_dir is None else Path(self.out_dir) / "episodes" / f"{self.split}-{self.index}.json"
+
+    def where(self) -> tuple[str, str, int]:
+        """(task type, floor plan, layout) of the episode: the frozen entry's, or what the trial's files say."""
+        if self.named is not None:
+            return self.named
+        if not self.trial:
+            entry = benchmark_entry(self.split, self.index)
+            return entry.task_type, entry.floor_plan, entry.layout
+        return _trial_where(self.trial, self.split)
 
 
 @dataclass(frozen=True)
@@ -112,28 +131,39 @@ class EvalReport:
 
 
 def episode_seed(seed: int, split: str, index: int) -> int:
-    """The seed of the agent's randomness in one episode (the same whichever worker plays it)."""
-    return int(np.random.SeedSequence([seed, plus_split(split).code, index]).generate_state(1)[0])
+    """The seed of the agent's randomness in one episode (the same whichever worker plays it); a split that is
+    not one of ours (a user's dataset folder) is told apart by a digest of its name."""
+    from luminous_sim.splits import PLUS_SPLITS
+
+    code = PLUS_SPLITS[split].code if split in PLUS_SPLITS else int(hashlib.sha256(split.encode()).hexdigest()[:8], 16)
+    return int(np.random.SeedSequence([seed, code, index]).generate_state(1)[0])
 
 
-def play(env: LuminousEnv, agent: Agent, split: str, index: int, seed: int = 0) -> EpisodeOutcome:
-    """One episode of a split, played by `agent` in `env` to its end.
+def play(env: LuminousEnv, agent: Agent, split: str, index: int, seed: int = 0, *, trial: str = "",
+         trial_rel: str = "") -> EpisodeOutcome:
+    """One episode played by `agent` in `env` to its end: entry `index` of the frozen split `split`, or with
+    `trial` the built trial in that folder (restored from its files; `split` and `index` then name it).
 
     Raises:
         PolicyError: the agent raised (the message names the episode; the agent's error is chained).
     """
-    entry = split_entry(split, index)
+    task_type, floor_plan, layout = EpisodeJob("", split, index, 0, "", trial=trial).where()
     own_seed = episode_seed(seed, split, index)
+    options: dict[str, Any] = {"trial": trial} if trial else {"split": split, "index": index}
+    named: dict[str, Any] = {"split": split, "index": index, "task_type": task_type, "floor_plan": floor_plan,
+                             "layout": layout, "trial": trial_rel}
     try:
-        obs, info = env.reset(seed=own_seed, options={"split": split, "index": index})
+        obs, info = env.reset(seed=own_seed, options=options)
     except EpisodeUnavailable as exc:
-        return EpisodeOutcome(split, index, entry.task_type, entry.floor_plan, entry.layout, end="unavailable",
-                              cause=exc.cause, detail=exc.detail)
+        return EpisodeOutcome(**named, end="unavailable", cause=exc.cause, detail=exc.detail)
     assert env.episode is not None and env.episode.expert is not None, "the evaluation env proves the expert"
+    key = str(info["episode_key"])
     steps, terminated, truncated = 0, False, False
     fault = ""
     try:
-        agent.reset(obs["instruction"], {**info, "episode_seed": own_seed})
+        steps_text = obs.get("high_descs", "")
+        agent.reset(obs["instruction"], {**info, "episode_seed": own_seed,
+                                         "high_descs": steps_text.split("\n") if steps_text.strip(".") else []})
     except Exception as exc:
         raise PolicyError(f"the agent raised on {split} episode {index} at reset: {type(exc).__name__}: {exc}") from exc
     while not (terminated or truncated):
@@ -161,11 +191,34 @@ def play(env: LuminousEnv, agent: Agent, split: str, index: int, seed: int = 0) 
     else:
         end = "max_failures" if info["failures"] >= env.config.max_failures else "max_steps"
     met, total = info["goal_conditions"]
-    return EpisodeOutcome(split, index, entry.task_type, entry.floor_plan, entry.layout, end=end,
-                          success=bool(info["success"]) and not fault, goal_conditions=(int(met), int(total)),
-                          steps=steps - stopped, expert_length=len(env.episode.expert.actions),
-                          failures=int(info["failures"]), instruction=str(obs["instruction"]),
-                          cause=AGENT_FAULT if fault else "", detail=fault)
+    return EpisodeOutcome(**named, end=end, success=bool(info["success"]) and not fault,
+                          goal_conditions=(int(met), int(total)), steps=steps - stopped,
+                          expert_length=len(env.episode.expert.actions), failures=int(info["failures"]),
+                          instruction=str(obs["instruction"]), cause=AGENT_FAULT if fault else "", detail=fault,
+                          episode_key=key)
+
+
+def _trial_where(trial: str, split: str) -> tuple[str, str, int]:
+    """(task type, floor plan, layout) of a trial folder: traj_data's task type and floor plan, and the frozen
+    entry's layout when the sidecar names a frozen split's entry (else 0)."""
+    from luminous_sim.benchmark import FROZEN, benchmark_size
+
+    path = Path(trial)
+    try:
+        traj = json.loads((path / "traj_data.json").read_bytes()[:MAX_INPUT_BYTES])
+        task_type, floor_plan = str(traj["task_type"]), str(traj["scene"]["floor_plan"])
+    except (OSError, ValueError, KeyError, TypeError) as exc:
+        raise LuminousError(f"{path / 'traj_data.json'}: cannot read task_type and scene.floor_plan "
+                            f"({type(exc).__name__}: {exc})") from None
+    layout = 0
+    try:
+        bench = json.loads((path / "luminous.json").read_bytes()[:MAX_INPUT_BYTES]).get("benchmark") or {}
+        name, i = bench.get("split"), bench.get("index")
+        if name in FROZEN and isinstance(i, int) and 0 <= i < benchmark_size(name):
+            layout = benchmark_entry(name, i).layout
+    except (OSError, ValueError, AttributeError):
+        pass
+    return task_type, floor_plan, layout
 
 
 def _not_an_action(action: Any) -> str:
@@ -203,7 +256,7 @@ def outcome_record(outcome: EpisodeOutcome) -> dict[str, Any]:
     return {**fields, CHECK: _digest(fields)}
 
 
-def read_outcome(path: Path, split: str, index: int) -> EpisodeOutcome:
+def read_outcome(path: Path, split: str, index: int, job: EpisodeJob | None = None) -> EpisodeOutcome:
     """The outcome an earlier run wrote at `path` for episode `index` of `split`.
 
     Raises:
@@ -230,11 +283,11 @@ def read_outcome(path: Path, split: str, index: int) -> EpisodeOutcome:
         shown = repr(recorded) if len(repr(recorded)) <= 40 else repr(recorded)[:37] + "..."
         raise LuminousError(f"{path}: field {CHECK!r}: {shown} is not the digest of the file's other fields "
                             f"({_digest(data)}); the file was edited or damaged")
-    entry = split_entry(split, index)
-    mine = (split, index, entry.task_type, entry.floor_plan, entry.layout)
-    for name, value, want in zip(("split", "index", "task_type", "floor_plan", "layout"),
-                                 (outcome.split, outcome.index, outcome.task_type, outcome.floor_plan, outcome.layout),
-                                 mine):
+    task_type, floor_plan, layout = (job or EpisodeJob("", split, index, 0, "")).where()
+    mine = (split, index, task_type, floor_plan, layout, job.trial_rel if job is not None else "")
+    for name, value, want in zip(("split", "index", "task_type", "floor_plan", "layout", "trial"),
+                                 (outcome.split, outcome.index, outcome.task_type, outcome.floor_plan, outcome.layout,
+                                  outcome.trial), mine):
         if value != want:
             raise LuminousError(f"{path}: field {name!r}: {value!r}, but the file is episode {index} of {split}, "
                                 f"whose {name} is {want!r}")
@@ -254,20 +307,29 @@ def _run_job(job: EpisodeJob) -> tuple[EpisodeOutcome, str]:
     damaged = ""
     if path is not None and (path.exists() or path.is_symlink()):
         try:
-            return read_outcome(path, job.split, job.index), ""
+            return read_outcome(path, job.split, job.index, job), ""
         except LuminousError as exc:
             damaged = str(exc)
             if path.is_dir() and not path.is_symlink():
                 shutil.rmtree(path)
             else:
                 path.unlink()
+    if job.unbuilt:
+        task_type, floor_plan, layout = job.where()
+        outcome = EpisodeOutcome(job.split, job.index, task_type, floor_plan, layout, end="unavailable",
+                                 cause="build", detail=job.unbuilt)
+        if path is not None:
+            write_atomic(path, json.dumps(outcome_record(outcome), indent=1) + "\n")
+        return outcome, damaged
     key = (job.policy, job.env_json)
     if key not in _RUNNERS:
         env = LuminousEnv(**json.loads(job.env_json))
         _RUNNERS[key] = (env, make_agent(job.policy, env))
     env, agent = _RUNNERS[key]
+    if job.trial and job.policy == "oracle":
+        agent = _replay_agent(job.trial)
     try:
-        outcome = play(env, agent, job.split, job.index, job.seed)
+        outcome = play(env, agent, job.split, job.index, job.seed, trial=job.trial, trial_rel=job.trial_rel)
     finally:
         env.close()  # frees the episode's simulator; the next reset builds a new one
     if path is not None:
@@ -275,10 +337,36 @@ def _run_job(job: EpisodeJob) -> tuple[EpisodeOutcome, str]:
     return outcome, damaged
 
 
+def _replay_agent(trial: str) -> ReplayAgent:
+    """The oracle of a built trial: its recorded actions, replayed through the agent interface."""
+    from luminous_sim.benchmark import read_trial
+
+    agent = ReplayAgent()
+    agent.load(read_trial(Path(trial)).low_actions)
+    return agent
+
+
 def _claim(out_dir: Path, run: dict[str, Any]) -> None:
-    """Record what `out_dir` holds, or refuse a folder that holds another evaluation, one that is not empty
-    and holds no evaluation, and one whose files are not what an evaluation writes (a folder or a link
-    where `run.json` belongs, `episodes` a link or a file)."""
+    """Record what `out_dir` holds (`check_output` first)."""
+    if check_output(out_dir, run):
+        write_atomic(Path(out_dir) / RUN_FILE, json.dumps(run, indent=1) + "\n")
+
+
+def data_run(policy: str, data_dir: Path, split: str, seed: int, env_kwargs: dict[str, Any] | None) -> dict[str, Any]:
+    """What an evaluation of a dataset folder records in its `run.json` (`evaluate_data`'s arguments)."""
+    return {"policy": policy, "data": str(Path(data_dir).resolve()), "split": split, "seed": seed,
+            "env": _env_config(split, env_kwargs).to_kwargs()}
+
+
+def check_output(out_dir: Path, run: dict[str, Any]) -> bool:
+    """Whether `out_dir` can take the evaluation `run` (True: new, its run.json is still to be written; False:
+    it holds this same evaluation, which resumes); nothing is written.
+
+    Raises:
+        LuminousError: a folder that holds another evaluation, one that is not empty and holds no evaluation,
+            or one whose files are not what an evaluation writes (a folder or a link where `run.json`
+            belongs, `episodes` a link or a file).
+    """
     out_dir = Path(out_dir)
     if out_dir.exists() and not out_dir.is_dir():
         raise LuminousError(f"{out_dir}: exists and is not a folder; expected an evaluation's output folder")
@@ -301,20 +389,71 @@ def _claim(out_dir: Path, run: dict[str, Any]) -> None:
         if old != run:
             diff = ", ".join(f"{k} {old.get(k)!r} (asked {run[k]!r})" for k in run if old.get(k) != run[k])
             raise LuminousError(f"{out_dir} holds another evaluation ({diff}); choose another output folder")
-        return
+        return False
     others = sorted(p.name for p in out_dir.iterdir() if p.name not in EVAL_FILES) if out_dir.is_dir() else []
     if others:
         more = " ..." if len(others) > 5 else ""
         raise LuminousError(f"{out_dir} is not empty and holds no evaluation ({RUN_FILE} missing; it has "
                             f"{', '.join(others[:5])}{more}); choose a new or empty folder")
-    write_atomic(path, json.dumps(run, indent=1) + "\n")
+    return True
+
+
+def _env_config(split: str, env_kwargs: dict[str, Any] | None) -> EnvConfig:
+    """ALFRED's env (`EVAL_ENV`) with the user's options, refusing the ones the evaluation sets itself."""
+    for name in EVAL_SETS:
+        value = (env_kwargs or {}).get(name)
+        if name == "split" and value not in (None, "", split):
+            raise LuminousError(f"env option split={value!r}: the evaluation plays split {split} (its --split); "
+                                "leave the env option out or give the same split")
+        if name == "cdf" and value not in (None, "", [], ()):
+            raise LuminousError(f"env option cdf={value!r}: an evaluation plays the entries of split {split}, "
+                                "not CDF scenes; leave the env option out")
+    config = EnvConfig.from_kwargs({**EVAL_ENV, **(env_kwargs or {})})
+    if not config.verify_expert:
+        raise LuminousError("env option verify_expert: an evaluation needs the expert's length (PLW metrics)")
+    return config
+
+
+def _indices(episodes: int | Iterable[int], size: int, split: str) -> Sequence[int]:
+    """The entry indices asked for (a count N: 0 .. N-1), checked against the split's size and the limit."""
+    if isinstance(episodes, int) and not 1 <= episodes <= MAX_EVAL_EPISODES:
+        raise LuminousError(f"episodes: expected 1 to {MAX_EVAL_EPISODES} (luminous_sim.limits.MAX_EVAL_EPISODES), "
+                            f"got {episodes}")
+    indices: Sequence[int] = range(episodes) if isinstance(episodes, int) else list(
+        itertools.islice(episodes, MAX_EVAL_EPISODES + 1))
+    if not indices:
+        raise LuminousError("episodes: expected at least one episode")
+    if len(indices) > MAX_EVAL_EPISODES:
+        raise LuminousError(f"episodes: more than {MAX_EVAL_EPISODES} (luminous_sim.limits.MAX_EVAL_EPISODES)")
+    bad = [i for i in indices if not 0 <= i < size]
+    if bad:
+        raise LuminousError(f"episodes: split {split} holds episodes 0..{size - 1}; {bad[0]} is not one of them")
+    return indices
+
+
+def _run_all(policy: str, split: str, seed: int, config: EnvConfig, jobs: list[EpisodeJob],
+             progress: Callable[[EpisodeOutcome], None] | None, workers: int,
+             backend: Backend | None) -> EvalReport:
+    outcomes, replayed = [], []
+    runs = map_local(_run_job, jobs, workers) if backend is None else map_ordered(_run_job, jobs, backend)
+    for outcome, damaged in runs:
+        outcomes.append(outcome)
+        if damaged:
+            replayed.append(damaged)
+        if progress is not None:
+            progress(outcome)
+    return EvalReport(policy, split, seed, config.to_kwargs(), tuple(outcomes), tuple(replayed))
 
 
 def evaluate(policy: str, split: str, episodes: int | Iterable[int], *, seed: int = 0, workers: int = 1,
              out_dir: Path | None = None, env_kwargs: dict[str, Any] | None = None,
              progress: Callable[[EpisodeOutcome], None] | None = None,
              backend: Backend | None = None) -> EvalReport:
-    """Run `policy` (`oracle`, `random` or `MODULE:CALLABLE`) on episodes of `split`.
+    """Run `policy` (`oracle`, `random` or `MODULE:CALLABLE`) on entries of the frozen split `split`, each
+    played live: `reset(options={"split": split, "index": i})`, the episode `benchmark.entry_episode` defines
+    (the oracle is the env's expert, replanning from the env's state). `evaluate_data` plays a build's trials
+    instead (the oracle then replays the recorded actions); `luminous eval --split` builds the canonical split
+    and evaluates that.
 
     Args:
         policy: the policy spec (see `luminous_sim.eval.policies`).
@@ -334,39 +473,50 @@ def evaluate(policy: str, split: str, episodes: int | Iterable[int], *, seed: in
     """
     check_policy(policy)
     plus_split(split)
-    if isinstance(episodes, int) and not 1 <= episodes <= MAX_EVAL_EPISODES:
-        raise LuminousError(f"episodes: expected 1 to {MAX_EVAL_EPISODES} (luminous_sim.limits.MAX_EVAL_EPISODES), "
-                            f"got {episodes}")
-    indices: Sequence[int] = range(episodes) if isinstance(episodes, int) else list(
-        itertools.islice(episodes, MAX_EVAL_EPISODES + 1))
-    if not indices:
-        raise LuminousError("episodes: expected at least one episode")
-    if len(indices) > MAX_EVAL_EPISODES:
-        raise LuminousError(f"episodes: more than {MAX_EVAL_EPISODES} (luminous_sim.limits.MAX_EVAL_EPISODES)")
-    for i in indices:
-        split_entry(split, i)
-    for name in EVAL_SETS:
-        value = (env_kwargs or {}).get(name)
-        if name == "split" and value not in (None, "", split):
-            raise LuminousError(f"env option split={value!r}: the evaluation plays split {split} (its --split); "
-                                "leave the env option out or give the same split")
-        if name == "cdf" and value not in (None, "", [], ()):
-            raise LuminousError(f"env option cdf={value!r}: an evaluation plays the entries of split {split}, "
-                                "not CDF scenes; leave the env option out")
-    kwargs = {**EVAL_ENV, **(env_kwargs or {})}
-    config = EnvConfig.from_kwargs(kwargs)
-    if not config.verify_expert:
-        raise LuminousError("env option verify_expert: an evaluation needs the expert's length (PLW metrics)")
+    indices = _indices(episodes, benchmark_size(split), split)
+    config = _env_config(split, env_kwargs)
     env_json = json.dumps(config.to_kwargs(), sort_keys=True)
     if out_dir is not None:
         _claim(out_dir, {"policy": policy, "split": split, "seed": seed, "env": config.to_kwargs()})
     jobs = [EpisodeJob(policy, split, i, seed, env_json, None if out_dir is None else str(out_dir)) for i in indices]
-    outcomes, replayed = [], []
-    runs = map_local(_run_job, jobs, workers) if backend is None else map_ordered(_run_job, jobs, backend)
-    for outcome, damaged in runs:
-        outcomes.append(outcome)
-        if damaged:
-            replayed.append(damaged)
-        if progress is not None:
-            progress(outcome)
-    return EvalReport(policy, split, seed, config.to_kwargs(), tuple(outcomes), tuple(replayed))
+    return _run_all(policy, split, seed, config, jobs, progress, workers, backend)
+
+
+def evaluate_data(policy: str, data_dir: Path, *, split: str | None = None,
+                  episodes: int | Iterable[int] | None = None, seed: int = 0, workers: int = 1,
+                  out_dir: Path | None = None, env_kwargs: dict[str, Any] | None = None,
+                  progress: Callable[[EpisodeOutcome], None] | None = None,
+                  backend: Backend | None = None) -> EvalReport:
+    """Run `policy` on the trials of a built dataset folder, as ALFRED's evaluation iterates over a split's
+    traj_data.json files: each trial restored from its files alone (`reset(options={"trial": folder})`), the
+    agent reading annotation 0; the `oracle` replays the trial's recorded low-level actions through the agent
+    interface (`ReplayAgent`), so its success rate measures replay fidelity.
+
+    Args:
+        data_dir: the dataset folder (`luminous dataset build` output, or ALFRED's layout with our sidecars).
+        split: evaluate only this split's trials (the folder's `splits.json` key); None for every trial.
+        episodes: a count N (the split's first N trials) or their indices; None for all.
+        (the others as for `evaluate`)
+
+    Raises:
+        PolicyError, LuminousError: a bad policy spec, data folder, index or env option (before any work).
+    """
+    from luminous_sim.eval.trials import list_trials
+
+    check_policy(policy)
+    refs = list_trials(Path(data_dir), split)
+    if not refs:
+        raise LuminousError(f"{data_dir}: holds no trial{f' of split {split}' if split else ''}")
+    if episodes is not None:
+        chosen = set(_indices(episodes, len(refs), split or "(all)"))
+        refs = [r for k, r in enumerate(refs) if k in chosen]
+    names = sorted({r.split for r in refs})
+    label = split or "+".join(names)
+    config = _env_config(label, env_kwargs)
+    env_json = json.dumps(config.to_kwargs(), sort_keys=True)
+    if out_dir is not None:
+        _claim(out_dir, data_run(policy, data_dir, label, seed, env_kwargs))
+    jobs = [EpisodeJob(policy, r.split, r.index, seed, env_json, None if out_dir is None else str(out_dir),
+                       trial="" if r.unbuilt else str(r.path), trial_rel=r.rel, unbuilt=r.unbuilt, named=r.named)
+            for r in refs]
+    return _run_all(policy, label, seed, config, jobs, progress, workers, backend)

@@ -56,6 +56,10 @@ class EpisodeOutcome:
     """Why an unavailable entry has no episode (`env.UNAVAILABLE_CAUSES`), `AGENT_FAULT` for an
     `invalid_action` end; "" otherwise."""
     detail: str = ""
+    episode_key: str = ""
+    """The episode's content key (`benchmark.episode_key`, from the env's restored world)."""
+    trial: str = ""
+    """The trial folder played (relative to the dataset folder) when evaluating a built dataset."""
 
     def __post_init__(self) -> None:
         if self.end not in ENDS:
@@ -168,5 +172,6 @@ def type_average(per_type: dict[str, Metrics], name: str) -> float | None:
 
 _FIELDS: dict[str, type] = {"split": str, "index": int, "task_type": str, "floor_plan": str, "layout": int,
                             "end": str, "success": bool, "goal_conditions": tuple, "steps": int,
-                            "expert_length": int, "failures": int, "instruction": str, "cause": str, "detail": str}
+                            "expert_length": int, "failures": int, "instruction": str, "cause": str, "detail": str,
+                            "episode_key": str, "trial": str}
 _REQUIRED = ("split", "index", "task_type", "floor_plan", "layout", "end")

@@ -70,6 +70,29 @@ class OracleAgent:
         return self.policy(observation)
 
 
+class ReplayAgent:
+    """The oracle of a built dataset: a trial's recorded low-level actions, sent through the agent interface as
+    a model sends them (ALFRED's dict form: the action's name and, for an interaction, its recorded mask), then
+    Stop. Its success rate measures how faithfully a trial replays from its files, not a filter."""
+
+    def __init__(self) -> None:
+        self.actions: tuple[dict[str, Any], ...] = ()
+        self.cursor = 0
+
+    def load(self, actions: tuple[dict[str, Any], ...]) -> None:
+        """The actions to replay in the next episode."""
+        self.actions, self.cursor = actions, 0
+
+    def reset(self, instruction: str, info: dict[str, Any]) -> None:
+        self.cursor = 0
+
+    def act(self, observation: dict[str, Any], info: dict[str, Any]) -> Any:
+        if self.cursor >= len(self.actions):
+            return {"action": "Stop"}
+        self.cursor += 1
+        return dict(self.actions[self.cursor - 1])
+
+
 class RandomAgent:
     """An action drawn uniformly from the discrete space each step, seeded per episode."""
 

@@ -14,7 +14,14 @@ if TYPE_CHECKING:
     from luminous_sim.planning.navigation import NavGraph, goto_actions, look_steps
     from luminous_sim.planning.oracle import ExecutionError, Oracle, with_forbidden
     from luminous_sim.planning.script import LowLevelAction, ScriptOracle, script_from_cdf
-    from luminous_sim.planning.task_fit import draw_task, has_room, has_room_for_two, physically_feasible, unseeable
+    from luminous_sim.planning.task_fit import (
+        distinct_tasks,
+        draw_task,
+        has_room,
+        has_room_for_two,
+        physically_feasible,
+        unseeable,
+    )
     from luminous_sim.planning.trajectory import Trajectory
 
 _WHERE = {
@@ -22,7 +29,7 @@ _WHERE = {
     "NavGraph": "navigation", "goto_actions": "navigation", "look_steps": "navigation",
     "Trajectory": "trajectory",
     "LowLevelAction": "script", "ScriptOracle": "script", "script_from_cdf": "script",
-    "draw_task": "task_fit", "has_room": "task_fit", "has_room_for_two": "task_fit",
+    "distinct_tasks": "task_fit", "draw_task": "task_fit", "has_room": "task_fit", "has_room_for_two": "task_fit",
     "physically_feasible": "task_fit", "unseeable": "task_fit",
 }
 
@@ -33,6 +40,7 @@ __all__ = [
     "Oracle",
     "ScriptOracle",
     "Trajectory",
+    "distinct_tasks",
     "draw_task",
     "goto_actions",
     "has_room",

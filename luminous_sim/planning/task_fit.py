@@ -138,3 +138,22 @@ def draw_task(scene: Scene, view: WorldView, task_type: str, rng: np.random.Gene
         return (keep is None or keep(p)) and checks.feasible(p, two)
 
     return sample_task(scene, view.state.without(excluded), task_type, rng, keep=fits)
+
+
+def distinct_tasks(scene: Scene, view: WorldView, task_type: str) -> list[PddlParams]:
+    """Every parameter set `draw_task` (without `excluded`, `full` or `keep`) can return in this world, in
+    the sampler's sorted order: how many different tasks of the type the layout holds.
+
+    Raises:
+        TaskSamplingError: none is feasible.
+    """
+    from luminous_sim.tasks.errors import TaskSamplingError
+    from luminous_sim.tasks.sample import feasible_params
+
+    excluded = unseeable(view)
+    checks = _RoomChecks(view, excluded, ())
+    two = task_type == "pick_two_obj_and_place"
+    found = [p for p in feasible_params(scene, view.state.without(excluded), task_type) if checks.feasible(p, two)]
+    if not found:
+        raise TaskSamplingError(f"no {task_type} task in this layout passes the physical checks")
+    return found

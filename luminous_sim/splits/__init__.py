@@ -4,29 +4,22 @@ means, and ALFRED's `oct21.json` split-file layout for what a build produced.
 
 Typical use::
 
-    from luminous_sim.splits import split_entries
-    for entry in split_entries("U+", 14):
-        print(entry.floor_plan, entry.layout_seed, entry.task_type, entry.task_seed)
+    from luminous_sim.splits import plus_split
+    print(plus_split("U+").structures)       # entry i of a split: luminous_sim.benchmark.benchmark_entry
 """
 
 from luminous_sim.splits.plus import (
     PLUS_SPLITS,
     PlusSplit,
-    SplitEntry,
     SplitError,
     oct21_document,
     plus_split,
-    split_entries,
-    split_entry,
 )
 
 __all__ = [
     "PLUS_SPLITS",
     "PlusSplit",
-    "SplitEntry",
     "SplitError",
     "oct21_document",
     "plus_split",
-    "split_entries",
-    "split_entry",
 ]

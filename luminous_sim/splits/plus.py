@@ -6,10 +6,9 @@
   scenes; 435 trajectories in the paper).
 - **U+test**: the same over the 8 structures of ALFRED's tests_unseen split (beyond the paper).
 
-An episode of a split is named by its index alone: `split_entry("S+", i)` says which room structure,
-which layout seed, which task type and which task seed episode `i` uses, the same on every machine.
-Task types go round ALFRED's seven in order; each is placed only in structures of the room types ALFRED
-generates it in.
+What episode `i` of a split is (its layout, task, start and initial state) is frozen in the split's shipped
+manifest and defined by `luminous_sim.benchmark` (layer L4, which may generate scenes); this module holds
+the structures the splits draw their layouts from.
 """
 
 from __future__ import annotations
@@ -19,9 +18,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from luminous_sim.errors import LuminousError
-from luminous_sim.rooms import ALFRED_SPLITS, scene_room_type, scene_split
-from luminous_sim.tasks import task_info
-from luminous_sim.vocab import ALFRED_TASK_TYPES, ROOM_TYPES
+from luminous_sim.rooms import ALFRED_SPLITS, scene_split
+from luminous_sim.vocab import ROOM_TYPES
 
 SEEN_PER_ROOM_TYPE = 10
 """Training structures per room type in S+ (the paper's "10 room structures ... for each room type")."""
@@ -42,21 +40,6 @@ class PlusSplit:
     layouts: int
     code: int
     """A number that keeps the seeds of different splits apart."""
-
-
-@dataclass(frozen=True)
-class SplitEntry:
-    """One episode of a split: where it happens and what is asked."""
-
-    split: str
-    index: int
-    floor_plan: str
-    room_type: str
-    layout: int
-    """Which of the structure's layouts (0 .. layouts-1)."""
-    layout_seed: int
-    task_type: str
-    task_seed: int
 
 
 def _numbers(scenes: list[int]) -> tuple[str, ...]:
@@ -89,38 +72,6 @@ def plus_split(name: str) -> PlusSplit:
     if name not in PLUS_SPLITS:
         raise SplitError(f"unknown split {name!r}; expected one of {', '.join(PLUS_SPLITS)}")
     return PLUS_SPLITS[name]
-
-
-def _seed(*words: int) -> int:
-    return int(np.random.SeedSequence(list(words)).generate_state(1, dtype=np.uint32)[0])
-
-
-def split_entry(name: str, index: int) -> SplitEntry:
-    """Episode `index` of split `name`: task type `index mod 7`, then the structures that allow that
-    type in turn, then their layouts in turn.
-
-    Raises:
-        SplitError: unknown split or a negative index.
-    """
-    split = plus_split(name)
-    if index < 0:
-        raise SplitError(f"split {name}: episode index {index} is negative")
-    types = len(ALFRED_TASK_TYPES)
-    task_type = ALFRED_TASK_TYPES[index % types]
-    rooms = task_info(task_type).rooms
-    structures = [s for s in split.structures if scene_room_type(int(s[len("FloorPlan"):])) in rooms]
-    turn = index // types
-    floor_plan = structures[turn % len(structures)]
-    layout = (turn // len(structures)) % split.layouts
-    number = int(floor_plan[len("FloorPlan"):])
-    return SplitEntry(split=name, index=index, floor_plan=floor_plan, room_type=scene_room_type(number),
-                      layout=layout, layout_seed=_seed(split.code, number, layout), task_type=task_type,
-                      task_seed=_seed(split.code, 7, index))
-
-
-def split_entries(name: str, count: int, start: int = 0) -> list[SplitEntry]:
-    """Episodes `start .. start + count - 1` of split `name`."""
-    return [split_entry(name, i) for i in range(start, start + count)]
 
 
 def oct21_document(built: dict[str, list[str]], annotations: int = 3) -> dict[str, list[dict[str, object]]]:

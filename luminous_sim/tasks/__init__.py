@@ -37,7 +37,14 @@ from luminous_sim.tasks.evaluate import (
     parents,
     task_satisfied,
 )
-from luminous_sim.tasks.initial import STATE_LITERALS, check_initial, initial_literals, scene_with_initial
+from luminous_sim.tasks.initial import (
+    DIRTY_FIRST,
+    STATE_LITERALS,
+    alfred_dirty,
+    check_initial,
+    initial_literals,
+    scene_with_initial,
+)
 from luminous_sim.tasks.meanings import MEANINGS, PredicateMeaning
 from luminous_sim.tasks.model import PddlParams, TaskInstance
 from luminous_sim.tasks.rooms import object_rooms, rooms_apart
@@ -61,6 +68,7 @@ from luminous_sim.tasks.types import (
 )
 
 __all__ = [
+    "DIRTY_FIRST",
     "MEANINGS",
     "PLAN_ORDER",
     "STATE_LITERALS",
@@ -75,6 +83,7 @@ __all__ = [
     "TaskInstance",
     "TaskSamplingError",
     "TaskType",
+    "alfred_dirty",
     "alfred_name_clash",
     "cdf_for_task",
     "check_initial",

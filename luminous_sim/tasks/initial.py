@@ -15,6 +15,21 @@ STATE_LITERALS: dict[str, str] = {"isOpen": "isOpen", "isToggled": "isToggled", 
 """Initial-state predicates a scene object's `states` can be set by (predicate -> state key)."""
 
 
+DIRTY_FIRST: frozenset[str] = frozenset({"pick_clean_then_place_in_recep"})
+"""The task types whose set-up makes things dirty first (ALFRED's `dirty_and_empty`, for cleaning)."""
+
+
+def alfred_dirty(state: WorldState, task_type: str) -> tuple[str, ...]:
+    """The objects ALFRED's set-up makes dirty before a task of `task_type` (for cleaning, every dirtyable
+    object that can be picked up, as its `dirty_and_empty` initialisation does), sorted; none for the rest."""
+    from luminous_sim.vocab import abilities
+
+    if task_type not in DIRTY_FIRST:
+        return ()
+    return tuple(sorted(oid for oid, st in state.objects.items()
+                        if abilities(st.object_type).dirtyable and abilities(st.object_type).pickupable))
+
+
 def initial_literals(initial: Expr | None) -> list[tuple[Atom, bool]]:
     """(atom, positive) for each literal of a ground conjunction.
 

@@ -164,15 +164,14 @@ def test_a_missing_empty_or_malformed_split_folder_is_refused_naming_it(tmp_path
         design_jobs(bad)
 
 
-def test_cli_wants_one_source_and_a_count_for_a_split(tmp_path, alfred_split, capsys):
+def test_cli_wants_one_source(tmp_path, alfred_split, capsys):
     from luminous_sim.cli.main import main
 
     for argv in (["--out", str(tmp_path / "b")],
-                 ["--split", "S+", "--out", str(tmp_path / "b")],
                  ["--split", "S+", "--count", "1", "--from-alfred", str(alfred_split), "--out", str(tmp_path / "b")]):
         with pytest.raises(SystemExit) as exc:
             main(["dataset", "build", *argv])
         assert exc.value.code == 2
     err = capsys.readouterr().err
     assert "one of the arguments --split --from-alfred is required" in err
-    assert "--count is required with --split" in err and "not allowed with argument" in err
+    assert "not allowed with argument" in err

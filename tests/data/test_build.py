@@ -15,6 +15,7 @@ from pathlib import Path
 
 import pytest
 
+from luminous_sim.benchmark import benchmark_entry
 from luminous_sim.data import (
     BuildError,
     BuildOptions,
@@ -30,7 +31,6 @@ from luminous_sim.data import (
 )
 from luminous_sim.data.build import MANIFEST, PARTIAL, RUN, SPLITS, _run_job, _Work, run_job
 from luminous_sim.data.manifest import _line
-from luminous_sim.splits import split_entry
 
 REPO = Path(__file__).resolve().parents[2]
 SPLIT = "S+"
@@ -57,11 +57,11 @@ def test_reference_build_has_alfred_trials_splits_and_manifest(reference):
     records = [json.loads(line) for line in (reference / MANIFEST).read_text().splitlines()]
     assert [r["key"] for r in records] == [f"{SPLIT}/{i:06d}" for i in range(N)]
     built = [r for r in records if r["status"] == "built"]
-    assert built, "no episode of the first three of S+ was solved"
+    assert len(built) == N, "every frozen entry is one the oracle solved"
     for r in records:
-        entry = split_entry(SPLIT, r["order"])
-        assert (r["task_type"], r["floor_plan"], r["task_seed"]) == (entry.task_type, entry.floor_plan,
-                                                                      entry.task_seed)
+        entry = benchmark_entry(SPLIT, r["order"])
+        assert (r["task_type"], r["floor_plan"], r["task_seed"], r["episode_key"]) == (
+            entry.task_type, entry.floor_plan, entry.task_seed, entry.episode_key)
     for r in built:
         trial = reference / SPLIT / r["trial"]
         data = json.loads((trial / "traj_data.json").read_text())
@@ -272,17 +272,30 @@ def test_cli_refuses_bad_arguments(tmp_path, capsys):
     assert exc.value.code == 2
 
 
-def test_a_task_type_that_does_not_fit_the_shared_layout_gets_a_room_generated_for_it(tmp_path):
-    # U+ episode 8 is a pick-two task in FloorPlan219's shared layout, which has no two objects of one kind
-    job = SplitJob("U+", 8)
-    entry = split_entry("U+", 8)
-    assert entry.task_type == "pick_two_obj_and_place"
-    outcome = job.run(tmp_path, QUICK)
-    assert outcome.details["fallback_scene"] is True
+def test_a_split_job_writes_the_frozen_episode_and_its_key_in_the_sidecar(tmp_path):
+    entry = benchmark_entry("U+", 8)
+    outcome = SplitJob("U+", 8).run(tmp_path, QUICK)
     assert outcome.trial is not None, outcome.cause
     traj = json.loads((outcome.trial / "traj_data.json").read_text())
-    assert traj["task_type"] == "pick_two_obj_and_place"
-    assert traj["scene"]["floor_plan"] == entry.floor_plan == "FloorPlan219"
+    side = json.loads((outcome.trial / "luminous.json").read_text())
+    assert traj["task_type"] == entry.task_type and traj["pddl_params"] == entry.pddl_params
+    assert traj["scene"]["floor_plan"] == entry.floor_plan
+    init = traj["scene"]["init_action"]
+    assert (init["x"], init["z"], init["rotation"], init["horizon"]) == (entry.start.x, entry.start.y,
+                                                                         entry.start.rotation, entry.start.horizon)
+    assert side["benchmark"]["episode_key"] == entry.episode_key == outcome.details["episode_key"]
+    assert (side["benchmark"]["split"], side["benchmark"]["index"]) == ("U+", 8)
+
+
+def test_a_job_of_a_checkout_that_makes_another_episode_fails_as_version(tmp_path, monkeypatch):
+    from dataclasses import replace
+
+    import luminous_sim.benchmark as bench
+
+    real = bench.benchmark_entry
+    monkeypatch.setattr(bench, "benchmark_entry", lambda s, i: replace(real(s, i), episode_key="0" * 20))
+    outcome = SplitJob("U+", 0).run(tmp_path, QUICK)
+    assert outcome.trial is None and outcome.stage == "version" and "new version" in outcome.cause
 
 
 def test_a_trial_is_synced_once_by_syncfs_or_file_by_file_without_it(tmp_path, monkeypatch):

@@ -1,6 +1,6 @@
-"""Episodes drawn from an evaluation split: the entry's ALFRED structure, layout and task type, the same
-every time; a split named at construction or at reset; clear errors; and an entry with no episode raises
-`EpisodeUnavailable` with its cause instead of being replaced."""
+"""Episodes of a frozen split in the env: `benchmark.entry_episode` of the entry (its layout, task, start and
+initial state), the same every time; a split named at construction or at reset; clear errors; an entry the
+expert cannot solve in this env raises `EpisodeUnavailable` (cause `expert`)."""
 
 from __future__ import annotations
 
@@ -9,57 +9,60 @@ import numpy as np
 import pytest
 
 import luminous_sim  # noqa: F401  (registers the ids)
+from luminous_sim.benchmark import benchmark_entry, benchmark_size
 from luminous_sim.env import UNAVAILABLE_CAUSES, EnvConfig, EpisodeUnavailable
 from luminous_sim.env import episodes as episodes_module
-from luminous_sim.env.episodes import requested_entry, split_round
+from luminous_sim.env.episodes import requested_entry
 from luminous_sim.env.reset_options import ResetOptions, reset_options
-from luminous_sim.errors import InfeasibleSceneError, LuminousError
-from luminous_sim.splits import split_entry
-from luminous_sim.tasks import TaskSamplingError
+from luminous_sim.errors import LuminousError
 
-ENTRY = split_entry("U+", 2)   # examine, FloorPlan219, layout 0
+ENTRY = benchmark_entry("U+", 2)   # examine
 
 
 def alfred(**kwargs):
     return gymnasium.make("Luminous-ALFRED-v1", **kwargs).unwrapped
 
 
-def test_a_split_entry_gives_its_structure_layout_and_task_the_same_every_time():
+def test_a_split_entry_gives_its_layout_task_and_start_the_same_every_time():
     a, b = alfred(), alfred(split="U+")
     obs_a, info_a = a.reset(seed=1, options={"split": "U+", "index": 2})
     obs_b, info_b = b.reset(seed=9, options={"index": 2})   # the env's seed does not enter a split episode
     scene = a.episode.scene
     assert scene.room.name == ENTRY.floor_plan and scene.seed == ENTRY.layout_seed
     assert info_a["task_type"] == ENTRY.task_type and a.episode.expert is not None
+    assert a.world.agent == ENTRY.start and info_a["episode_key"] == ENTRY.episode_key
     assert b.episode.scene == scene and b.episode.goal.to_dict() == a.episode.goal.to_dict()
     assert obs_a["instruction"] == obs_b["instruction"] and np.array_equal(obs_a["rgb"], obs_b["rgb"])
     assert info_a == info_b
     a.close(), b.close()
 
 
-def test_a_plain_reset_of_a_split_env_draws_an_entry_over_a_round():
+def test_a_plain_reset_of_a_split_env_draws_an_entry_of_its_types():
     config = EnvConfig(split="S+")
-    assert split_round("S+") == 7 * 40 and split_round("U+") == 7 * 16
     drawn = [requested_entry(config, ResetOptions(), np.random.default_rng(s)) for s in range(20)]
     assert drawn == [requested_entry(config, ResetOptions(), np.random.default_rng(s)) for s in range(20)]
-    assert all(e is not None and e.split == "S+" and 0 <= e.index < split_round("S+") for e in drawn)
+    assert all(e is not None and e.split == "S+" and 0 <= e.index < benchmark_size("S+") for e in drawn)
     assert len({e.index for e in drawn if e is not None}) > 10
+    heat = EnvConfig(split="U+", task_types=("pick_heat_then_place_in_recep",))
+    picked = [requested_entry(heat, ResetOptions(), np.random.default_rng(s)) for s in range(10)]
+    assert {e.task_type for e in picked if e is not None} == {"pick_heat_then_place_in_recep"}
     assert requested_entry(EnvConfig(), ResetOptions(), np.random.default_rng(0)) is None   # generated on the fly
     options = reset_options({"split": "U+", "index": np.int64(3)}, EnvConfig())
-    assert requested_entry(EnvConfig(), options, np.random.default_rng(0)) == split_entry("U+", 3)
+    assert requested_entry(EnvConfig(), options, np.random.default_rng(0)) == benchmark_entry("U+", 3)
 
 
 @pytest.mark.parametrize("kwargs, options, message", [
     ({}, {"index": 3}, "give 'split' too"),
     ({"split": "U+"}, {"index": True}, "index: expected a whole number"),
     ({"split": "U+"}, {"index": -1}, "index: expected a whole number in 0.*got -1"),
+    ({"split": "U+"}, {"index": 10**6}, "index: 1000000; split U+ holds episodes 0..434"),
     ({}, {"split": "V+", "index": 0}, "split: expected one of S+, U+, U+test, got 'V+'"),
     ({"task_types": ["pick_and_place_simple"]}, {"split": "U+", "index": 2},
      "U+ episode 2 is a look_at_obj_in_light task; this env plays only pick_and_place_simple"),
 ])
 def test_bad_split_requests_are_clear_errors(kwargs, options, message):
     config = EnvConfig(**kwargs)
-    with pytest.raises(LuminousError, match=message.replace("+", r"\+")):
+    with pytest.raises(LuminousError, match=message.replace("+", r"\+").replace("..", r"\.\.")):
         requested_entry(config, reset_options(options, config), np.random.default_rng(0))
 
 
@@ -71,32 +74,13 @@ def test_the_config_refuses_an_unknown_split():
     assert EnvConfig.from_kwargs(EnvConfig(split="U+").to_kwargs()).split == "U+"
 
 
-@pytest.mark.parametrize("cause", ["layout", "no_task"])
-def test_an_entry_with_no_episode_raises_with_its_cause(cause, monkeypatch):
-    def no_layout(*_args):
-        raise InfeasibleSceneError("no valid layout in 8 samples")
-
-    def no_task(*_args):
-        raise TaskSamplingError("no look_at_obj_in_light task fits")
-
-    if cause == "layout":
-        monkeypatch.setattr(episodes_module, "split_scene", no_layout)
-    else:
-        monkeypatch.setattr(episodes_module, "draw_goal", no_task)
+def test_an_entry_the_expert_cannot_solve_in_this_env_is_reported(monkeypatch):
+    monkeypatch.setattr(episodes_module, "_prove", lambda episode, worlds: None)
     env = alfred()
-    with pytest.raises(EpisodeUnavailable) as caught:
+    with pytest.raises(EpisodeUnavailable, match="the expert does not solve") as caught:
         env.reset(options={"split": "U+", "index": 2})
-    assert caught.value.cause == cause and cause in UNAVAILABLE_CAUSES
-    assert caught.value.entry == ENTRY and "U+ episode 2 (look_at_obj_in_light in FloorPlan219" in str(caught.value)
+    assert caught.value.cause == "expert" and UNAVAILABLE_CAUSES == ("expert",)
+    assert caught.value.entry == ENTRY and "U+ episode 2 (look_at_obj_in_light in" in str(caught.value)
     with pytest.raises(gymnasium.error.ResetNeeded):
         env.step(0)
-    env.close()
-
-
-def test_an_entry_the_expert_cannot_solve_is_redrawn_then_reported(monkeypatch):
-    monkeypatch.setattr(episodes_module, "_prove", lambda episode, config: None)
-    env = alfred(scene_attempts=2)
-    with pytest.raises(EpisodeUnavailable, match="the expert solves none of the 2 tasks drawn") as caught:
-        env.reset(options={"split": "U+", "index": 2})
-    assert caught.value.cause == "expert"
     env.close()

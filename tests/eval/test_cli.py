@@ -42,23 +42,31 @@ def test_split_choices_are_the_splits():
     assert SPLITS == tuple(PLUS_SPLITS)
 
 
-def test_the_worked_example_runs_through_the_cli(tmp_path, capsys):
+def test_the_worked_example_runs_through_the_cli_on_the_canonical_build(tmp_path, capsys):
+    build = tmp_path / "canonical"
     code, out, err = run(["eval", "--policy", "luminous_sim.eval.examples:wanderer", "--split", "U+",
-                          "--episodes", "1", "--out", str(tmp_path)], capsys)
+                          "--episodes", "1", "--build", str(build), "--out", str(tmp_path / "o")], capsys)
     assert code == 0, err
-    report = json.loads((tmp_path / "report.json").read_text())
+    assert (build / "manifest.jsonl").is_file() and "canonical U+ build: 1 trials" in err
+    assert not list(build.rglob("*.jpg")), "the evaluation's build has no frames"
+    report = json.loads((tmp_path / "o" / "report.json").read_text())
     assert report["policy"] == "luminous_sim.eval.examples:wanderer" and report["entries"] == 1
     (episode,) = report["episodes"]
     assert episode["end"] in ("stop", "max_failures") and 0 < episode["steps"] <= 41
-    assert "| **All** | **1/1** |" in out and "| Pick | 1/1 |" in (tmp_path / "table.md").read_text()
-    assert (tmp_path / "metrics.png").stat().st_size > 0 and "U+    0 pick_and_place_simple" in err
+    assert episode["trial"].startswith("U+/pick_and_place_simple-") and len(episode["episode_key"]) == 20
+    assert "| **All** | **1/1** |" in out and "| Pick | 1/1 |" in (tmp_path / "o" / "table.md").read_text()
+    assert (tmp_path / "o" / "metrics.png").stat().st_size > 0 and "U+    0 pick_and_place_simple" in err
+    code, out, err = run(["eval", "--policy", "oracle", "--data", str(build), "--out", str(tmp_path / "d")], capsys)
+    assert code == 0, err
+    (episode,) = json.loads((tmp_path / "d" / "report.json").read_text())["episodes"]
+    assert episode["success"] and episode["steps"] == episode["expert_length"]
 
 
 def test_a_users_module_in_the_current_folder(tmp_path, capsys, monkeypatch):
     (tmp_path / "my_agent.py").write_text(USER_AGENT)
     monkeypatch.chdir(tmp_path)
     monkeypatch.setattr(sys, "path", [p for p in sys.path if p not in ("", str(tmp_path))])
-    code, _out, err = run(["eval", "--policy", "my_agent:make", "--split", "U+", "--episodes", "1",
+    code, _out, err = run(["eval", "--policy", "my_agent:make", "--split", "U+", "--episodes", "1", "--live",
                            "--out", "results"], capsys)
     assert code == 0, err
     (episode,) = json.loads((tmp_path / "results" / "report.json").read_text())["episodes"]
@@ -74,10 +82,16 @@ def test_a_users_module_in_the_current_folder(tmp_path, capsys, monkeypatch):
     (["--episodes", "0"], "argument --episodes: expected a whole number from 1 to 100000"),
     (["--address", "10.0.0.1:6379"], "--address 10.0.0.1:6379 is for the ray backend, not local"),
     (["--backend", "dask"], "argument --backend: invalid choice: 'dask'"),
+    (["--live", "--build"], "--live plays the split's entries without a build"),
+    (["--data", "nowhere"], "nowhere: no such file or folder; expected a dataset folder"),
 ])
 def test_bad_specs_are_one_line_errors_with_exit_2(argv, message, tmp_path, capsys):
     args = {"--policy": "random", "--split": "U+", "--episodes": "1", "--out": str(tmp_path / "o")}
+    if argv == ["--live", "--build"]:
+        argv = ["--live", "", "--build", str(tmp_path / "b")]
     args.update(dict(zip(argv[::2], argv[1::2], strict=True)))
-    code, _out, err = run(["eval", *[x for kv in args.items() for x in kv]], capsys)
+    if args.get("--data"):
+        args.pop("--split")
+    code, _out, err = run(["eval", *[x for kv in args.items() for x in (kv if kv[1] else kv[:1])]], capsys)
     assert code == 2 and message in err and "Traceback" not in err
     assert not (tmp_path / "o").exists()

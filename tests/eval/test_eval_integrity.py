@@ -13,21 +13,21 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from luminous_sim.benchmark import benchmark_entry
 from luminous_sim.errors import LuminousError
 from luminous_sim.eval import EpisodeOutcome, evaluate
 from luminous_sim.eval import evaluator as evaluator_module
 from luminous_sim.eval.evaluator import read_outcome
 from luminous_sim.eval.metrics import AGENT_FAULT
-from luminous_sim.splits import split_entry
 from tests.conftest import file_tree
 
 SMALL = {"width": 64, "height": 64}
 INDICES = [2, 0]
 
 
-def _fake_play(env, agent, split, index, seed=0):
+def _fake_play(env, agent, split, index, seed=0, **_where):
     """A played episode in microseconds: what the outcome files hold is what these tests are about."""
-    e = split_entry(split, index)
+    e = benchmark_entry(split, index)
     return EpisodeOutcome(split, index, e.task_type, e.floor_plan, e.layout, end="max_failures",
                           goal_conditions=(0, 1), steps=10 + index, expert_length=40, failures=10,
                           instruction=f"do {index}")

@@ -9,6 +9,7 @@ import re
 
 import pytest
 
+from luminous_sim.benchmark import benchmark_entry
 from luminous_sim.env import EpisodeUnavailable
 from luminous_sim.errors import LuminousError
 from luminous_sim.eval import (
@@ -22,10 +23,9 @@ from luminous_sim.eval import (
     write_reports,
 )
 from luminous_sim.eval.evaluator import outcome_record
-from luminous_sim.splits import split_entry
 
 INDICES = [2, 0]
-"""U+ 2 (examine, FloorPlan219) and U+ 0 (pick and place, FloorPlan10): the quickest for the oracle."""
+"""U+ 2 (examine) and U+ 0 (pick and place)."""
 
 
 @pytest.fixture(scope="module")
@@ -46,7 +46,7 @@ def random_run():
 def test_the_oracle_succeeds_in_expert_length(oracle):
     assert [o.index for o in oracle.outcomes] == INDICES
     for o in oracle.outcomes:
-        entry = split_entry("U+", o.index)
+        entry = benchmark_entry("U+", o.index)
         assert (o.task_type, o.floor_plan, o.layout) == (entry.task_type, entry.floor_plan, entry.layout)
         assert o.end == "success" and o.goal_conditions[0] == o.goal_conditions[1] >= 1
         assert o.steps == o.expert_length > 0 and o.failures == 0
@@ -100,14 +100,14 @@ def test_an_entry_with_no_episode_is_a_reported_failure(monkeypatch):
     import luminous_sim.env.alfred_env as alfred_env
 
     def refuse(config, entry, worlds):
-        raise EpisodeUnavailable(entry, "no_task", "no Spatula anywhere")
+        raise EpisodeUnavailable(entry, "expert", "no Spatula anywhere")
 
     monkeypatch.setattr(alfred_env, "split_episode", refuse)
     report = evaluate("random", "U+", [5])
     (o,) = report.outcomes
-    assert (o.end, o.cause, o.detail, o.task_type) == ("unavailable", "no_task", "no Spatula anywhere",
-                                                        split_entry("U+", 5).task_type)
-    assert report.unavailable() == {"no_task": 1}
+    assert (o.end, o.cause, o.detail, o.task_type) == ("unavailable", "expert", "no Spatula anywhere",
+                                                        benchmark_entry("U+", 5).task_type)
+    assert report.unavailable() == {"expert": 1}
     assert report.overall.sr is None and report.overall.sr_all == 0.0
 
 

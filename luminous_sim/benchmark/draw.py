@@ -1,0 +1,111 @@
+"""One draw of a split's episode in a layout: a task of the type (`planning.draw_task`), a start on the
+reachable floor, ALFRED's set-up; and whether the oracle solves it (the filter ALFRED's generator applies)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from functools import lru_cache
+
+import numpy as np
+
+from luminous_sim.benchmark.counts import Layout
+from luminous_sim.benchmark.key import episode_key
+from luminous_sim.scene import Scene
+from luminous_sim.tasks import TaskInstance
+from luminous_sim.world import AgentPose, World
+
+START_HORIZON = 30
+"""The agent starts looking 30 degrees down, as in ALFRED."""
+
+
+@lru_cache(maxsize=8)
+def layout_scene(floor_plan: str, room_type: str, layout_seed: int) -> Scene:
+    """A split layout: CSSG's default furnishing of `room_type` in the ALFRED structure `floor_plan`.
+
+    Raises:
+        InfeasibleSceneError: CSSG found no valid layout.
+    """
+    from luminous_sim.cssg import empty_cdf, generate
+    from luminous_sim.rooms import load_room
+
+    return generate(empty_cdf(room_type), seed=layout_seed, room=load_room(floor_plan)).scene
+
+
+def scene_of(layout: Layout) -> Scene:
+    """`layout_scene` of a `Layout`."""
+    return layout_scene(layout.floor_plan, layout.room_type, layout.layout_seed)
+
+
+def draw_seed(split_code: int, task_type_index: int, layout: Layout, draw: int) -> int:
+    """The seed of draw `draw` of a task type in a layout."""
+    number = int(layout.floor_plan[len("FloorPlan"):])
+    words = [split_code, 100 + task_type_index, number, layout.layout, draw]
+    return int(np.random.SeedSequence(words).generate_state(1, dtype=np.uint32)[0])
+
+
+def set_up(world: World, task_type: str) -> tuple[str, ...]:
+    """ALFRED's set-up of a world for a task of the type (for cleaning, every dirtyable object that can be
+    picked up is dirty); the objects it made dirty."""
+    from luminous_sim.tasks import alfred_dirty
+
+    dirty = alfred_dirty(world.view().state, task_type)
+    if dirty:
+        world.set_up_dirty(dirty)
+    return dirty
+
+
+@dataclass(frozen=True)
+class Draw:
+    """A drawn episode: its task, start and initial state (the objects made dirty), and its key."""
+
+    task: TaskInstance
+    start: AgentPose
+    dirty: tuple[str, ...]
+    key: str
+
+
+def random_start(world: World, rng: np.random.Generator) -> AgentPose:
+    """A start drawn from `rng`: a reachable floor point, a quarter-turn heading, ALFRED's 30 degree horizon."""
+    points = world.nav.points()
+    x, y = (float(v) for v in points[int(rng.integers(len(points)))])
+    return AgentPose(round(x, 4), round(y, 4), 90 * int(rng.integers(4)), START_HORIZON)
+
+
+def draw(scene: Scene, world: World, task_type: str, seed: int, dirty: tuple[str, ...]) -> Draw:
+    """The episode a seed draws in a world of `scene` set up for `task_type` (the world is not changed).
+
+    Raises:
+        TaskSamplingError: no task of the type fits the layout.
+    """
+    from luminous_sim.planning import draw_task
+
+    rng = np.random.default_rng(seed)
+    task = draw_task(scene, world.view(), task_type, rng)
+    start = random_start(world, rng)
+    return Draw(task, start, dirty, episode_key(scene, task_type, task.params.to_json(), start, dirty))
+
+
+def fresh_world(scene: Scene, task_type: str, start: AgentPose | None = None) -> tuple[World, tuple[str, ...]]:
+    """A new world of `scene` at ALFRED's camera, set up for `task_type`, the agent at `start`."""
+    world = World(scene)
+    dirty = set_up(world, task_type)
+    if start is not None:
+        world.set_start(start)
+    return world, dirty
+
+
+def oracle_solves(scene: Scene, drawn: Draw) -> tuple[bool, str]:
+    """Whether the oracle solves the drawn episode from its start (every goal condition met at the end),
+    and why not."""
+    from luminous_sim.planning import Oracle
+
+    world, _ = fresh_world(scene, drawn.task.task_type, drawn.start)
+    try:
+        traj = Oracle(world, record_frames=False).run(drawn.task.goal)
+        view = world.view()
+        done, total = drawn.task.conditions().alfred_counts(view.state, set(view.visible_objects()))
+    finally:
+        world.close()
+    if traj.success and done == total:
+        return True, ""
+    return False, traj.failures[0] if traj.failures else f"{done}/{total} goal conditions met"
