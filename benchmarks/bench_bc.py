@@ -41,7 +41,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 from luminous_sim.assets.objio import write_atomic
 from luminous_sim.bc import CHECKPOINT_VAR, collect_demos, load_demos, pickup_env, play_pickup, train_bc
 from luminous_sim.eval import EpisodeOutcome, Metrics, make_agent, map_local, metrics
-from luminous_sim.splits import split_entry
+from luminous_sim.benchmark import benchmark_entry
 
 SPLITS = ("S+", "U+")
 FIRST_TRAINING = 28
@@ -156,8 +156,8 @@ def main() -> int:
     print(f"demos: S+ entries {training[0]}..{training[-1]}: {len(demos)} recorded, {unavailable} unavailable; "
           f"{steps} steps, {labelled} labelled (the rest acted on an object in no slot); "
           f"{time.perf_counter() - start:.0f} s (with those kept from an earlier run)")
-    seen_layouts = {(split_entry("S+", i).floor_plan, split_entry("S+", i).layout) for i in training}
-    layouts = {(split_entry("S+", i).floor_plan, split_entry("S+", i).layout) for i in evaluated["S+"]}
+    seen_layouts = {(benchmark_entry("S+", i).floor_plan, benchmark_entry("S+", i).layout) for i in training}
+    layouts = {(benchmark_entry("S+", i).floor_plan, benchmark_entry("S+", i).layout) for i in evaluated["S+"]}
     print(f"held-out S+ entries {_ranges(evaluated['S+'])}: {len(layouts & seen_layouts)} of their "
           f"{len(layouts)} layouts appear in the training demos (S+: seen layouts, other tasks); "
           "no U+ structure does")
@@ -199,7 +199,7 @@ def main() -> int:
         print(f"| bc median [min, max] over {len(seeds)} seeds | | {_spread([m.sr or 0.0 for m in clone])} | "
               f"{_spread([m.gc or 0.0 for m in clone])} | {_spread([m.plw_sr or 0.0 for m in clone])} | "
               f"{_spread([m.plw_gc or 0.0 for m in clone])} | |")
-    known = {(split_entry(d.split, d.index).floor_plan, split_entry(d.split, d.index).layout, d.instruction)
+    known = {(benchmark_entry(d.split, d.index).floor_plan, benchmark_entry(d.split, d.index).layout, d.instruction)
              for d in demos}
     repeated = {o.index for o in outcomes["oracle", "S+"] if (o.floor_plan, o.layout, o.instruction) in known}
     print(f"\n### S+ held-out episodes by whether a training demo has their task: {len(repeated)} of "

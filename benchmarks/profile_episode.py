@@ -114,7 +114,8 @@ def _import_all() -> None:
 def run_once(split: str, count: int, profile: Any = None) -> tuple[dict[str, float], float, int, dict[str, int]]:
     """(exclusive CPU seconds per stage, total CPU seconds, trials built, calls per stage) of one pass over
     the episodes."""
-    from luminous_sim.data.build import BuildOptions, _run_job, layout_scene, split_jobs
+    from luminous_sim.benchmark import layout_scene
+    from luminous_sim.data.build import BuildOptions, _run_job, split_jobs
 
     _import_all()
     layout_scene.cache_clear()

@@ -102,7 +102,8 @@ class StepReader:
         rows, cols = np.ogrid[:height, :width]
         ahead = (rows - 0.65 * height) ** 2 + (cols - 0.5 * width) ** 2 <= (0.15 * min(height, width)) ** 2
         self.ahead_rle = mask_to_rle(ahead)
-        self.goal, self.steps, self.k, self.spent, self.last = "", [], 0, 0, ""
+        self.steps: list[str] = []
+        self.goal, self.k, self.spent, self.last = "", 0, 0, ""
 
     def reset(self, instruction: str, info: dict[str, Any]) -> None:
         self.goal = instruction                          # the goal directive
