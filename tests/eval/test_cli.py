@@ -95,3 +95,24 @@ def test_bad_specs_are_one_line_errors_with_exit_2(argv, message, tmp_path, caps
     code, _out, err = run(["eval", *[x for kv in args.items() for x in (kv if kv[1] else kv[:1])]], capsys)
     assert code == 2 and message in err and "Traceback" not in err
     assert not (tmp_path / "o").exists()
+
+
+def test_the_step_reader_follows_the_step_instructions_in_order():
+    from luminous_sim.env import LuminousEnv
+    from luminous_sim.eval import AgentContext
+    from luminous_sim.eval.examples import WALK, step_action, step_reader
+
+    env = LuminousEnv(width=64, height=64, task_types=["pick_and_place_simple"])
+    agent = step_reader(AgentContext(env.action_space, env.observation_space, env.actions, env.config))
+    env.close()
+    assert step_action("Pick up the mug.") == "PickupObject" and step_action("Go left to the sink.") == ""
+    agent.reset("put a mug in the sink", {"high_descs": ["Go to the counter.", "Pick up the mug.",
+                                                          "Put the mug in the sink."], "episode_seed": 0})
+    ok = {"failure_code": None}
+    walked = [agent.act({}, ok) for _ in range(WALK + 1)]
+    assert walked[:WALK] == [env.actions.index("MoveAhead")] * WALK
+    tried = agent.act({}, ok)
+    assert tried["action"] == "PickupObject" and tried["mask"]
+    put = agent.act({}, ok)   # the pick up worked: on to the next step
+    assert put["action"] == "PutObject"
+    assert agent.act({}, ok) == {"action": "Stop"}   # the put worked and the steps ran out
