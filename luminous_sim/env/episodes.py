@@ -17,18 +17,17 @@ holds only episodes the oracle solved); with `verify_expert`, an expert that doe
 from __future__ import annotations
 
 from dataclasses import dataclass
-from pathlib import Path
 from typing import Any
 
 import numpy as np
 
 from luminous_sim.benchmark import (
     BenchmarkEntry,
+    TrialEpisode,
     benchmark_entries,
     benchmark_entry,
     entry_episode,
     episode_key,
-    read_trial,
 )
 from luminous_sim.env.config import EnvConfig
 from luminous_sim.env.goals import ExpertPlan, Goal
@@ -277,18 +276,15 @@ def split_episode(config: EnvConfig, entry: BenchmarkEntry, worlds: WorldPool) -
     return Episode(made.scene, episode.goal, made.dirty, plan, start=made.start), world
 
 
-def trial_episode(config: EnvConfig, path: str, worlds: WorldPool) -> tuple[Episode, World]:
-    """The episode of a built trial folder, restored from its files alone (`benchmark.read_trial`): its
+def trial_episode(config: EnvConfig, trial: TrialEpisode, worlds: WorldPool) -> tuple[Episode, World]:
+    """The episode of a built trial, restored from its files alone (`benchmark.read_trial`): its
     scene, task, start and ALFRED's set-up; the goal reads annotation 0's directive, and the expert's plan is
     the recorded one (its length is L*, its steps the annotation's step instructions), as ALFRED's evaluation
     takes L* from the trajectory it replays.
 
-    Raises:
-        TrialError: a file or field of the trial that cannot be read (named).
     """
     from luminous_sim.env.goals import TaskGoal
 
-    trial = read_trial(Path(path))
     world = worlds.get(trial.scene)
     dirty = set_up_world(world, trial.task.task_type) if trial.dirty_and_empty else ()
     world.set_start(trial.start)

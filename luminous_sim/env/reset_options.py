@@ -21,13 +21,16 @@ import os
 from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from luminous_sim.env.config import MAX_CDF_FILES, EnvConfig, short_repr
 from luminous_sim.errors import LuminousError
 from luminous_sim.scene import Scene
+
+if TYPE_CHECKING:
+    from luminous_sim.benchmark import TrialEpisode
 
 RESET_OPTIONS: tuple[str, ...] = ("scene", "split", "index", "trial", "cdf", "scene_seed")
 """The keys `reset(options=...)` knows."""
@@ -45,7 +48,7 @@ class ResetOptions:
         scene: play in this scene.
         split: play an entry of this split ("" for none given).
         index: the entry of `split` (else of the env's split) to play; None to draw one.
-        trial: restore the episode of this built trial folder ("" for none given).
+        trial: the episode of a built trial folder, read from its files (None for none given).
         cdf: generate the scene from one of these CDF files (() for none given).
         scene_seed: the seed to generate the CDF's scene with; None to draw one.
     """
@@ -55,7 +58,7 @@ class ResetOptions:
     index: int | None = None
     cdf: tuple[str, ...] = ()
     scene_seed: int | None = None
-    trial: str = ""
+    trial: TrialEpisode | None = None
 
     @property
     def source(self) -> str:
@@ -64,7 +67,7 @@ class ResetOptions:
             return "scene"
         if self.split or self.index is not None:
             return "split"
-        if self.trial:
+        if self.trial is not None:
             return "trial"
         if self.cdf or self.scene_seed is not None:
             return "cdf"
@@ -110,7 +113,7 @@ def reset_options(options: Any, config: EnvConfig) -> ResetOptions:
         if index >= size:
             raise LuminousError(f"reset options index: {index}; split {split or config.split} holds episodes "
                                 f"0..{size - 1}")
-    trial = _trial(given["trial"]) if "trial" in given else ""
+    trial = _trial(given["trial"]) if "trial" in given else None
     cdf = _cdf(given["cdf"]) if "cdf" in given else ()
     seed = _whole("scene_seed", given["scene_seed"]) if "scene_seed" in given else None
     if seed is not None and not (cdf or config.cdf):
@@ -119,13 +122,19 @@ def reset_options(options: Any, config: EnvConfig) -> ResetOptions:
     return ResetOptions(scene, split, index, cdf, seed, trial)
 
 
-def _trial(value: Any) -> str:
+def _trial(value: Any) -> TrialEpisode:
+    """The trial a `trial` option names, read (so that a malformed one is refused before the reset starts)."""
+    from luminous_sim.benchmark import TrialError, read_trial
+
     if not isinstance(value, (str, os.PathLike)):
         raise LuminousError(f"reset options trial: expected a trial folder's path, got {short_repr(value)}")
     path = Path(value)
     if not (path / "traj_data.json").is_file():
         raise LuminousError(f"reset options trial: {path} holds no traj_data.json; expected a built trial's folder")
-    return str(path)
+    try:
+        return read_trial(path)
+    except TrialError as exc:
+        raise LuminousError(f"reset options trial: {exc}") from None
 
 
 def _split(value: Any) -> str:

@@ -59,5 +59,12 @@ def test_reset_options_name_a_bad_trial_and_an_index_outside_the_split(tmp_path)
             env.reset(options={"split": "U+", "index": 435})
         with pytest.raises(LuminousError, match="exclude each other"):
             env.reset(options={"split": "U+", "trial": str(tmp_path)})
+        (tmp_path / "traj_data.json").write_text("{}")
+        (tmp_path / "luminous.json").write_text("{}")
+        with pytest.raises(LuminousError, match="trial: .*traj_data.json: field 'task_type' is missing"):
+            env.reset(options={"trial": str(tmp_path)})
+        (tmp_path / "traj_data.json").write_text("[1, 2")
+        with pytest.raises(LuminousError, match="traj_data.json: not JSON"):
+            env.reset(options={"trial": str(tmp_path)})
     finally:
         env.close()
