@@ -11,6 +11,7 @@ import os
 import stat
 from dataclasses import dataclass
 from enum import StrEnum
+from typing import Any
 
 
 class FailureCode(StrEnum):
@@ -171,3 +172,26 @@ def path_kind(path: str | os.PathLike[str]) -> str:
 def link_or_kind(path: str | os.PathLike[str]) -> str:
     """`path_kind`'s words, or "a symbolic link" for a link (which builds and evaluations never follow)."""
     return "a symbolic link" if os.path.islink(path) else path_kind(path)
+
+
+def read_json_file(path: str | os.PathLike[str], limit: int, what: str,
+                   error: type[LuminousError] = LuminousError) -> Any:
+    """The JSON value of the regular file `path` (never followed through a link) of at most `limit` bytes.
+
+    Raises:
+        error: a link, not a regular file, over `limit` bytes, or not JSON; the message names the file and
+            says it was expected to be `what` (e.g. "an episode outcome file").
+    """
+    import json
+
+    if os.path.islink(path) or not os.path.isfile(path):
+        raise error(f"{path}: {link_or_kind(path)}; expected {what}")
+    size = os.stat(path).st_size
+    if size > limit:
+        raise error(f"{path}: {size} bytes; {what} holds at most {limit}")
+    with open(path, "rb") as fh:
+        raw = fh.read(limit + 1)
+    try:
+        return json.loads(raw)
+    except (ValueError, RecursionError) as exc:
+        raise error(f"{path}: not JSON ({exc})") from None

@@ -11,7 +11,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from luminous_sim.errors import LuminousError, link_or_kind
+from luminous_sim.errors import LuminousError, read_json_file
 from luminous_sim.limits import MAX_INPUT_BYTES
 from luminous_sim.scene import Scene
 from luminous_sim.tasks import PddlParams, TaskInstance
@@ -49,16 +49,8 @@ class TrialEpisode:
 
 
 def _read_json(path: Path) -> Any:
-    if path.is_symlink() or not path.is_file():
-        raise TrialError(f"{path}: {link_or_kind(path)}; expected a trial's {path.name}")
-    size = path.stat().st_size
-    if size > MAX_INPUT_BYTES:
-        raise TrialError(f"{path}: {size} bytes; a trial file holds at most {MAX_INPUT_BYTES} "
-                         "(luminous_sim.limits.MAX_INPUT_BYTES)")
-    try:
-        return json.loads(path.read_bytes())
-    except (ValueError, RecursionError) as exc:
-        raise TrialError(f"{path}: not JSON ({exc})") from None
+    return read_json_file(path, MAX_INPUT_BYTES, f"a trial's {path.name} (luminous_sim.limits.MAX_INPUT_BYTES)",
+                          TrialError)
 
 
 def _field(data: Any, where: Path, *names: str) -> Any:

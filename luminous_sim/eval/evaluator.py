@@ -38,7 +38,7 @@ from luminous_sim.assets.objio import write_atomic
 from luminous_sim.benchmark import benchmark_entry, benchmark_size
 from luminous_sim.data.backends import Backend
 from luminous_sim.env import EnvConfig, EpisodeUnavailable, LuminousEnv
-from luminous_sim.errors import LuminousError, link_or_kind
+from luminous_sim.errors import LuminousError, link_or_kind, read_json_file
 from luminous_sim.eval.metrics import AGENT_FAULT, EpisodeOutcome, Metrics, metrics, metrics_by_type
 from luminous_sim.eval.policies import Agent, PolicyError, ReplayAgent, check_policy, make_agent
 from luminous_sim.eval.workers import map_local, map_ordered
@@ -264,16 +264,8 @@ def read_outcome(path: Path, split: str, index: int, job: EpisodeJob | None = No
             JSON, a field missing or of the wrong kind, its `check` missing or not the digest of its other
             fields (an edit), or another episode's outcome; the message names the file and the field.
     """
-    if path.is_symlink() or not path.is_file():
-        raise LuminousError(f"{path}: {link_or_kind(path)}; expected an episode outcome file")
-    size = path.stat().st_size
-    if size > MAX_EPISODE_FILE_BYTES:
-        raise LuminousError(f"{path}: {size} bytes; an episode outcome file holds at most {MAX_EPISODE_FILE_BYTES} "
-                            "(luminous_sim.limits.MAX_EPISODE_FILE_BYTES)")
-    try:
-        data = json.loads(path.read_bytes())
-    except (ValueError, RecursionError) as exc:
-        raise LuminousError(f"{path}: not JSON ({exc})") from None
+    data = read_json_file(path, MAX_EPISODE_FILE_BYTES,
+                          "an episode outcome file (luminous_sim.limits.MAX_EPISODE_FILE_BYTES)")
     recorded = data.pop(CHECK, None) if isinstance(data, dict) else None
     outcome = EpisodeOutcome.from_dict(data, str(path))
     if recorded is None:
