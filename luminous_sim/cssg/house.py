@@ -85,14 +85,14 @@ def generate_house(cdf: ChallengeDefinition, seed: int = 0, catalog: Catalog | N
     if house is None:
         raise CDFError(f"CDF {cdf.name or ''}: scene.house is not set; expected a house (rooms, adjacency)")
     catalog = catalog or default_catalog()
-    requests = [RoomRequest(r.name, r.type, r.min_area, r.max_area) for r in house.rooms]
+    requests = [RoomRequest(r.name, r.type, r.min_area, r.max_area, r.shape or "rect") for r in house.rooms]
     size = (house.size.width, house.size.depth) if house.size is not None else None
     why = ""
     for redraw in range(PLAN_REDRAWS):
         stream = [seed, PLAN_STREAM] + ([redraw] if redraw else [])
         try:
             plan = plan_house(requests, np.random.default_rng(np.random.SeedSequence(stream)), size=size,
-                              adjacency=house.adjacency, name=cdf.name or "house")
+                              adjacency=house.adjacency, name=cdf.name or "house", front_door=house.front_door)
         except RoomError as exc:
             raise InfeasibleSceneError(f"CDF {cdf.name or ''}: scene.house: {exc}") from None
         furnished = _furnish(cdf, seed, plan, requests, catalog, redraw)
