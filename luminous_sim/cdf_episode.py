@@ -68,15 +68,18 @@ def run_document(doc: ChallengeDefinition, source: str, seed: int = 0, out_dir: 
     if doc.task is None:
         raise CDFValidationError(source, [Issue("task", "the CDF has no task section; expected task.goal "
                                                 "(and optionally task.initial, task.agent, execution)")])
-    shell = _room(doc, room, seed, source)
-    _check_start(doc, shell, source)
-    try:
-        scene = generate(doc, seed=seed, room=shell).scene
-    except InfeasibleSceneError as exc:
-        raise InfeasibleSceneError(f"{source}: {exc}") from None
-    except CDFError as exc:  # sizes no asset meets
-        raise CDFError(f"{source}: {exc}") from None
-    outside = start_outside(doc, scene.room)  # a procedural room is only known now
+    if doc.scene.house is not None:
+        scene = _house_scene(doc, room, seed, source)
+    else:
+        shell = _room(doc, room, seed, source)
+        _check_start(doc, shell, source)
+        try:
+            scene = generate(doc, seed=seed, room=shell).scene
+        except InfeasibleSceneError as exc:
+            raise InfeasibleSceneError(f"{source}: {exc}") from None
+        except CDFError as exc:  # sizes no asset meets
+            raise CDFError(f"{source}: {exc}") from None
+    outside = start_outside(doc, scene.room)  # a procedural room or a house is only known now
     if outside:
         raise CDFValidationError(source, [Issue("task.agent.position", outside)])
     try:
@@ -92,6 +95,32 @@ def run_document(doc: ChallengeDefinition, source: str, seed: int = 0, out_dir: 
     except PlanningError as exc:  # a script step that cannot even be stated in this scene
         raise CDFValidationError(source, [Issue("execution", str(exc))]) from None
     return CdfEpisode(result, scene, task, script is not None)
+
+
+def _house_scene(doc: ChallengeDefinition, room: str | RoomShell | None, seed: int, source: str) -> Scene:
+    """The house a house CDF describes (its floor plan drawn from the seed); a start outside the outline, when
+    the CDF gives one, is refused before anything is generated."""
+    from luminous_sim.cssg import generate_house
+
+    house = doc.scene.house
+    assert house is not None
+    if room is not None:
+        name = room if isinstance(room, str) else room.name
+        raise CDFError(f"{source}: scene.house draws its own rooms; expected no --room (room {name!r} was given)")
+    agent = doc.task.agent if doc.task is not None else None
+    if house.size is not None and agent is not None and agent.position is not None:
+        x, y = agent.position
+        w, d = house.size.width, house.size.depth
+        if not (0 < x < w and 0 < y < d):
+            raise CDFValidationError(source, [Issue("task.agent.position", f"({x:g}, {y:g}) is outside the house "
+                                                    f"(x 0..{w:g}, y 0..{d:g} m, scene.house.size); expected a "
+                                                    "start inside a room, in house coordinates")])
+    try:
+        return generate_house(doc, seed=seed).scene
+    except InfeasibleSceneError as exc:
+        raise InfeasibleSceneError(f"{source}: {exc}") from None
+    except CDFError as exc:
+        raise CDFError(f"{source}: {exc}") from None
 
 
 def _room(doc: ChallengeDefinition, room: str | RoomShell | None, seed: int, source: str) -> RoomShell | None:

@@ -1,6 +1,10 @@
-"""Cross-field checks of a CDF's house (`scene.house`): room names, adjacency, sizes that cannot fit.
+"""Cross-field checks of a CDF's house (`scene.house`): room names, adjacency, sizes that cannot fit, the
+front door's room, and each room's objects and relations.
 
-Each problem is an Issue with the key path of the offending value; `validate.check` runs these.
+A room's `objects` and `relations` are checked by the room CDF's own checks (`validate.check` on a room CDF
+holding that section), their key paths moved under `scene.house.rooms[i]`; on top, an object name is unique
+across the house and a relation names objects of its own room only. Each problem is an Issue with the key
+path of the offending value; `validate.check` runs these.
 """
 
 from __future__ import annotations
@@ -12,9 +16,9 @@ from luminous_sim.cdf.issues import Issue
 from luminous_sim.cdf.schema import MIN_ROOM_AREA
 
 if TYPE_CHECKING:
-    from luminous_sim.cdf.schema import ChallengeDefinition, HouseSpec
+    from luminous_sim.cdf.schema import ChallengeDefinition, HouseRoomSpec, HouseSpec, ObjectSpec
 
-__all__ = ["check_house"]
+__all__ = ["check_house", "house_names", "room_cdf"]
 
 
 def check_house(cdf: ChallengeDefinition) -> list[Issue]:
@@ -26,6 +30,8 @@ def check_house(cdf: ChallengeDefinition) -> list[Issue]:
     names = _room_names(house, issues)
     issues += _adjacency(house, names)
     issues += _sizes(house)
+    issues += _front_door(house, names)
+    issues += _room_sections(house)
     types = set(cdf.scene.room_type)
     for i, room in enumerate(house.rooms):
         if room.type not in types:
@@ -35,16 +41,85 @@ def check_house(cdf: ChallengeDefinition) -> list[Issue]:
     return issues
 
 
+def house_names(cdf: ChallengeDefinition) -> dict[str, ObjectSpec]:
+    """Every object a house's rooms declare, by name (the first of a repeated name); empty without a house."""
+    out: dict[str, ObjectSpec] = {}
+    for room in cdf.scene.house.rooms if cdf.scene.house is not None else ():
+        for obj in room.objects:
+            out.setdefault(obj.name, obj)
+    return out
+
+
+def room_cdf(room: HouseRoomSpec) -> ChallengeDefinition:
+    """A room CDF holding one house room's section (its type, objects and relations), not validated again."""
+    from luminous_sim.cdf.schema import ChallengeDefinition, SceneSpec
+
+    scene = SceneSpec.model_construct(room_type=(room.type,), room=None, objects=room.objects,
+                                      relations=room.relations, house=None)
+    return ChallengeDefinition.model_construct(cdf_version=2, name=room.name, description=None, scene=scene,
+                                               task=None, execution=None)
+
+
 def _beside_house(cdf: ChallengeDefinition) -> list[Issue]:
-    """What a house CDF may not hold: a single room, objects or relations (its rooms are furnished by
-    their room types' rules)."""
+    """What a house CDF may not hold: a single room, objects or relations outside its rooms."""
     issues = []
     if cdf.scene.room is not None:
         issues.append(Issue("scene.room", "a house draws its own rooms; expected no scene.room beside scene.house"))
     for key in ("objects", "relations"):
         if getattr(cdf.scene, key):
-            issues.append(Issue(f"scene.{key}", f"a house's rooms are furnished by their room types' rules; "
-                                f"expected no scene.{key} beside scene.house"))
+            issues.append(Issue(f"scene.{key}", f"a house's objects and relations belong to its rooms; expected "
+                                f"scene.house.rooms[i].{key} instead of scene.{key} beside scene.house"))
+    return issues
+
+
+def _front_door(house: HouseSpec, names: list[str]) -> list[Issue]:
+    if house.front_door is None or house.front_door in names:
+        return []
+    hint = difflib.get_close_matches(house.front_door, names, n=1)
+    extra = f"; did you mean {hint[0]!r}?" if hint else ""
+    return [Issue("scene.house.front_door", f"unknown room {house.front_door!r}{extra} (expected a name in "
+                  f"scene.house.rooms: {', '.join(names)})")]
+
+
+def _room_sections(house: HouseSpec) -> list[Issue]:
+    """Each room's objects and relations: names unique across the house, relations within their room, and
+    the room CDF's own checks (paths moved under the room)."""
+    from luminous_sim.cdf.relations import STRUCTURE_ELEMENTS
+    from luminous_sim.cdf.validate import check
+
+    issues: list[Issue] = []
+    owner: dict[str, tuple[int, str]] = {}
+    for i, room in enumerate(house.rooms):
+        for j, obj in enumerate(room.objects):
+            if obj.name in owner and owner[obj.name][0] != i:
+                k, other = owner[obj.name]
+                issues.append(Issue(f"scene.house.rooms[{i}].objects[{j}].name",
+                                    f"{obj.name!r} is already an object of room {other!r} (scene.house.rooms[{k}]); "
+                                    "expected object names unique across the house"))
+            owner.setdefault(obj.name, (i, room.name))
+    for i, room in enumerate(house.rooms):
+        if not room.objects and not room.relations:
+            continue
+        here = f"scene.house.rooms[{i}]"
+        mine = {o.name for o in room.objects}
+        elsewhere: set[int] = set()
+        for j, rel in enumerate(room.relations):
+            for key in ("subject", "target"):
+                name = getattr(rel, key)
+                if name is None or name in mine or name in STRUCTURE_ELEMENTS or name not in owner:
+                    continue
+                elsewhere.add(j)
+                k, other = owner[name]
+                issues.append(Issue(f"{here}.relations[{j}].{key}",
+                                    f"{name!r} is an object of room {other!r} (scene.house.rooms[{k}]), not of room "
+                                    f"{room.name!r}; a relation holds within one room (expected an object of "
+                                    f"{here}.objects{' or a room element' if key == 'target' else ''})"))
+        for issue in check(room_cdf(room)):
+            path = here + issue.path.removeprefix("scene")
+            if any(issue.path.startswith(f"scene.relations[{j}]") for j in elsewhere):
+                continue
+            message = issue.message.replace("scene.objects", f"{here}.objects (room {room.name!r})")
+            issues.append(Issue(path, message))
     return issues
 
 

@@ -274,7 +274,9 @@ _ROOM_TYPE_SCHEMA = {
 
 
 class HouseRoomSpec(_Model):
-    """One room of a house: its name (used by `adjacency`), its type and optional floor-area bounds."""
+    """One room of a house: its name (used by `adjacency`), its type, optional floor-area bounds and shape,
+    and the objects and relations CSSG must realise in it (as a room CDF's `scene.objects` and
+    `scene.relations`; a relation names objects of this room only)."""
 
     model_config = ConfigDict(title="HouseRoom")
 
@@ -285,6 +287,10 @@ class HouseRoomSpec(_Model):
         Field(None, description="m^2")
     max_area: Annotated[float, Field(ge=MIN_ROOM_AREA, le=MAX_HOUSE_SIDE ** 2, allow_inf_nan=False)] | None = \
         Field(None, description="m^2")
+    shape: Literal["rect", "L"] | None = Field(
+        None, description="rect (default) or L: the room's rectangle loses a corner of the house outline")
+    objects: Annotated[tuple[ObjectSpec, ...], Field(max_length=MAX_CDF_INSTANCES)] = ()
+    relations: Annotated[tuple[Relation, ...], Field(max_length=MAX_CDF_RELATIONS)] = ()
 
 
 class HouseSize(_Model):
@@ -308,6 +314,8 @@ class HouseSpec(_Model):
     adjacency: tuple[tuple[Name, Name], ...] = Field(
         (), description="pairs of room names joined by a door (so they share a wall)")
     size: HouseSize | None = Field(None, description="the outline; default: from the rooms' areas")
+    front_door: Name | None = Field(
+        None, description="the room whose outside wall holds the front door; default: the first room")
 
 
 def _house_room_types(data: Any) -> Any:
@@ -526,8 +534,14 @@ class ChallengeDefinition(_Model):
         return self
 
     def object_named(self, name: str) -> ObjectSpec | None:
-        """The declared object called `name`, if any."""
-        for obj in self.scene.objects:
+        """The declared object called `name`, if any (in `scene.objects`, or in a house's rooms)."""
+        for obj in self.all_objects():
             if obj.name == name:
                 return obj
         return None
+
+    def all_objects(self) -> tuple[ObjectSpec, ...]:
+        """Every declared object: `scene.objects`, then each house room's, in order."""
+        house = self.scene.house
+        rooms = house.rooms if house is not None else ()
+        return self.scene.objects + tuple(o for r in rooms for o in r.objects)

@@ -21,6 +21,8 @@ def summarize(cdf: ChallengeDefinition, limit: int = 80) -> str:
         size = (f"{scene.house.size.width:g} x {scene.house.size.depth:g} m" if scene.house.size
                 else "size from the rooms")
         lines = [f"house: {len(scene.house.rooms)} rooms: {rooms}; {len(scene.house.adjacency)} doorways asked; {size}"]
+        lines += [f"room {r.name}: {len(r.objects)} objects ({sum(o.count for o in r.objects)} instances), "
+                  f"{len(r.relations)} relations" for r in scene.house.rooms if r.objects or r.relations]
     if cdf.task is not None:
         goal = to_sexpr(cdf.task.goal)
         goal = goal if len(goal) <= limit else goal[: limit - 3] + "..."

@@ -20,7 +20,7 @@ from luminous_sim.cdf.affordances import (
 from luminous_sim.cdf.bounds import size_issues
 from luminous_sim.cdf.contradictions import find_conflicts
 from luminous_sim.cdf.graph import find_axis_contradiction, find_fixed_cycle
-from luminous_sim.cdf.house import check_house
+from luminous_sim.cdf.house import check_house, house_names
 from luminous_sim.cdf.issues import CDFValidationError, Issue
 from luminous_sim.cdf.predicates import (
     PREDICATES,
@@ -92,10 +92,13 @@ def check(cdf: ChallengeDefinition) -> list[Issue]:
 
     A document over the size limits (`bounds.size_issues`) gets only those issues: nothing else is checked.
     """
-    too_large = size_issues((o.count for o in cdf.scene.objects), len(cdf.scene.relations), len(cdf.execution or ()))
+    rooms = cdf.scene.house.rooms if cdf.scene.house is not None else ()
+    too_large = size_issues((o.count for o in cdf.all_objects()),
+                            len(cdf.scene.relations) + sum(len(r.relations) for r in rooms), len(cdf.execution or ()))
     if too_large:
         return too_large
     names, issues = _check_objects(cdf.scene.objects)
+    names.update(house_names(cdf))
     issues += _check_room(cdf)
     issues += check_house(cdf)
     issues += _check_relations(cdf, names)

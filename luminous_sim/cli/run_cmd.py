@@ -33,7 +33,8 @@ def _run(args: argparse.Namespace) -> int:
     ran = run_cdf(args.cdf, args.seed, args.out, room=args.room, follow_script=not args.plan)
     r = ran.result
     how = "following its execution script" if ran.scripted else "planned by the oracle"
-    print(f"{args.cdf}: {'task done' if r.success else 'task NOT done'} in room {ran.scene.room.name} "
+    where = "house" if ran.scene.room.house is not None else "room"
+    print(f"{args.cdf}: {'task done' if r.success else 'task NOT done'} in {where} {ran.scene.room.name} "
           f"(seed {args.seed}), {how}")
     print(f"  goal: {r.goal}")
     print(f"  goal conditions: {r.goal_conditions[0]}/{r.goal_conditions[1]}; {r.low_actions} low-level actions")

@@ -16,9 +16,12 @@ from typing import Any
 import numpy as np
 
 from luminous_sim.assets.catalog import Catalog, default_catalog
-from luminous_sim.cdf.schema import ChallengeDefinition
+from luminous_sim.cdf.house import room_cdf
+from luminous_sim.cdf.predicates import And, Atom, Exists, Expr, Param, atoms, is_variable
+from luminous_sim.cdf.schema import ChallengeDefinition, Task
 from luminous_sim.cssg.baseline import empty_cdf
 from luminous_sim.cssg.pipeline import Generated, generate
+from luminous_sim.cssg.requests import PUT_PREDICATES
 from luminous_sim.cssg.validate import LayoutReport
 from luminous_sim.errors import CDFError, InfeasibleSceneError, RoomError
 from luminous_sim.rooms.house import FloorPlan, RoomRequest, plan_house
@@ -82,14 +85,14 @@ def generate_house(cdf: ChallengeDefinition, seed: int = 0, catalog: Catalog | N
     if house is None:
         raise CDFError(f"CDF {cdf.name or ''}: scene.house is not set; expected a house (rooms, adjacency)")
     catalog = catalog or default_catalog()
-    requests = [RoomRequest(r.name, r.type, r.min_area, r.max_area) for r in house.rooms]
+    requests = [RoomRequest(r.name, r.type, r.min_area, r.max_area, r.shape or "rect") for r in house.rooms]
     size = (house.size.width, house.size.depth) if house.size is not None else None
     why = ""
     for redraw in range(PLAN_REDRAWS):
         stream = [seed, PLAN_STREAM] + ([redraw] if redraw else [])
         try:
             plan = plan_house(requests, np.random.default_rng(np.random.SeedSequence(stream)), size=size,
-                              adjacency=house.adjacency, name=cdf.name or "house")
+                              adjacency=house.adjacency, name=cdf.name or "house", front_door=house.front_door)
         except RoomError as exc:
             raise InfeasibleSceneError(f"CDF {cdf.name or ''}: scene.house: {exc}") from None
         furnished = _furnish(cdf, seed, plan, requests, catalog, redraw)
@@ -112,7 +115,7 @@ def _furnish(cdf: ChallengeDefinition, seed: int, plan: FloorPlan, requests: lis
                 continue
             sub = _room_seed(seed, i, redraws[req.name], plan_redraw)
             try:
-                rooms[req.name] = generate(empty_cdf(req.room_type), seed=sub, room=shell, catalog=catalog)
+                rooms[req.name] = generate(room_request(cdf, i), seed=sub, room=shell, catalog=catalog)
             except InfeasibleSceneError as exc:
                 return f"house room {req.name!r} ({req.room_type}): {exc}"
         scene = _assemble(cdf, seed, plan, rooms, redraws, plan_redraw)
@@ -131,6 +134,43 @@ def _furnish(cdf: ChallengeDefinition, seed: int, plan: FloorPlan, requests: lis
     seeds = {r.name: _room_seed(seed, i, redraws[r.name], plan_redraw) for i, r in enumerate(requests)}
     report = HouseReport({n: g.report for n, g in rooms.items()}, len(grid), reached, seeds, plan_redraw)
     return HouseGenerated(scene, plan, report)
+
+
+def room_request(cdf: ChallengeDefinition, index: int) -> ChallengeDefinition:
+    """What CSSG is asked for in the house's room `index`: its own objects and relations (a room CDF), and
+    the puts of the house's goal into its receptacles (so that they keep room for them); with neither, the
+    room type's defaults alone (`empty_cdf`)."""
+    house = cdf.scene.house
+    assert house is not None
+    room = house.rooms[index]
+    goal = _room_puts(cdf, {o.name for o in room.objects})
+    if not room.objects and not room.relations and goal is None:
+        return empty_cdf(room.type)
+    doc = room_cdf(room)
+    if goal is None:
+        return doc
+    return doc.model_copy(update={"task": Task.model_construct(type=None, agent=None, initial=None, goal=goal)})
+
+
+def _room_puts(cdf: ChallengeDefinition, mine: set[str]) -> Expr | None:
+    """The house goal's puts into receptacles named in this room, other rooms' objects standing as typed
+    variables (`requests.goal_holds` reads them); None when the goal puts nothing here."""
+    if cdf.task is None:
+        return None
+    parts: list[Expr] = []
+    for atom, scope in atoms(cdf.task.goal):
+        if atom.pred not in PUT_PREDICATES or len(atom.args) != 2 or atom.args[1] not in mine:
+            continue
+        what = atom.args[0]
+        if what in mine:
+            parts.append(atom)
+            continue
+        spec = cdf.object_named(what)
+        kind = scope.get(what) if is_variable(what) else spec.type if spec is not None else None
+        if kind:
+            var = what if is_variable(what) else "?held"
+            parts.append(Exists((Param(var, kind),), Atom(atom.pred, (var, atom.args[1]))))
+    return And(tuple(parts)) if parts else None
 
 
 def _all_in(points: np.ndarray, keys: set[tuple[int, int]]) -> bool:

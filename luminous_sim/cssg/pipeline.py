@@ -78,11 +78,26 @@ def start_outside(cdf: ChallengeDefinition, shell: RoomShell) -> str | None:
     if agent is None or agent.position is None:
         return None
     x, y = agent.position
+    if shell.house is not None:
+        return _outside_rooms(x, y, shell)
     if shell.polygon().contains(Point(x, y)):
         return None
     minx, miny, maxx, maxy = shell.bounds
     return (f"({x:g}, {y:g}) is outside room {shell.name!r} (x {minx:g}..{maxx:g}, y {miny:g}..{maxy:g} m); "
             "expected a start inside its floor outline")
+
+
+def _outside_rooms(x: float, y: float, shell: RoomShell) -> str | None:
+    """Why (x, y) lies on no room's floor of a house (in a wall, or outside), or None when it does."""
+    from shapely.geometry import Point
+
+    assert shell.house is not None
+    if any(r.polygon().contains(Point(x, y)) for r in shell.house.rooms):
+        return None
+    rooms = "; ".join(f"{r.name} x {b[0]:g}..{b[2]:g}, y {b[1]:g}..{b[3]:g}"
+                      for r in shell.house.rooms for b in [r.polygon().bounds])
+    return (f"({x:g}, {y:g}) is on no room's floor of house {shell.name!r} (its rooms: {rooms} m); expected a "
+            "start inside a room, in house coordinates")
 
 
 def _fixed_room(cdf: ChallengeDefinition) -> bool:

@@ -17,6 +17,7 @@ from __future__ import annotations
 
 from collections.abc import Sequence
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from shapely.geometry import LineString, Polygon
@@ -38,7 +39,10 @@ from luminous_sim.rooms.shell import (
     walls_from_outline,
 )
 
-__all__ = ["MIN_SIDE", "WALL_THICKNESS", "FloorPlan", "RoomRequest", "plan_house"]
+__all__ = ["FRONT_DOOR", "MIN_SIDE", "WALL_THICKNESS", "FloorPlan", "RoomRequest", "plan_house"]
+
+FRONT_DOOR = "FrontDoor"
+"""The id of a house's exterior doorway, in its room's shell and in the house shell's `doors`."""
 
 GRID = 0.25
 """Walls and doorways snap to the agent's grid."""
@@ -55,6 +59,12 @@ ROOM_DRAWS = 6
 """Times a room's fixtures and windows are drawn on one partition before the partition is redrawn."""
 MAX_SIDE = 30.0
 OUTLINE_EVERY = 40
+L_NOTCH_SHARE = 0.2
+"""About the share of an L room's rectangle its notch takes (its rectangle is drawn that much larger)."""
+L_NOTCH = (0.3, 0.5)
+"""An L room's notch, as a share of its rectangle's width and of its depth (each drawn in this range)."""
+L_ARM = 1.5
+"""Least width (m) of an L room's arms beside its notch; also the notch's least side."""
 """Without a given size, the outline is drawn again (a little larger) after this many failed partitions."""
 
 
@@ -66,13 +76,17 @@ class RoomRequest:
     room_type: str
     min_area: float | None = None
     max_area: float | None = None
+    shape: str = "rect"
+    """"rect", or "L": the room's rectangle loses a corner of the house outline (`plan_house`)."""
 
     def area_range(self) -> tuple[float, float]:
-        """The floor area drawn for the room: within its bounds, else the lower half of its type's range."""
+        """The floor area drawn for the room (its rectangle, for an L: the notch comes off it): within its
+        bounds, else the lower half of its type's range."""
         lo_t, hi_t = ROOM_SPECS[self.room_type].area
         lo = self.min_area if self.min_area is not None else lo_t
         hi = self.max_area if self.max_area is not None else max(lo, (lo_t + hi_t) / 2)
-        return (lo, max(lo, hi))
+        grow = 1.0 / (1.0 - L_NOTCH_SHARE) if self.shape == "L" else 1.0
+        return (lo * grow, max(lo, hi) * grow)
 
     def min_side(self) -> float:
         return max(MIN_SIDE, ROOM_SPECS[self.room_type].min_side)
@@ -102,7 +116,8 @@ Split = tuple[tuple[float, float], tuple[float, float]]
 
 
 def plan_house(rooms: Sequence[RoomRequest], rng: np.random.Generator, *, size: tuple[float, float] | None = None,
-               adjacency: Sequence[tuple[str, str]] = (), name: str = "house") -> FloorPlan:
+               adjacency: Sequence[tuple[str, str]] = (), name: str = "house",
+               front_door: str | None = None) -> FloorPlan:
     """Draw a house's floor plan.
 
     Args:
@@ -111,11 +126,16 @@ def plan_house(rooms: Sequence[RoomRequest], rng: np.random.Generator, *, size: 
         size: the outline (width along x, depth along y, metres); default from the rooms' drawn areas.
         adjacency: pairs of room names that must share a wall with a doorway in it.
         name: the house shell's name.
+        front_door: the room whose outside wall holds the house's one exterior doorway (`FRONT_DOOR`);
+            default the first room.
 
     Raises:
         RoomError: bad input (naming it), or no plan meeting the sizes and adjacency in PLAN_ATTEMPTS draws.
     """
     _check_input(rooms, adjacency)
+    front = front_door if front_door is not None else rooms[0].name
+    if front not in {r.name for r in rooms}:
+        raise RoomError(f"house front door: unknown room {front!r}; expected one of {', '.join(r.name for r in rooms)}")
     width, depth = size if size is not None else _outline_size(rooms, rng, 0)
     if not (MIN_SIDE <= width <= MAX_SIDE and MIN_SIDE <= depth <= MAX_SIDE):
         raise RoomError(f"house size {width:g} x {depth:g} m: expected sides within {MIN_SIDE:g}..{MAX_SIDE:g} m")
@@ -126,18 +146,22 @@ def plan_house(rooms: Sequence[RoomRequest], rng: np.random.Generator, *, size: 
         if size is None and attempt and attempt % OUTLINE_EVERY == 0:
             width, depth = _outline_size(rooms, rng, attempt // OUTLINE_EVERY)
         targets = [(r.name, float(rng.uniform(*r.area_range()))) for r in rooms]
-        order = [targets[int(i)] for i in rng.permutation(len(targets))]
+        order = _corners_first([targets[int(i)] for i in rng.permutation(len(targets))], rooms)
         cells: list[_Cell] = []
         splits: list[Split] = []
         _partition(0.0, 0.0, width, depth, order, rng, cells, splits, {r.name: r.min_side() for r in rooms})
-        why = _size_problem(cells, rooms, width, depth) or ""
+        notches = _notches(cells, rooms, rng, width, depth)
+        if isinstance(notches, str):
+            why = notches
+            continue
+        why = _size_problem(cells, rooms, width, depth, notches) or _front_problem(cells, front, width, depth) or ""
         if why:
             continue
         doors = _doors(cells, splits, wanted, {r.name: r.room_type for r in rooms}, rng)
         if isinstance(doors, str):
             why = doors
             continue
-        plan = _furnish_shells(cells, splits, doors, rooms, rng, width, depth, height, name)
+        plan = _furnish_shells(cells, splits, doors, rooms, rng, _Outline(width, depth, notches), height, name, front)
         if isinstance(plan, str):
             why = plan
             continue
@@ -160,6 +184,56 @@ def _check_input(rooms: Sequence[RoomRequest], adjacency: Sequence[tuple[str, st
         for n in (a, b):
             if n not in names:
                 raise RoomError(f"house adjacency {a}-{b}: unknown room {n!r}; expected one of {', '.join(names)}")
+
+
+@dataclass(frozen=True)
+class _Outline:
+    """The house outline: a width x depth rectangle less the L rooms' notches (room name -> x0, y0, x1, y1)."""
+
+    width: float
+    depth: float
+    notches: dict[str, tuple[float, float, float, float]]
+
+    def polygon(self) -> Polygon:
+        shape = Polygon([(0, 0), (self.width, 0), (self.width, self.depth), (0, self.depth)])
+        for x0, y0, x1, y1 in self.notches.values():
+            shape = shape.difference(Polygon([(x0, y0), (x1, y0), (x1, y1), (x0, y1)]))
+        return shape
+
+
+def _corners_first(order: list[tuple[str, float]], rooms: Sequence[RoomRequest]) -> list[tuple[str, float]]:
+    """The drawn order with the L rooms moved to its ends (the first and the last room of a partition each get
+    a corner of the outline, where an L room's notch goes); unchanged without L rooms."""
+    shaped = {r.name for r in rooms if r.shape == "L"}
+    if not shaped:
+        return order
+    ls = [t for t in order if t[0] in shaped]
+    rest = [t for t in order if t[0] not in shaped]
+    return ls[:1] + rest + ls[1:]
+
+
+def _notches(cells: list[_Cell], rooms: Sequence[RoomRequest], rng: np.random.Generator, width: float,
+             depth: float) -> dict[str, tuple[float, float, float, float]] | str:
+    """Each L room's notch: a rectangle at a corner of the outline that its cell holds, L_NOTCH of its sides,
+    its arms at least L_ARM wide; a string says which L room has no outline corner or is too small."""
+    shaped = {r.name: r for r in rooms if r.shape == "L"}
+    out: dict[str, tuple[float, float, float, float]] = {}
+    for c in cells:
+        if c.name not in shaped:
+            continue
+        corners = [(x, y) for x in (c.x0, c.x1) for y in (c.y0, c.y1) if x in (0.0, width) and y in (0.0, depth)]
+        if not corners:
+            return f"L room {c.name} holds no corner of the house outline"
+        cx, cy = corners[int(rng.integers(len(corners)))]
+        w, d = c.x1 - c.x0, c.y1 - c.y0
+        nw, nd = (snap(float(rng.uniform(*L_NOTCH)) * side, GRID) for side in (w, d))
+        arm = L_ARM + WALL_THICKNESS / 2
+        if min(nw, nd) < L_ARM or w - nw < arm or d - nd < arm:
+            return f"L room {c.name} is too small for a notch ({w:g} x {d:g} m)"
+        x0 = c.x0 if cx == c.x0 else r4(c.x1 - nw)
+        y0 = c.y0 if cy == c.y0 else r4(c.y1 - nd)
+        out[c.name] = (x0, y0, r4(x0 + nw), r4(y0 + nd))
+    return out
 
 
 def _outline_size(rooms: Sequence[RoomRequest], rng: np.random.Generator, redraw: int) -> tuple[float, float]:
@@ -216,13 +290,15 @@ def _inner(cell: _Cell, width: float, depth: float) -> tuple[float, float, float
             cell.x1 - (h if cell.x1 < width else 0.0), cell.y1 - (h if cell.y1 < depth else 0.0))
 
 
-def _size_problem(cells: list[_Cell], rooms: Sequence[RoomRequest], width: float, depth: float) -> str | None:
+def _size_problem(cells: list[_Cell], rooms: Sequence[RoomRequest], width: float, depth: float,
+                  notches: dict[str, tuple[float, float, float, float]]) -> str | None:
     by_name = {r.name: r for r in rooms}
     for c in cells:
         r = by_name[c.name]
         x0, y0, x1, y1 = _inner(c, width, depth)
         w, d = x1 - x0, y1 - y0
-        area = w * d
+        n = notches.get(c.name)
+        area = w * d - ((n[2] - n[0]) * (n[3] - n[1]) if n else 0.0)
         if min(w, d) < r.min_side():
             return f"room {c.name} is {min(w, d):.2f} m narrow (a {r.room_type} needs {r.min_side():g} m)"
         if max(w, d) / min(w, d) > MAX_ASPECT:
@@ -230,6 +306,17 @@ def _size_problem(cells: list[_Cell], rooms: Sequence[RoomRequest], width: float
         if (r.min_area is not None and area < r.min_area) or (r.max_area is not None and area > r.max_area):
             return f"room {c.name} has {area:.1f} m^2, outside its area bounds"
     return None
+
+
+def _front_problem(cells: list[_Cell], front: str, width: float, depth: float) -> str | None:
+    """Why the front door's room has no outside wall long enough for the door, or None."""
+    for c in cells:
+        if c.name != front:
+            continue
+        sides = [c.y1 - c.y0 if c.x0 == 0 or c.x1 == width else 0.0, c.x1 - c.x0 if c.y0 == 0 or c.y1 == depth else 0.0]
+        if max(sides) >= DOOR_WIDTH + 2 * DOOR_MARGIN + GRID:
+            return None
+    return f"room {front} (the front door's) has no outside wall long enough for a door"
 
 
 def _shared(a: _Cell, b: _Cell) -> tuple[Split, float, float] | None:
@@ -315,12 +402,13 @@ def _doors(cells: list[_Cell], splits: list[Split], wanted: set[frozenset[str]],
 
 
 def _furnish_shells(cells: list[_Cell], splits: list[Split], doors: list[HouseDoor], rooms: Sequence[RoomRequest],
-                    rng: np.random.Generator, width: float, depth: float, height: float,
-                    name: str) -> FloorPlan | str:
-    """Each room's shell (doors, fixtures, windows), then the house shell; a string says what did not fit."""
+                    rng: np.random.Generator, house: _Outline, height: float, name: str,
+                    front: str) -> FloorPlan | str:
+    """Each room's shell (doors, the front door in its room, fixtures, windows), then the house shell; a
+    string says what did not fit."""
     walls = tuple(InteriorWall(id=f"iw{k}", start=a, end=b) for k, (a, b) in enumerate(splits))
     by_wall = {w.id: w for w in walls}
-    outline = Polygon([(0, 0), (width, 0), (width, depth), (0, depth)])
+    outline = house.polygon()
     order = {r.name: i for i, r in enumerate(rooms)}
     shells: list[RoomShell] = []
     for cell in sorted(cells, key=lambda c: order[c.name]):
@@ -328,28 +416,35 @@ def _furnish_shells(cells: list[_Cell], splits: list[Split], doors: list[HouseDo
         mine = [d for d in doors if cell.name in d.rooms]
         shell = None
         for _ in range(ROOM_DRAWS):
-            shell = _room_shell(cell, req, mine, by_wall, rng, width, depth, height, outline)
+            shell = _room_shell(cell, req, mine, by_wall, rng, house, height, cell.name == front)
             if shell is not None:
                 break
         if shell is None:
             return f"room {cell.name}'s fixtures or doors do not fit"
         shells.append(shell)
     windows = _house_windows(shells, outline)
+    entrance = _house_openings([s for s in shells if s.name == front], outline, "doors")
     plan = HousePlan(rooms=tuple(HouseRoom(name=s.name, room_type=s.room_type, outline=s.outline) for s in shells),
                      walls=walls, doors=tuple(doors))
-    house = make_shell(name=name, room_type=rooms[0].room_type, shape="rect", source="house",
-                       outline=[(0.0, 0.0), (width, 0.0), (width, depth), (0.0, depth)], wall_height=height,
-                       wall_thickness=WALL_THICKNESS, windows=tuple(windows), house=plan)
-    return FloorPlan(house, tuple(shells))
+    shell = make_shell(name=name, room_type=rooms[0].room_type, shape="rectilinear" if house.notches else "rect",
+                       source="house", outline=list(outline.exterior.coords)[:-1], wall_height=height,
+                       wall_thickness=WALL_THICKNESS, windows=tuple(windows), doors=tuple(entrance), house=plan)
+    return FloorPlan(shell, tuple(shells))
 
 
 def _room_shell(cell: _Cell, req: RoomRequest, doors: list[HouseDoor], walls: dict[str, InteriorWall],
-                rng: np.random.Generator, width: float, depth: float, height: float,
-                outline: Polygon) -> RoomShell | None:
-    x0, y0, x1, y1 = _inner(cell, width, depth)
-    ring = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
-    base = make_shell(name=req.name, room_type=req.room_type, shape="rect", source="house", outline=ring,
-                      wall_height=height, wall_thickness=WALL_THICKNESS)
+                rng: np.random.Generator, house: _Outline, height: float, front: bool = False) -> RoomShell | None:
+    x0, y0, x1, y1 = _inner(cell, house.width, house.depth)
+    floor = Polygon([(x0, y0), (x1, y0), (x1, y1), (x0, y1)])
+    notch = house.notches.get(cell.name)
+    if notch is not None:
+        nx0, ny0, nx1, ny1 = notch
+        floor = floor.difference(Polygon([(nx0, ny0), (nx1, ny0), (nx1, ny1), (nx0, ny1)]))
+    outline = house.polygon()
+    base = make_shell(name=req.name, room_type=req.room_type, shape="L" if notch else "rect", source="house",
+                      outline=list(floor.exterior.coords)[:-1], wall_height=height, wall_thickness=WALL_THICKNESS)
+    outside = {w.id for w in base.walls
+               if outline.exterior.distance(LineString([w.start, w.end]).centroid) < 1e-6}
     room_doors = []
     for k, d in enumerate(doors):
         line = walls[d.wall].wall
@@ -363,30 +458,66 @@ def _room_shell(cell: _Cell, req: RoomRequest, doors: list[HouseDoor], walls: di
                 break
         else:
             return None
+    if front:
+        entrance = _front_door(base, outside, rng)
+        if entrance is None:
+            return None
+        room_doors.append(entrance)
     keep = [base.wall(d.wall).rect(d.offset, d.offset + d.width, 0.0, d.swing_clearance) for d in room_doors]
     fixtures = plan_fixtures(req.room_type, base.walls, base.polygon(), rng, keep)
     if fixtures is None:
         return None
     shell = base.model_copy(update={"doors": tuple(room_doors), "fixtures": fixtures})
-    outside = {w.id for w in shell.walls
-               if outline.exterior.distance(LineString([w.start, w.end]).centroid) < 1e-6}
     windows = _windows(shell, rng, ROOM_SPECS[req.room_type], outside=outside)
     shell = RoomShell.from_dict({**shell.model_dump(), "windows": windows}, where=f"room {req.name!r}")
     return None if shell_problems(shell) else shell
 
 
+def _front_door(base: RoomShell, outside: set[str], rng: np.random.Generator) -> Door | None:
+    """The house's front door on one of the room's outside walls, DOOR_MARGIN clear of its ends, its jambs
+    on the agent's grid (so that the grid passes it); None when no outside wall is long enough."""
+    options: list[tuple[str, float]] = []
+    for w in base.walls:
+        if w.id not in outside:
+            continue
+        axis = 0 if abs(w.direction[0]) > 0.5 else 1
+        sign = w.direction[axis]
+        start = w.start[axis]
+        for u in _door_offsets(0.0, 0.0, w.length):
+            jamb = start + sign * u
+            if abs(jamb / GRID - round(jamb / GRID)) < 1e-6:
+                options.append((w.id, float(u)))
+    if not options:
+        return None
+    wall, u = options[int(rng.integers(len(options)))]
+    return Door(id=FRONT_DOOR, wall=wall, offset=r4(u), width=DOOR_WIDTH, height=DOOR_HEIGHT,
+                swing_clearance=r4(DOOR_WIDTH + 0.1))
+
+
 def _house_windows(shells: list[RoomShell], outline: Polygon) -> list[Window]:
     """Every room's windows, placed on the house's outside walls."""
+    return [Window(id=f"Window_{k}", wall=wall, offset=offset, width=win.width, sill_height=win.sill_height,
+                   height=win.height)
+            for k, (win, wall, offset) in enumerate(_on_outline(shells, outline, "windows"))]
+
+
+def _house_openings(shells: list[RoomShell], outline: Polygon, kind: str) -> list[Door]:
+    """The rooms' doors on the house's outside walls (the front door), as the house shell's doors."""
+    return [Door(id=d.id, wall=wall, offset=offset, width=d.width, height=d.height, swing_clearance=0.0)
+            for d, wall, offset in _on_outline(shells, outline, kind)]
+
+
+def _on_outline(shells: list[RoomShell], outline: Polygon, kind: str) -> list[tuple[Any, str, float]]:
+    """The rooms' `kind` (windows or doors) that lie on the house's outside walls: (item, house wall, offset)."""
     house_walls = walls_from_outline(canonical_ring(outline.exterior.coords))
-    out: list[Window] = []
+    out: list[tuple[Any, str, float]] = []
     for s in shells:
-        for win in s.windows:
-            wall = s.wall(win.wall)
-            ends = np.array([wall.point(win.offset), wall.point(win.offset + win.width)])
+        for item in getattr(s, kind):
+            wall = s.wall(item.wall)
+            ends = np.array([wall.point(item.offset), wall.point(item.offset + item.width)])
             for hw in house_walls:
                 uv = hw.local(ends)
                 if np.allclose(uv[:, 1], 0.0, atol=1e-6):
-                    out.append(Window(id=f"Window_{len(out)}", wall=hw.id, offset=r4(float(uv[:, 0].min())),
-                                      width=win.width, sill_height=win.sill_height, height=win.height))
+                    out.append((item, hw.id, r4(float(uv[:, 0].min()))))
                     break
     return out

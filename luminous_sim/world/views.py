@@ -164,19 +164,27 @@ def _write(draw: ImageDraw.ImageDraw, text: str, box: Box, ink: tuple[int, int, 
 
 
 def _room_labels(built: BuiltScene, to_px: Callable[[np.ndarray], tuple[float, float]]) -> list[tuple[str, Box]]:
-    """A house's room names and types, each in a box near the room's lower-left corner."""
-    house = built.scene.room.house
+    """A house's room names and types, each in a box near the room's lowest (then leftmost) corner, and its
+    exterior doorways ("front door") just inside them."""
+    shell = built.scene.room
+    house = shell.house
     if house is None:
         return []
     font = ImageFont.load_default()
     draw = ImageDraw.Draw(Image.new("RGB", (1, 1)))
     out = []
     for room in house.rooms:
-        x0, y0, _, _ = room.polygon().bounds
+        x0, y0 = min(room.outline, key=lambda p: (p[1], p[0]))
         x, y = to_px(np.array([x0 + 0.15, y0 + 0.15, 0.0]))
         text = f"{room.name} ({room.room_type})"
         left, top, right, bottom = draw.textbbox((0, 0), text, font=font)
         out.append((text, (x, y - (bottom - top) - 2 * PAD, x + right - left + 2 * PAD, y)))
+    for door in shell.doors:
+        x, y = to_px(np.array([*shell.wall(door.wall).point(door.offset + door.width / 2, 0.3), 0.0]))
+        text = "front door"
+        left, top, right, bottom = draw.textbbox((0, 0), text, font=font)
+        half_w, half_h = (right - left) / 2 + PAD, (bottom - top) / 2 + PAD
+        out.append((text, (x - half_w, y - half_h, x + half_w, y + half_h)))
     return out
 
 

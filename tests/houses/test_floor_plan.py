@@ -79,7 +79,8 @@ def test_each_room_shell_has_its_doors_fixtures_and_outside_windows() -> None:
     assert house.house is not None
     for shell, room in zip(plan.rooms, house.house.rooms, strict=True):
         assert shell.outline == room.outline and shell.room_type == room.room_type
-        assert len(shell.doors) == sum(room.name in d.rooms for d in house.house.doors)
+        front = int(room.name == "r0")  # the first room holds the front door
+        assert len(shell.doors) == sum(room.name in d.rooms for d in house.house.doors) + front
         edge = house.polygon().exterior
         for w in shell.windows:
             wall = shell.wall(w.wall)
@@ -120,3 +121,31 @@ def test_bad_requests_are_refused() -> None:
     with pytest.raises(RoomError, match="no floor plan"):
         plan_house([RoomRequest("a", "LivingRoom"), RoomRequest("b", "LivingRoom")], np.random.default_rng(0),
                    size=(4.0, 4.0))
+
+
+@pytest.mark.parametrize(("n", "seed", "front"), [(3, 0, None), (5, 1, "r2"), (8, 0, "r5")])
+def test_one_front_door_on_an_outside_wall_of_its_room_with_jambs_on_the_grid(n: int, seed: int,
+                                                                                front: str | None) -> None:
+    plan = _plan(n, seed, front_door=front)
+    house = plan.shell
+    assert house.house is not None
+    (door,) = house.doors
+    assert door.id == "FrontDoor"
+    wall = house.wall(door.wall)
+    ends = np.array([wall.point(door.offset), wall.point(door.offset + door.width)])
+    assert np.allclose(ends / 0.25, np.round(ends / 0.25))
+    inside = wall.point(door.offset + door.width / 2, 0.3)
+    assert house.room_at(*inside) == (front or "r0")
+    room = next(s for s in plan.rooms if s.name == (front or "r0"))
+    (mine,) = [d for d in room.doors if d.id == "FrontDoor"]
+    own = np.array([room.wall(mine.wall).point(mine.offset), room.wall(mine.wall).point(mine.offset + 1.0)])
+    assert np.allclose(sorted(map(tuple, own)), sorted(map(tuple, ends)))
+    assert not any(d.id == "FrontDoor" for s in plan.rooms if s.name != room.name for d in s.doors)
+    # the grid passes the doorway's inside: a point 0.25 m in from the door's middle
+    grid = house.grid_points()
+    assert np.linalg.norm(grid - np.array(wall.point(door.offset + door.width / 2, 0.25)), axis=1).min() < 0.2
+
+
+def test_an_unknown_front_door_room_is_refused() -> None:
+    with pytest.raises(RoomError, match="front door: unknown room 'r9'"):
+        _plan(3, 0, front_door="r9")

@@ -78,7 +78,7 @@ def test_the_world_builds_interior_walls_and_navigates_across_doorways(house: Ho
         pts = world.nav.points()
         assert len(pts) == len(scene_reachable_grid(house.scene))
         shell = house.scene.room
-        far = {}
+        far: dict[str | None, tuple[float, float]] = {}
         for x, y in pts:
             far.setdefault(shell.room_at(x, y), (x, y))
         graph = NavGraph(world.nav)
@@ -161,3 +161,21 @@ def test_ray_batches_fit_pybullets_limit() -> None:
         assert len(client.rayTestBatch(froms, tos)) == RAY_BATCH
     finally:
         client.disconnect()
+
+
+def test_the_front_door_is_an_opening_in_the_outer_wall_shown_in_the_top_down_picture(house: HouseGenerated) -> None:
+    from luminous_sim.world import World
+    from luminous_sim.world.views import _room_labels, top_down
+
+    shell = house.scene.room
+    (door,) = shell.doors
+    wall = shell.wall(door.wall)
+    assert shell.room_at(*wall.point(door.offset + door.width / 2, 0.3)) == "kitchen"  # the first room
+    assert not [b for b in shell.wall_boxes() if b.wall == door.wall and b.kind == "solid"
+                and abs(np.dot(np.subtract(b.center[:2], wall.start), wall.direction) - (door.offset + 0.5)) < 0.5]
+    grid = scene_reachable_grid(house.scene)
+    assert np.linalg.norm(grid - np.array(wall.point(door.offset + door.width / 2, 0.25)), axis=1).min() < 0.2
+    with World(house.scene) as world:
+        labels = [text for text, _ in _room_labels(world.built, lambda p: (float(p[0]), float(p[1])))]
+        assert labels.count("front door") == 1
+        assert top_down(world.built, px_per_m=40).size[0] > 0
