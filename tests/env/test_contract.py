@@ -189,7 +189,7 @@ def test_there_is_no_fallback_to_other_rooms_and_fitting_configs_pass():
 
 BAD_OPTIONS: list[tuple[dict[str, Any], Any, str]] = [
     # (config kwargs, options, what the message says)
-    ({}, {"colour": "red"}, "unknown key.*'colour'; expected some of scene, split, index, cdf, scene_seed"),
+    ({}, {"colour": "red"}, "unknown key.*'colour'; expected some of scene, split, index, trial, cdf, scene_seed"),
     ({}, [("scene", None)], "reset options: expected a dict"),
     ({}, {"scene": "kitchen"}, "scene: expected a luminous_sim.scene.Scene, got str"),
     ({}, {"split": 3}, r"split: expected one of S\+, U\+, U\+test, got 3"),
