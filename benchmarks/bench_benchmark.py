@@ -71,8 +71,9 @@ def main() -> int:
     build = args.out / f"{tag}-build"
     seconds, ran = timed_build(build, split, count, args.workers, frames=False)
     trials = sum(1 for _ in (build / split).rglob("traj_data.json"))
-    print(f"build without frames: {trials}/{count} trials, {size_mb(build):.1f} MB; this run built {ran} in "
-          f"{seconds:.0f} s ({seconds / max(ran, 1):.2f} s per trajectory on {args.workers} workers)")
+    timing = (f"this run built {ran} in {seconds:.0f} s ({seconds / ran:.2f} s per trajectory on {args.workers} "
+              "workers)") if ran else "all kept from an earlier run"
+    print(f"build without frames: {trials}/{count} trials, {size_mb(build):.1f} MB; {timing}")
     if args.frames_sample:
         framed = args.out / f"{tag}-frames-sample"
         seconds, ran = timed_build(framed, split, args.frames_sample, args.workers, frames=True)
