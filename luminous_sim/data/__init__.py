@@ -56,6 +56,7 @@ from luminous_sim.data.build import (
     built_count,
     split_jobs,
 )
+from luminous_sim.data.house_build import HOUSE_SPLIT, HouseJob, build_houses, house_jobs
 from luminous_sim.data.manifest import Manifest, ManifestError
 from luminous_sim.data.minari_export import (
     MinariExport,
@@ -67,6 +68,7 @@ from luminous_sim.data.minari_export import (
 from luminous_sim.data.task_scenes import physical_misfit, scene_for_task, task_misfit
 
 __all__ = [
+    "HOUSE_SPLIT",
     "AlfredDesign",
     "AlfredParse",
     "AlfredParseError",
@@ -80,6 +82,7 @@ __all__ = [
     "DesignJob",
     "DesignResult",
     "ExportError",
+    "HouseJob",
     "Job",
     "JobOutcome",
     "LocalBackend",
@@ -98,6 +101,7 @@ __all__ = [
     "alfred_traj_data",
     "build",
     "build_from_alfred",
+    "build_houses",
     "build_split",
     "built_count",
     "clear_for_put",
@@ -108,6 +112,7 @@ __all__ = [
     "export_alfred",
     "export_minari",
     "fold_subgoals",
+    "house_jobs",
     "make_backend",
     "map_jobs",
     "merge_by_floor_plan",
