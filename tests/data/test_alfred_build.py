@@ -173,5 +173,5 @@ def test_cli_wants_one_source(tmp_path, alfred_split, capsys):
             main(["dataset", "build", *argv])
         assert exc.value.code == 2
     err = capsys.readouterr().err
-    assert "one of the arguments --split --from-alfred is required" in err
+    assert "one of the arguments --split --houses --from-alfred is required" in err
     assert "not allowed with argument" in err
