@@ -39,6 +39,9 @@ REJECTIONS = ("layout", "no_task", "duplicate", "oracle")
 DRAWS_PER_EPISODE = 60
 """A layout stops after this many draws per episode it owes (plus `DRAWS_SPARE`) and passes on what is left."""
 DRAWS_SPARE = 200
+ORACLE_FAILURES_IN_A_ROW = 6
+"""A layout whose oracle fails this many different tasks in a row gives up (e.g. an appliance the agent cannot see
+into) and passes what it owes on: each failure can cost a minute of pose search."""
 
 
 def _params_key(params: dict[str, Any]) -> str:
@@ -84,6 +87,8 @@ class Stream:
     rejected: Counter[str] = field(default_factory=Counter)
     oracle_causes: Counter[str] = field(default_factory=Counter)
     draws: int = 0
+    gave_up: bool = False
+    """The oracle failed `ORACLE_FAILURES_IN_A_ROW` different tasks in a row here."""
 
     @property
     def exhausted(self) -> bool:
@@ -107,7 +112,11 @@ def run_stream(split: str, task_type: str, layout: Layout, need: int) -> Stream:
         accepted: set[str] = set()
         failed: set[str] = set()
         keys: set[str] = set()
+        in_a_row = 0
         while len(out.entries) < need and out.draws < DRAWS_PER_EPISODE * need + DRAWS_SPARE:
+            if in_a_row >= ORACLE_FAILURES_IN_A_ROW:
+                out.gave_up = True
+                break
             seed = draw_seed(code, ti, layout, out.draws)
             out.draws += 1
             try:
@@ -127,9 +136,11 @@ def run_stream(split: str, task_type: str, layout: Layout, need: int) -> Stream:
             ok, why = oracle_solves(scene, drawn)
             if not ok:
                 failed.add(p)
+                in_a_row += 1
                 out.rejected["oracle"] += 1
                 out.oracle_causes[why.split(":")[0][:80]] += 1
                 continue
+            in_a_row = 0
             accepted.add(p)
             keys.add(drawn.key)
             out.entries.append({
@@ -160,10 +171,25 @@ def _interleave(groups: Sequence[Sequence[dict[str, Any]]]) -> list[dict[str, An
     return out
 
 
-def freeze(split: str, workers: int = 1, log: Callable[[str], None] = print) -> dict[str, Any]:
-    """Draw split `split` and return its manifest (`{"header": ..., "entries": [...]}`)."""
+def _done_types(checkpoint: Path | None, split: str) -> dict[str, Any]:
+    """What an interrupted freeze of `split` finished (its checkpoint's types), or nothing."""
+    if checkpoint is None or not checkpoint.is_file():
+        return {"per_type": {}, "stats": {}}
+    data = json.loads(checkpoint.read_text())
+    if data.get("split") != split or data.get("version") != SPLIT_VERSION:
+        return {"per_type": {}, "stats": {}}
+    return data
+
+
+def freeze(split: str, workers: int = 1, log: Callable[[str], None] = print,
+           checkpoint: Path | None = None) -> dict[str, Any]:
+    """Draw split `split` and return its manifest (`{"header": ..., "entries": [...]}`); with `checkpoint`, each
+    finished task type is saved there, and a freeze run again goes on from the types it holds."""
+    from luminous_sim.assets.objio import write_atomic
+
     t0 = time.perf_counter()
     counts = type_counts(split)
+    done = _done_types(checkpoint, split)
     pool = ProcessPoolExecutor(workers) if workers > 1 else None
     run: Callable[..., Any] = pool.map if pool is not None else map
     try:
@@ -173,6 +199,10 @@ def freeze(split: str, workers: int = 1, log: Callable[[str], None] = print) -> 
         per_type: dict[str, list[dict[str, Any]]] = {}
         stats: dict[str, Any] = {}
         for t in ALFRED_TASK_TYPES:
+            if t in done["per_type"]:
+                per_type[t], stats[t] = done["per_type"][t], done["stats"][t]
+                log(f"{split} {t}: {len(per_type[t])} from the checkpoint")
+                continue
             mine = [c for c in caps if c.task_type == t]
             shares = allocate([c.distinct for c in mine], counts[t])
             streams = list(run(_stream_job, [(split, t, c.layout, n) for c, n in zip(mine, shares, strict=True)]))
@@ -199,9 +229,13 @@ def freeze(split: str, workers: int = 1, log: Callable[[str], None] = print) -> 
                 "rejected": {r: rejected[r] for r in REJECTIONS},
                 "oracle_causes": dict(causes.most_common(5)),
                 "repeats": sum(e["repeat"] for e in per_type[t]),
+                "layouts_given_up": [s.layout.name for s in streams if s.gave_up],
             }
             log(f"{split} {t}: {len(per_type[t])}/{counts[t]} in {time.perf_counter() - t0:.0f} s, "
                 f"rejected {stats[t]['rejected']}, repeats {stats[t]['repeats']}")
+            if checkpoint is not None:
+                write_atomic(checkpoint, json.dumps({"split": split, "version": SPLIT_VERSION, "per_type": per_type,
+                                                     "stats": stats}))
     finally:
         if pool is not None:
             pool.shutdown()
@@ -231,9 +265,12 @@ def main(argv: Sequence[str] | None = None) -> int:
     parser.add_argument("--workers", type=int, default=1, choices=range(1, 65), metavar="1..64")
     parser.add_argument("--out", type=Path, default=DATA_DIR, help="folder to write <split>.jsonl into")
     args = parser.parse_args(argv)
-    manifest = freeze(args.split, args.workers, log=lambda m: print(m, file=sys.stderr, flush=True))
     path = manifest_path(args.split, args.out)
+    checkpoint = path.with_name(path.name + ".partial")
+    manifest = freeze(args.split, args.workers, log=lambda m: print(m, file=sys.stderr, flush=True),
+                      checkpoint=checkpoint)
     write_manifest(manifest, path)
+    checkpoint.unlink(missing_ok=True)
     print(f"{path}: {manifest['header']['entries']} episodes")
     return 0
 

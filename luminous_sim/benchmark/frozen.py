@@ -10,7 +10,7 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
-from luminous_sim.benchmark.counts import PAPER_COUNTS, Layout
+from luminous_sim.benchmark.counts import Layout
 from luminous_sim.splits import SplitError, plus_split
 from luminous_sim.world import AgentPose
 
