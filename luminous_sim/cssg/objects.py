@@ -5,7 +5,9 @@ shelf)."""
 
 from __future__ import annotations
 
+import math
 import zlib
+from collections.abc import Callable
 from functools import partial
 
 import numpy as np
@@ -24,6 +26,7 @@ from luminous_sim.scene import (
     fits,
     hang_pose,
     hanger_back,
+    reach_of,
     region_spots,
     rotate,
     sample_in_region,
@@ -59,6 +62,53 @@ def _facing_point(draft: SceneDraft, req: Request, by_name: dict[str, str]) -> t
         return None
     c = hit.footprint.centroid
     return (c.x, c.y)
+
+
+FACING_OUT = frozenset({"appliance"})
+"""Categories of objects whose front (a door, a drip tray, a screen: the asset's local +y) is turned to where the
+agent stands, as in AI2-THOR, where a microwave never faces the wall or the fridge beside it. Turned at random, a
+microwave faced the wall or along the counter into its neighbour, and what was put in it could not be seen, so
+could not be pointed at to be taken out again."""
+
+FRONT_CONE = math.cos(math.radians(45.0))
+"""An agent stands in front of an object when it is within 45 degrees of the object's facing (and within reach)."""
+
+
+def _fronts(points: np.ndarray, facing: np.ndarray, eyes: np.ndarray, reach: float) -> np.ndarray:
+    """Per (N, 2) world point, how many `eyes` stand in front of it (within `FRONT_CONE` of the unit `facing`
+    and within `reach`)."""
+    delta = eyes[None] - points[:, None]  # (N, E, 2)
+    d = np.maximum(np.hypot(delta[..., 0], delta[..., 1]), 1e-9)
+    ahead = (delta @ facing) >= FRONT_CONE * d
+    return (ahead & (d <= reach)).sum(axis=1)
+
+
+def _facing_out(draft: SceneDraft, spot: RegionSpot, entry) -> tuple[tuple[float, float], Callable] | None:
+    """For an object of a `FACING_OUT` category: a point for it to face and a test of its footprint's centre
+    (the agent can stand in front of it there, within reach). The host's front is kept where the agent can stand
+    in front of some of the region (a counter's), else the side it can stand in front of most (a table whose
+    front is against a wall). None for other objects, or where the agent stands in front of no side (turned at
+    random, as before)."""
+    if entry.category not in FACING_OUT:
+        return None
+    _, eyes = _eyes(draft)
+    if not len(eyes):
+        return None
+    eyes = np.asarray(eyes, dtype=float).reshape(-1, 2)
+    local = [(fx * spot.size[0] / 3, fy * spot.size[1] / 3) for fx in (-1, 0, 1) for fy in (-1, 0, 1)]
+    points = rotate(np.array(local), spot.yaw) + spot.center
+    reach = reach_of(entry, spot.floor_z - entry.bbox_min[2])
+    counts = []
+    for k in (0, 1, 3, 2):  # the host's front first, then its sides, then its back
+        facing = rotate(np.array([[0.0, 1.0]]), spot.yaw + k * math.pi / 2)[0]
+        counts.append((int(_fronts(points, facing, eyes, reach).sum()), facing))
+    n, facing = counts[0] if counts[0][0] else max(counts, key=lambda c: c[0])
+    if not n:
+        return None
+
+    def in_front(xy: np.ndarray) -> bool:
+        return bool(_fronts(np.asarray(xy, dtype=float)[None], facing, eyes, reach)[0])
+    return (spot.center[0] + float(facing[0]), spot.center[1] + float(facing[1])), in_front
 
 
 def _spots(draft: SceneDraft, host: Placed) -> list[RegionSpot]:
@@ -173,8 +223,12 @@ def place_object(draft: SceneDraft, req: Request, by_name: dict[str, str],
                                            ignore=spot.host.id):
                 got = None  # a towel hanging down into what stands below its holder
         else:
-            got = sample_in_region(entry, spot, draft.rng, occupied[key], facing=facing,
-                                   accept=partial(_sees, _view(draft, spot), _heights(spot, entry.dims[2])),
+            sees = partial(_sees, _view(draft, spot), _heights(spot, entry.dims[2]))
+            face, accept = facing, sees
+            out = _facing_out(draft, spot, entry) if facing is None else None
+            if out is not None:  # an appliance: its front to where the agent stands, and the agent in front of it
+                face, accept = out[0], (lambda xy, front=out[1], sees=sees: front(xy) and sees(xy))
+            got = sample_in_region(entry, spot, draft.rng, occupied[key], facing=face, accept=accept,
                                    max_fill=MAX_FILL)
         if got is None:
             continue
