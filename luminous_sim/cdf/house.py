@@ -73,7 +73,7 @@ def _beside_house(cdf: ChallengeDefinition) -> list[Issue]:
 
 
 def _front_door(house: HouseSpec, names: list[str]) -> list[Issue]:
-    if house.front_door is None or house.front_door in names:
+    if house.front_door is None or house.front_door is False or house.front_door in names:
         return []
     hint = difflib.get_close_matches(house.front_door, names, n=1)
     extra = f"; did you mean {hint[0]!r}?" if hint else ""

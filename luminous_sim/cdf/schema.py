@@ -314,8 +314,9 @@ class HouseSpec(_Model):
     adjacency: tuple[tuple[Name, Name], ...] = Field(
         (), description="pairs of room names joined by a door (so they share a wall)")
     size: HouseSize | None = Field(None, description="the outline; default: from the rooms' areas")
-    front_door: Name | None = Field(
-        None, description="the room whose outside wall holds the front door; default: the first room")
+    front_door: Name | Literal[False] | None = Field(
+        None, description="the room whose outside wall holds the front door; default: the first room; false: "
+                          "no front door")
 
 
 def _house_room_types(data: Any) -> Any:

@@ -117,7 +117,7 @@ Split = tuple[tuple[float, float], tuple[float, float]]
 
 def plan_house(rooms: Sequence[RoomRequest], rng: np.random.Generator, *, size: tuple[float, float] | None = None,
                adjacency: Sequence[tuple[str, str]] = (), name: str = "house",
-               front_door: str | None = None) -> FloorPlan:
+               front_door: str | bool | None = None) -> FloorPlan:
     """Draw a house's floor plan.
 
     Args:
@@ -127,14 +127,15 @@ def plan_house(rooms: Sequence[RoomRequest], rng: np.random.Generator, *, size: 
         adjacency: pairs of room names that must share a wall with a doorway in it.
         name: the house shell's name.
         front_door: the room whose outside wall holds the house's one exterior doorway (`FRONT_DOOR`);
-            default the first room.
+            default (None or True) the first room; False for a house without one (drawn as before front
+            doors existed: the same plan for the same seed).
 
     Raises:
         RoomError: bad input (naming it), or no plan meeting the sizes and adjacency in PLAN_ATTEMPTS draws.
     """
     _check_input(rooms, adjacency)
-    front = front_door if front_door is not None else rooms[0].name
-    if front not in {r.name for r in rooms}:
+    front = front_door if isinstance(front_door, str) else (rooms[0].name if front_door is not False else "")
+    if front and front not in {r.name for r in rooms}:
         raise RoomError(f"house front door: unknown room {front!r}; expected one of {', '.join(r.name for r in rooms)}")
     width, depth = size if size is not None else _outline_size(rooms, rng, 0)
     if not (MIN_SIDE <= width <= MAX_SIDE and MIN_SIDE <= depth <= MAX_SIDE):
@@ -154,7 +155,8 @@ def plan_house(rooms: Sequence[RoomRequest], rng: np.random.Generator, *, size: 
         if isinstance(notches, str):
             why = notches
             continue
-        why = _size_problem(cells, rooms, width, depth, notches) or _front_problem(cells, front, width, depth) or ""
+        why = (_size_problem(cells, rooms, width, depth, notches)
+               or (_front_problem(cells, front, width, depth) if front else None) or "")
         if why:
             continue
         doors = _doors(cells, splits, wanted, {r.name: r.room_type for r in rooms}, rng)

@@ -43,3 +43,14 @@ def test_check_env_is_clean_on_the_house_id():
         check_env(env.unwrapped, skip_render_check=True)
     finally:
         env.close()
+
+
+def test_v2_houses_have_a_front_door_and_v1_keeps_its_houses_without_one():
+    from luminous_sim.env.kinds import task_kind
+
+    kind = task_kind("house_objectnav")
+    v1 = kind.configured(dict(gymnasium.spec(HOUSE).kwargs["task_options"])).generate_scene("LivingRoom", 5)
+    v2 = kind.configured(dict(gymnasium.spec("Luminous-HouseNav-64-v2").kwargs["task_options"])).generate_scene(
+        "LivingRoom", 5)
+    assert not v1.room.doors and len(v2.room.doors) == 1
+    assert v1.to_json() != v2.to_json()

@@ -34,7 +34,7 @@ TASK_KINDS: tuple[str, ...] = tuple(KINDS)
 KIND_OPTIONS: dict[str, tuple[str, ...]] = {
     "objectnav": ("success_distance", "min_start_distance"),
     "objectnav_pickup": ("min_start_distance",),
-    "house_objectnav": ("success_distance", "min_start_distance", "cross_room_share"),
+    "house_objectnav": ("success_distance", "min_start_distance", "cross_room_share", "front_door"),
 }
 """Kind name -> the names of its options (`EnvConfig.task_options`; `TaskKind.defaults` holds their values)."""
 

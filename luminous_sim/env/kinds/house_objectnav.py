@@ -57,7 +57,8 @@ class HouseObjectNav(ObjectNav):
 
     defaults: ClassVar[dict[str, float]] = {"success_distance": SUCCESS_DISTANCE,
                                             "min_start_distance": MIN_START_DISTANCE,
-                                            "cross_room_share": CROSS_ROOM_SHARE}
+                                            "cross_room_share": CROSS_ROOM_SHARE, "front_door": 1.0}
+    """`front_door` 0 draws the houses without a front door (as `Luminous-HouseNav-64-v1` has them)."""
 
     def rooms(self) -> tuple[str, ...]:
         return ("LivingRoom",)  # not used to lay out a room: the house has every type
@@ -66,7 +67,8 @@ class HouseObjectNav(ObjectNav):
         from luminous_sim.cdf import loads
         from luminous_sim.cssg import generate_house
 
-        return generate_house(loads(HOUSE_CDF, source="house_objectnav"), seed).scene
+        text = HOUSE_CDF if self.options["front_door"] else HOUSE_CDF + "    front_door: false\n"
+        return generate_house(loads(text, source="house_objectnav"), seed).scene
 
     def draw_start(self, world: World, goal: Goal, rng: np.random.Generator) -> AgentPose | None:
         if not isinstance(goal, ObjectNavGoal):
