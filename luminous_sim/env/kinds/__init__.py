@@ -32,6 +32,7 @@ KINDS: dict[str, str] = {
 """Kind name -> `module:Class` in this package (the class is made with the name)."""
 TASK_KINDS: tuple[str, ...] = tuple(KINDS)
 KIND_OPTIONS: dict[str, tuple[str, ...]] = {
+    **{t: ("house", "cross_room_share") for t in ALFRED_TASK_TYPES},
     "objectnav": ("success_distance", "min_start_distance"),
     "objectnav_pickup": ("min_start_distance",),
     "house_objectnav": ("success_distance", "min_start_distance", "cross_room_share", "front_door"),

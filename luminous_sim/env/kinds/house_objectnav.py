@@ -40,6 +40,15 @@ scene:
 CROSS_ROOM_SHARE = 0.75
 
 
+def house_scene(seed: int, front_door: bool = True) -> Scene:
+    """The house of `HOUSE_CDF` generated from `seed` (without a front door: as houses were before they had one)."""
+    from luminous_sim.cdf import loads
+    from luminous_sim.cssg import generate_house
+
+    text = HOUSE_CDF if front_door else HOUSE_CDF + "    front_door: false\n"
+    return generate_house(loads(text, source="house_objectnav"), seed).scene
+
+
 def target_rooms(view: WorldView, instances: tuple[str, ...]) -> frozenset[str]:
     """The house rooms that hold the instances (by the centre of each one's box)."""
     shell = view.scene.room
@@ -64,11 +73,7 @@ class HouseObjectNav(ObjectNav):
         return ("LivingRoom",)  # not used to lay out a room: the house has every type
 
     def generate_scene(self, room_type: str, seed: int) -> Scene:
-        from luminous_sim.cdf import loads
-        from luminous_sim.cssg import generate_house
-
-        text = HOUSE_CDF if self.options["front_door"] else HOUSE_CDF + "    front_door: false\n"
-        return generate_house(loads(text, source="house_objectnav"), seed).scene
+        return house_scene(seed, front_door=bool(self.options["front_door"]))
 
     def draw_start(self, world: World, goal: Goal, rng: np.random.Generator) -> AgentPose | None:
         if not isinstance(goal, ObjectNavGoal):
