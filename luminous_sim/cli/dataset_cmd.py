@@ -44,8 +44,11 @@ def register(sub: argparse._SubParsersAction) -> None:
                     "ALFRED's json_2.1.0 layout; OUT/manifest.jsonl records each episode (built, or failed and "
                     "why), OUT/splits.json lists the trials in ALFRED's oct21.json layout. A stopped or killed "
                     "build resumes where it stopped when run again with the same options.")
-    source = b.add_mutually_exclusive_group(required=True)
+    source = b.add_mutually_exclusive_group(required=True)  # --split, --houses or --from-alfred
     source.add_argument("--split", choices=list(PLUS_SPLITS), help="which split (method (a))")
+    source.add_argument("--houses", type=int_range(1, MAX_BUILD_JOBS), default=None, metavar="N",
+                        help="the house split's episodes 0..N-1: ALFRED tasks across the rooms of houses generated "
+                             "per episode, under OUT/houses/ (docs/houses.md)")
     source.add_argument("--from-alfred", type=Path, default=None, metavar="ALFRED_SPLIT_DIR",
                         help="an ALFRED split folder of <task>/<trial>/traj_data.json, e.g. valid_seen (method "
                              "(b)); its trials are written under OUT/<its folder name>/")
@@ -90,8 +93,10 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def _build(args: argparse.Namespace) -> int:
-    from luminous_sim.data import BuildOptions, build_from_alfred, build_split, make_backend
+    from luminous_sim.data import BuildOptions, build_from_alfred, build_houses, build_split, make_backend
 
+    if args.houses is not None and args.count is not None:
+        args.build_parser.error("--count is for --split and --from-alfred; --houses N gives the count itself")
     if args.split is not None and args.count is None:
         args.build_parser.error("--count is required with --split")
     speaker = None
@@ -105,11 +110,14 @@ def _build(args: argparse.Namespace) -> int:
         if args.split is not None:
             report = build_split(Path(args.out), args.split, args.count, backend, options,
                                  progress=not args.no_progress)
+        elif args.houses is not None:
+            report = build_houses(Path(args.out), args.houses, backend, options, progress=not args.no_progress)
         else:
             report = build_from_alfred(Path(args.out), args.from_alfred, args.count, backend, options,
                                        progress=not args.no_progress)
-    if args.split is not None:
-        print(f"{args.split}: episodes 0..{args.count - 1} in {report.out}/ ({report.built} built, "
+    if args.split is not None or args.houses is not None:
+        name, count = (args.split, args.count) if args.split is not None else ("houses", args.houses)
+        print(f"{name}: episodes 0..{count - 1} in {report.out}/ ({report.built} built, "
               f"{report.failed} failed; {report.ran} run now)")
     else:
         print(f"{args.from_alfred}: {len(report.records)} designs in {report.out}/ ({report.built} built, "

@@ -57,6 +57,7 @@ from luminous_sim.data.build import (
     split_jobs,
     task_fallback_scene,
 )
+from luminous_sim.data.house_build import HOUSE_SPLIT, HouseJob, build_houses, house_jobs
 from luminous_sim.data.manifest import Manifest, ManifestError
 from luminous_sim.data.minari_export import (
     MinariExport,
@@ -68,6 +69,7 @@ from luminous_sim.data.minari_export import (
 from luminous_sim.data.task_scenes import physical_misfit, scene_for_task, task_misfit
 
 __all__ = [
+    "HOUSE_SPLIT",
     "AlfredDesign",
     "AlfredParse",
     "AlfredParseError",
@@ -81,6 +83,7 @@ __all__ = [
     "DesignJob",
     "DesignResult",
     "ExportError",
+    "HouseJob",
     "Job",
     "JobOutcome",
     "LocalBackend",
@@ -99,6 +102,7 @@ __all__ = [
     "alfred_traj_data",
     "build",
     "build_from_alfred",
+    "build_houses",
     "build_split",
     "clear_for_put",
     "default_minari_id",
@@ -108,6 +112,7 @@ __all__ = [
     "export_alfred",
     "export_minari",
     "fold_subgoals",
+    "house_jobs",
     "layout_scene",
     "make_backend",
     "map_jobs",
