@@ -4,7 +4,8 @@ ALFRED's json_2.1.0 layout, a manifest, resumable).
 Episode `i` of the split `houses` is a house generated from a seed derived from `i` (the house of `luminous
 generate --house`: a kitchen, a living room, a bedroom and a bathroom, with a front door; its floor plan drawn
 anew for each seed), a task of ALFRED's type `i mod 7` whose object lies in another room than its receptacle
-(or lamp) where the house has one (`tasks.rooms_apart`), else any task of the type, solved by the oracle. A
+(or lamp) where the house has one (`tasks.rooms_apart`), else any task of the type, solved by the oracle; a house
+with no task of the type at all is replaced by the next draw's (`HOUSE_DRAWS`, counted in the record). A
 house has no AI2-THOR floor plan: its trials name their scene by the house shell's name in `scene.floor_plan`
 (`env_house`) and the house seed in `scene.scene_num` (also the last part of the task folder's name), and the
 sidecar's `house` says the seed and whether the task crosses rooms; the sidecar's `scene` is the house itself.
@@ -27,11 +28,14 @@ from luminous_sim.vocab import ALFRED_TASK_TYPES
 HOUSE_SPLIT = "houses"
 HOUSE_CODE = 26
 """Keeps the house split's seeds apart from other streams."""
+HOUSE_DRAWS = 8
+"""Houses drawn for an episode before it counts as failed: a house without a task of the type (no microwave for
+heating, no lamp for examining) is replaced by the next draw's, and the record says how many were drawn."""
 
 
-def house_seed(index: int) -> int:
-    """The seed of episode `index`'s house (and of its task draw and instructions)."""
-    return int(np.random.SeedSequence([HOUSE_CODE, index]).generate_state(1)[0] % (2**31))
+def house_seed(index: int, draw: int = 0) -> int:
+    """The seed of draw `draw` of episode `index`'s house (and of its task draw and instructions)."""
+    return int(np.random.SeedSequence([HOUSE_CODE, index, draw]).generate_state(1)[0] % (2**31))
 
 
 @dataclass(frozen=True)
@@ -59,22 +63,32 @@ class HouseJob:
         from luminous_sim.errors import InfeasibleSceneError
         from luminous_sim.tasks import TaskSamplingError
 
-        seed = house_seed(self.index)
-        details: dict[str, Any] = {"house_seed": seed, "cross_room": True}
-        try:
-            scene = house_scene(seed)
-        except InfeasibleSceneError as exc:
-            return JobOutcome(stage="layout", cause=str(exc), details=details)
-        try:
-            result, record = run_episode(scene, self.task_type, seed, record_frames=options.frames,
-                                         extra_annotations=ANNOTATIONS - 1, cross_room=True)
-        except TaskSamplingError:
-            details["cross_room"] = False
+        details: dict[str, Any] = {}
+        why = ""
+        for draw in range(HOUSE_DRAWS):
+            seed = house_seed(self.index, draw)
+            details = {"house_seed": seed, "house_draws": draw + 1, "cross_room": True}
+            try:
+                scene = house_scene(seed)
+            except InfeasibleSceneError as exc:
+                why = f"layout: {exc}"
+                continue
+            try:
+                result, record = run_episode(scene, self.task_type, seed, record_frames=options.frames,
+                                             extra_annotations=ANNOTATIONS - 1, cross_room=True)
+                break
+            except TaskSamplingError:
+                details["cross_room"] = False
             try:
                 result, record = run_episode(scene, self.task_type, seed, record_frames=options.frames,
                                              extra_annotations=ANNOTATIONS - 1)
+                break
             except TaskSamplingError as exc:
-                return JobOutcome(stage="task", cause=str(exc), details=details)
+                why = f"task: {exc}"
+        else:
+            stage, _, cause = why.partition(": ")
+            return JobOutcome(stage=stage, cause=f"{cause} (and in {HOUSE_DRAWS - 1} more houses drawn)",
+                              details=details)
         traj = record.trajectory
         details.update(goal=result.goal, low_actions=len(traj.low_actions), replans=traj.replans)
         if not result.success:

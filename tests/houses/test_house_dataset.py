@@ -31,7 +31,8 @@ def test_house_trials_are_alfred_trials_named_by_their_house(built):
         trial = out / HOUSE_SPLIT / r["trial"]
         traj = json.loads((trial / "traj_data.json").read_text())
         side = json.loads((trial / "luminous.json").read_text())
-        seed = house_seed(r["order"])
+        seed = house_seed(r["order"], r["house_draws"] - 1)
+        assert seed == r["house_seed"]
         assert traj["scene"]["floor_plan"] == "env_house" and traj["scene"]["scene_num"] == seed
         assert r["trial"].split("/")[0].endswith(f"-{seed}") and side["house"]["seed"] == seed
         assert side["scene"]["room"]["house"] is not None and r["cross_room"] == side["house"]["cross_room"]
