@@ -174,5 +174,5 @@ def test_cli_wants_one_source_and_a_count_for_a_split(tmp_path, alfred_split, ca
             main(["dataset", "build", *argv])
         assert exc.value.code == 2
     err = capsys.readouterr().err
-    assert "one of the arguments --split --from-alfred is required" in err
+    assert "one of the arguments --split --houses --from-alfred is required" in err
     assert "--count is required with --split" in err and "not allowed with argument" in err
