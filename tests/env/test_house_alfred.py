@@ -21,7 +21,7 @@ def test_the_expert_solves_alfred_tasks_in_houses_some_across_rooms():
     env = _small(task_types=["pick_and_place_simple"], task_options={"house": 1.0, "cross_room_share": 1.0})
     try:
         for seed in (1, 2):
-            obs, info = env.reset(seed=seed)
+            _, info = env.reset(seed=seed)
             scene = env.episode.scene
             assert scene.room.house is not None and len(scene.room.house.rooms) == 4
             params = env.episode.goal.task.params
@@ -32,7 +32,7 @@ def test_the_expert_solves_alfred_tasks_in_houses_some_across_rooms():
             assert here and there and not here & there, "cross_room_share 1: the object is in another room"
             done = False
             while not done:
-                obs, _, terminated, truncated, info = env.step(env.expert_action())
+                _, _, terminated, truncated, info = env.step(env.expert_action())
                 done = terminated or truncated
             assert info["success"]
     finally:
