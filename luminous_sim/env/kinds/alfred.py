@@ -39,13 +39,6 @@ class AlfredKind(TaskKind):
 
         return house_scene(seed)
 
-    def generate_scene(self, room_type: str, seed: int) -> Scene:
-        if not self.options["house"]:
-            return super().generate_scene(room_type, seed)
-        from luminous_sim.env.kinds.house_objectnav import house_scene
-
-        return house_scene(seed)
-
     def draw_goal(self, world: World, scene: Scene, rng: np.random.Generator) -> Goal:
         from luminous_sim.planning import draw_task
         from luminous_sim.tasks import TaskSamplingError, rooms_apart
