@@ -239,7 +239,7 @@ def test_good_reset_options_read_into_a_typed_object():
     assert got == ResetOptions(cdf=(APPLE,), scene_seed=7) and got.source == "cdf"
     assert reset_options({"scene_seed": 2}, EnvConfig(cdf=APPLE)).scene_seed == 2   # the env's CDFs
     assert reset_options({"index": 2}, EnvConfig(split="S+")).index == 2           # the env's split
-    assert set(RESET_OPTIONS) == {"scene", "split", "index", "cdf", "scene_seed"}
+    assert set(RESET_OPTIONS) == {"scene", "split", "index", "trial", "cdf", "scene_seed"}
 
 
 def test_a_source_in_the_options_replaces_the_envs_own():
