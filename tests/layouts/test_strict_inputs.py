@@ -284,8 +284,8 @@ def test_front_any_bad_number_is_named_exactly(tmp_path: Path, where: str, i: in
             child = _child(d, i)
             child[where] = list(child.get(where, {"pos": [0, 0, 0], "scale": [1, 1, 1], "rot": [0, 0, 0, 1]}[where]))
             child[where][k] = value
-    if where == "pos" and isinstance(value, float) and abs(value) <= 1000:
-        value = 1e9
+    if where in ("pos", "rot") and isinstance(value, float) and abs(value) <= 1000:
+        value = 1e9  # a small negative quaternion component is a valid rotation (normalised within tolerance)
     msg = _front(tmp_path, change)
     path = f"furniture[{i}].bbox" if where == "bbox" else f"scene.room[1].children[{i}].{where}"
     # a value that is a number but makes the quaternion or the scaled box wrong is named by its vector
