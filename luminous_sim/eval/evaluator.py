@@ -22,6 +22,7 @@ message in `detail`; a mask that decodes but hits nothing is an ordinary failed 
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import itertools
 import json
@@ -211,13 +212,13 @@ def _trial_where(trial: str, split: str) -> tuple[str, str, int]:
         raise LuminousError(f"{path / 'traj_data.json'}: cannot read task_type and scene.floor_plan "
                             f"({type(exc).__name__}: {exc})") from None
     layout = 0
-    try:
+    # Only the layout's number is read here; a damaged sidecar is named where the trial is restored (the env's
+    # `trial` reset, `benchmark.read_trial`), and its episode then ends as an error there, not here.
+    with contextlib.suppress(OSError, ValueError, AttributeError):
         bench = json.loads((path / "luminous.json").read_bytes()[:MAX_INPUT_BYTES]).get("benchmark") or {}
         name, i = bench.get("split"), bench.get("index")
         if name in FROZEN and isinstance(i, int) and 0 <= i < benchmark_size(name):
             layout = benchmark_entry(name, i).layout
-    except (OSError, ValueError, AttributeError):
-        pass
     return task_type, floor_plan, layout
 
 
