@@ -56,7 +56,9 @@ from luminous_sim.errors import LuminousError, link_or_kind
 from luminous_sim.limits import MAX_BUILD_JOBS
 from luminous_sim.splits import oct21_document
 
-BUILD_FORMAT = "luminous-dataset-build/1"
+BUILD_FORMAT = "luminous-dataset-build/2"
+"""/2: split entries are the frozen splits' (`luminous_sim.benchmark`); a /1 build (entries of the old definition)
+is refused rather than resumed with trials of other episodes."""
 SETTINGS = "build.json"
 MANIFEST = "manifest.jsonl"
 SPLITS = "splits.json"
