@@ -1,4 +1,5 @@
-"""Oracle demonstrations of the pickup family, recorded for behaviour cloning.
+"""Oracle demonstrations of a task family (`pickup` or `alfred`, `luminous_sim.bc.family`), recorded for
+behaviour cloning.
 
 One file per episode, `<dir>/<split>-<index>.npz`, written atomically as it finishes (an interrupted
 collection resumes: finished episodes are kept, not replayed). Per step t: the observation the oracle
@@ -21,7 +22,7 @@ from typing import Any
 import numpy as np
 
 from luminous_sim.assets.objio import write_atomic
-from luminous_sim.bc.family import Unavailable, pickup_env, reset_episode
+from luminous_sim.bc.family import Unavailable, family_env, reset_episode
 from luminous_sim.env import LuminousEnv
 from luminous_sim.env.vocabulary import encode
 from luminous_sim.errors import LuminousError
@@ -94,15 +95,16 @@ def record(env: LuminousEnv, split: str, index: int) -> Demo:
 
 
 def collect_demos(out_dir: Path, split: str, indices: Iterable[int],
-                  progress: Callable[[int, Demo | None, str], None] | None = None) -> dict[str, Any]:
-    """Record the oracle on pickup episodes `indices` of `split` into `out_dir` (resumable).
+                  progress: Callable[[int, Demo | None, str], None] | None = None,
+                  family: str = "pickup") -> dict[str, Any]:
+    """Record the oracle on episodes `indices` of `split` in `family` into `out_dir` (resumable).
 
     Returns a summary: episodes asked, recorded, unavailable (index -> cause), steps, labelled steps.
 
     Raises:
-        LuminousError: `out_dir` holds demonstrations of another env.
+        LuminousError: `out_dir` holds demonstrations of another env (or family); an unknown family.
     """
-    env = pickup_env()
+    env = family_env(family)
     claim = {"env": env.config.to_kwargs(), "tokens": TOKENS}
     marker = out_dir / "collection.json"
     if marker.is_file():
@@ -136,6 +138,21 @@ def collect_demos(out_dir: Path, split: str, indices: Iterable[int],
         if progress is not None:
             progress(index, demo, "")
     return summary
+
+
+def demos_env(folder: Path) -> dict[str, Any]:
+    """The env options the demonstrations in `folder` were recorded in (its `collection.json`).
+
+    Raises:
+        LuminousError: the folder has no readable `collection.json`.
+    """
+    from luminous_sim.errors import read_json_file
+
+    claim = read_json_file(folder / "collection.json", 1 << 20, "the collection record of `luminous bc collect`")
+    env = claim.get("env") if isinstance(claim, dict) else None
+    if not isinstance(env, dict):
+        raise LuminousError(f"{folder / 'collection.json'}: no `env` object; re-collect with `luminous bc collect`")
+    return env
 
 
 def load_demos(folder: Path) -> list[Demo]:

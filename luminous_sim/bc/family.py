@@ -1,7 +1,8 @@
-"""The task family behaviour cloning is trained and evaluated on: pick up an object of a named type, in the
-layouts of LUMINOUS's evaluation splits, at 64 px with object-slot targets.
+"""The task families behaviour cloning is trained and evaluated on, at 64 px with object-slot targets:
+`pickup` (pick up an object of a named type, in the layouts of LUMINOUS's evaluation splits; the default)
+and `alfred` (the splits' own episodes: ALFRED's seven task types with ALFRED's limits, Table 4's setting).
 
-Why this family and not ALFRED's seven types: a few hundred demonstrations of full ALFRED tasks (30-100
+Why `pickup` is the default and not ALFRED's seven types: a few hundred demonstrations of full ALFRED tasks (30-100
 steps, two to four goal conditions, navigation across the room between them) give a cloned policy a
 success rate near zero on both splits, which shows nothing. `pickup_object` keeps what the paper's finding
 is about (the instruction names an object the agent must find in a room layout, and seen layouts differ
@@ -12,6 +13,10 @@ its task replaced: the same room structure and layout (`benchmark.layout_scene`,
 the split plays), and a `pickup_object` goal drawn by the env from `reset(seed=entry.task_seed,
 options={"scene": layout})`, so every machine plays the same episodes. An entry whose goal cannot be drawn is
 an outcome (`end` "unavailable"), counted in the population, as in `luminous eval`.
+
+Episode `i` of a split in the `alfred` family is the split's entry `i` itself (`reset(options={"split": ...,
+"index": i})`), with ALFRED's limits (`EVAL_ENV`: 1000 steps, 10 failed actions), so a clone of it is
+evaluated by `luminous_sim.eval.evaluate` exactly as any ALFRED agent (`ALFRED_ENV` over `EVAL_ENV`).
 """
 
 from __future__ import annotations
@@ -23,7 +28,7 @@ import numpy as np
 from luminous_sim.benchmark import benchmark_entry, layout_scene
 from luminous_sim.env import LuminousEnv
 from luminous_sim.errors import InfeasibleSceneError, LuminousError
-from luminous_sim.eval import Agent, EpisodeOutcome, PolicyError, make_agent
+from luminous_sim.eval import EVAL_ENV, Agent, EpisodeOutcome, PolicyError, make_agent
 from luminous_sim.splits import plus_split
 
 FAMILY = "pickup_object"
@@ -35,9 +40,27 @@ PICKUP_ENV: dict[str, Any] = {
 chooses among the objects in view rather than localising one in a 64 px image)."""
 
 
+ALFRED_ENV: dict[str, Any] = {"width": 64, "height": 64, "targets": "objects", "object_slots": 8}
+"""The `alfred` family's env over the evaluation's (`EVAL_ENV`: ALFRED's seven task types and limits): the image
+size and object-slot targets of `PICKUP_ENV`, so one `BCPolicy` shape serves both families."""
+FAMILIES: dict[str, dict[str, Any]] = {"pickup": PICKUP_ENV, "alfred": {**EVAL_ENV, **ALFRED_ENV}}
+"""Each family's env options."""
+
+
 def pickup_env(**overrides: Any) -> LuminousEnv:
     """A `LuminousEnv` of the family (`PICKUP_ENV` with overrides)."""
     return LuminousEnv(**{**PICKUP_ENV, **overrides})
+
+
+def family_env(family: str, **overrides: Any) -> LuminousEnv:
+    """A `LuminousEnv` of a family (`FAMILIES`) with overrides.
+
+    Raises:
+        LuminousError: an unknown family.
+    """
+    if family not in FAMILIES:
+        raise LuminousError(f"unknown behaviour-cloning family {family!r}; choose one of {sorted(FAMILIES)}")
+    return LuminousEnv(**{**FAMILIES[family], **overrides})
 
 
 def where(split: str, index: int) -> dict[str, Any]:
@@ -48,21 +71,30 @@ def where(split: str, index: int) -> dict[str, Any]:
 
 
 class Unavailable(LuminousError):
-    """A split entry with no pickup episode: `cause` is `layout` or `no_task`."""
+    """A split entry with no episode of the family: `cause` is `layout` or `no_task` (pickup), or the env's
+    `EpisodeUnavailable` cause (alfred: `expert`)."""
 
-    def __init__(self, split: str, index: int, cause: str, detail: str):
-        super().__init__(f"{split} pickup episode {index}: {detail}")
+    def __init__(self, split: str, index: int, cause: str, detail: str, family: str = "pickup"):
+        super().__init__(f"{split} {family} episode {index}: {detail}")
         self.cause, self.detail = cause, detail
 
 
 def reset_episode(env: LuminousEnv, split: str, index: int) -> tuple[dict[str, Any], dict[str, Any]]:
     """Start episode `index` of `split` in `env` (a `pickup_env`); the first observation and info.
 
+    In an env of the `alfred` family (any env whose task types are not the pickup family's) it is the split's entry
+    itself.
+
     Raises:
         Unavailable: the layout or a goal the expert solves cannot be drawn.
     """
     if tuple(env.config.task_types) != (FAMILY,):
-        raise LuminousError(f"a pickup episode needs an env of task_types [{FAMILY!r}], got {env.config.task_types}")
+        from luminous_sim.env import EpisodeUnavailable
+
+        try:
+            return env.reset(options={"split": split, "index": index})
+        except EpisodeUnavailable as exc:
+            raise Unavailable(split, index, exc.cause, exc.detail, "alfred") from None
     entry = benchmark_entry(split, index)
     try:
         scene = layout_scene(entry.floor_plan, entry.room_type, entry.layout_seed)

@@ -19,8 +19,7 @@ import torch
 from torch import nn
 
 from luminous_sim.assets.objio import write_atomic
-from luminous_sim.bc.demos import TOKENS, Demo, load_demos
-from luminous_sim.bc.family import PICKUP_ENV
+from luminous_sim.bc.demos import TOKENS, Demo, demos_env, load_demos
 from luminous_sim.bc.model import BCPolicy, PolicyShape
 from luminous_sim.env.vocabulary import vocabulary
 from luminous_sim.errors import LuminousError, path_kind
@@ -76,7 +75,8 @@ def train_bc(demo_dir: Path, out: Path, *, epochs: int = 20, batch_size: int = 6
         LuminousError: no demonstrations, or none with a labelled step.
     """
     demos = load_demos(demo_dir)
-    slots = int(PICKUP_ENV["object_slots"])
+    env = demos_env(demo_dir)
+    slots = int(env["object_slots"])
     shape = shape_for(slots)
     data = samples(demos, shape.actions)
     n = len(data["action"])
@@ -112,7 +112,7 @@ def train_bc(demo_dir: Path, out: Path, *, epochs: int = 20, batch_size: int = 6
         accuracy = _accuracy(model, data)
     finally:
         torch.set_num_threads(old_threads)
-    meta = {"format": FORMAT, "shape": shape.to_dict(), "env": dict(PICKUP_ENV), "tokens": TOKENS,
+    meta = {"format": FORMAT, "shape": shape.to_dict(), "env": env, "tokens": TOKENS,
             "seed": seed, "epochs": len(losses), "demos": len(demos), "samples": n, "losses": losses,
             "accuracy": accuracy}
     buf = io.BytesIO()

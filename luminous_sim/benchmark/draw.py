@@ -94,9 +94,10 @@ def fresh_world(scene: Scene, task_type: str, start: AgentPose | None = None) ->
     return world, dirty
 
 
-def oracle_solves(scene: Scene, drawn: Draw) -> tuple[bool, str]:
-    """Whether the oracle solves the drawn episode from its start (every goal condition met at the end),
-    and why not."""
+def oracle_solves(scene: Scene, drawn: Draw) -> str:
+    """Why the oracle does not solve the drawn episode from its start: the first failure's code
+    (`FailureCode` value), or `goal_conditions` when its plan ran but left a condition unmet; "" when it solves it
+    (every goal condition met at the end)."""
     from luminous_sim.planning import Oracle
 
     world, _ = fresh_world(scene, drawn.task.task_type, drawn.start)
@@ -107,5 +108,5 @@ def oracle_solves(scene: Scene, drawn: Draw) -> tuple[bool, str]:
     finally:
         world.close()
     if traj.success and done == total:
-        return True, ""
-    return False, traj.failures[0] if traj.failures else f"{done}/{total} goal conditions met"
+        return ""
+    return traj.failure_codes[0].value if traj.failure_codes else "goal_conditions"

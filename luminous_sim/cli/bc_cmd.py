@@ -1,6 +1,6 @@
 """`luminous bc`: behaviour cloning from oracle demonstrations (see luminous_sim.bc; needs torch, the `learn`
-extra): `collect` oracle demonstrations of the pickup family on a split, `train` a policy on them, `eval` a
-policy on pickup episodes of S+ or U+ with ALFRED's metrics."""
+extra): `collect` oracle demonstrations of a task family (`pickup`, or `alfred`: the split's own episodes) on a
+split, `train` a policy on them, `eval` a policy on that family's episodes of S+ or U+ with ALFRED's metrics."""
 
 from __future__ import annotations
 
@@ -21,6 +21,8 @@ from luminous_sim.cli.args import (
 from luminous_sim.limits import MAX_EVAL_EPISODES
 
 SPLITS: tuple[str, ...] = ("S+", "U+", "U+test")
+FAMILIES: tuple[str, ...] = ("pickup", "alfred")
+"""`luminous_sim.bc.FAMILIES` (not imported here: that package needs torch)."""
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -28,8 +30,11 @@ def register(sub: argparse._SubParsersAction) -> None:
                             description="Behaviour cloning from oracle demonstrations of picking up a named "
                                         "object in the layouts of S+/U+ (docs: README, 'Imitation').")
     bc = parser.add_subparsers(dest="bc_command", required=True, metavar="STEP")
-    collect = bc.add_parser("collect", help="record the oracle on pickup episodes of a split (resumable)")
+    collect = bc.add_parser("collect", help="record the oracle on episodes of a split (resumable)")
     collect.add_argument("--split", choices=SPLITS, default="S+", help="the split (default S+)")
+    collect.add_argument("--family", choices=FAMILIES, default="pickup",
+                         help="pickup (pick up a named object in the entry's layout; default) or alfred (the entry's "
+                              "own ALFRED episode)")
     collect.add_argument("--start", type=limited(0, "MAX_EPISODE_INDEX"), default=28,
                          help="first episode index (default 28: S+ 0-27 are kept for evaluation)")
     collect.add_argument("--episodes", type=int_range(1, MAX_EVAL_EPISODES), required=True, metavar="N",
@@ -46,7 +51,9 @@ def register(sub: argparse._SubParsersAction) -> None:
     train.add_argument("--seed", type=seed, default=0, help="seed of the weights and shuffling (default 0)")
     train.add_argument("--threads", type=limited(1, "MAX_THREADS"), default=1, help="torch threads (default 1)")
     train.set_defaults(func=_train)
-    evaluate = bc.add_parser("eval", help="a policy on pickup episodes of a split: SR, GC, PLW-SR, PLW-GC")
+    evaluate = bc.add_parser("eval", help="a policy on episodes of a split: SR, GC, PLW-SR, PLW-GC")
+    evaluate.add_argument("--family", choices=FAMILIES, default="pickup",
+                          help="the episodes: pickup (default) or alfred (the split's own, with ALFRED's limits)")
     evaluate.add_argument("--policy", required=True,
                           help="oracle, random, or MODULE:CALLABLE (the clone: luminous_sim.bc:bc_agent)")
     evaluate.add_argument("--checkpoint", type=Path, help="the clone's checkpoint (sets LUMINOUS_BC_CHECKPOINT)")
@@ -67,7 +74,8 @@ def _collect(args: argparse.Namespace) -> int:
     def show(index: int, demo: object, cause: str) -> None:
         print(f"{args.split} {index}: " + (f"unavailable ({cause})" if demo is None else "recorded"), file=sys.stderr)
 
-    summary = collect_demos(Path(args.out), args.split, range(args.start, args.start + args.episodes), show)
+    summary = collect_demos(Path(args.out), args.split, range(args.start, args.start + args.episodes), show,
+                            family=args.family)
     print(json.dumps(summary, indent=1))
     return 0
 
@@ -85,14 +93,17 @@ def _train(args: argparse.Namespace) -> int:
 
 def _eval(args: argparse.Namespace) -> int:
     from luminous_sim.assets.objio import write_atomic
-    from luminous_sim.bc import CHECKPOINT_VAR, evaluate_pickup
-    from luminous_sim.eval import check_policy, metrics
+    from luminous_sim.bc import ALFRED_ENV, CHECKPOINT_VAR, evaluate_pickup
+    from luminous_sim.eval import check_policy, evaluate, metrics
 
     if args.checkpoint is not None:
         os.environ[CHECKPOINT_VAR] = str(args.checkpoint)
     check_policy(args.policy)
-    outcomes = evaluate_pickup(args.policy, args.split, list(range(args.start, args.start + args.episodes)),
-                               seed=args.seed)
+    indices = list(range(args.start, args.start + args.episodes))
+    if args.family == "alfred":
+        outcomes = list(evaluate(args.policy, args.split, indices, seed=args.seed, env_kwargs=ALFRED_ENV).outcomes)
+    else:
+        outcomes = evaluate_pickup(args.policy, args.split, indices, seed=args.seed)
     result = metrics(outcomes)
     print(json.dumps(result.to_dict()))
     if args.out is not None:

@@ -64,14 +64,14 @@ class HouseJob:
         from luminous_sim.tasks import TaskSamplingError
 
         details: dict[str, Any] = {}
-        why = ""
+        stage, why = "", ""
         for draw in range(HOUSE_DRAWS):
             seed = house_seed(self.index, draw)
             details = {"house_seed": seed, "house_draws": draw + 1, "cross_room": True}
             try:
                 scene = house_scene(seed)
             except InfeasibleSceneError as exc:
-                why = f"layout: {exc}"
+                stage, why = "layout", str(exc)
                 continue
             try:
                 result, record = run_episode(scene, self.task_type, seed, record_frames=options.frames,
@@ -84,10 +84,9 @@ class HouseJob:
                                              extra_annotations=ANNOTATIONS - 1)
                 break
             except TaskSamplingError as exc:
-                why = f"task: {exc}"
+                stage, why = "task", str(exc)
         else:
-            stage, _, cause = why.partition(": ")
-            return JobOutcome(stage=stage, cause=f"{cause} (and in {HOUSE_DRAWS - 1} more houses drawn)",
+            return JobOutcome(stage=stage, cause=f"{why} (and in {HOUSE_DRAWS - 1} more houses drawn)",
                               details=details)
         traj = record.trajectory
         details.update(goal=result.goal, low_actions=len(traj.low_actions), replans=traj.replans)

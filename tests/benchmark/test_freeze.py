@@ -15,7 +15,7 @@ from luminous_sim.vocab import ALFRED_TASK_TYPES
 
 
 def test_a_layout_whose_oracle_keeps_failing_gives_up(monkeypatch):
-    monkeypatch.setattr(freeze_module, "oracle_solves", lambda scene, drawn: (False, "no pose from which X"))
+    monkeypatch.setattr(freeze_module, "oracle_solves", lambda scene, drawn: "not_visible")
     layout = type_layouts("U+", "pick_and_place_simple")[0]
     out = run_stream("U+", "pick_and_place_simple", layout, 3)
     assert out.gave_up and out.exhausted and not out.entries
