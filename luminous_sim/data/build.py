@@ -138,11 +138,9 @@ def _failure_cause(exc: BaseException) -> str:
 
 
 @dataclass(frozen=True)
-class SplitJob:
-    """Episode `index` of frozen split `split` (method (a)): `benchmark.entry_episode` of its entry (the
-    episode `luminous eval --split` and the env's `reset(options={"split": ..., "index": ...})` play), solved
-    by the oracle from the entry's start, exported in ALFRED's layout; the manifest record and the trial's
-    sidecar carry its `episode_key`."""
+class IndexedJob:
+    """The naming part of a `Job` that is episode `index` of a split: key `<split>/<index:06d>`, listed in index
+    order."""
 
     split: str
     index: int
@@ -154,6 +152,14 @@ class SplitJob:
     @property
     def order(self) -> int:
         return self.index
+
+
+@dataclass(frozen=True)
+class SplitJob(IndexedJob):
+    """Episode `index` of frozen split `split` (method (a)): `benchmark.entry_episode` of its entry (the
+    episode `luminous eval --split` and the env's `reset(options={"split": ..., "index": ...})` play), solved
+    by the oracle from the entry's start, exported in ALFRED's layout; the manifest record and the trial's
+    sidecar carry its `episode_key`."""
 
     @property
     def task_type(self) -> str:

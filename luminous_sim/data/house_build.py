@@ -21,7 +21,7 @@ import numpy as np
 
 from luminous_sim.data.alfred_export import ExportError, export_alfred
 from luminous_sim.data.backends import Backend
-from luminous_sim.data.build import ANNOTATIONS, BuildError, BuildOptions, BuildReport, JobOutcome, build
+from luminous_sim.data.build import ANNOTATIONS, BuildError, BuildOptions, BuildReport, IndexedJob, JobOutcome, build
 from luminous_sim.limits import MAX_BUILD_JOBS
 from luminous_sim.vocab import ALFRED_TASK_TYPES
 
@@ -39,19 +39,8 @@ def house_seed(index: int, draw: int = 0) -> int:
 
 
 @dataclass(frozen=True)
-class HouseJob:
-    """Episode `index` of the house split."""
-
-    index: int
-    split: str = HOUSE_SPLIT
-
-    @property
-    def key(self) -> str:
-        return f"{self.split}/{self.index:06d}"
-
-    @property
-    def order(self) -> int:
-        return self.index
+class HouseJob(IndexedJob):
+    """Episode `index` of the house split (`split` is `HOUSE_SPLIT`)."""
 
     @property
     def task_type(self) -> str:
@@ -105,7 +94,7 @@ def house_jobs(count: int, start: int = 0) -> list[HouseJob]:
     if not 0 <= count <= MAX_BUILD_JOBS or start < 0:
         raise BuildError(f"count must be from 0 to {MAX_BUILD_JOBS} (luminous_sim.limits.MAX_BUILD_JOBS) and start "
                          f">= 0, got {count} from {start}")
-    return [HouseJob(i) for i in range(start, start + count)]
+    return [HouseJob(HOUSE_SPLIT, i) for i in range(start, start + count)]
 
 
 def build_houses(out: Path, count: int, backend: Backend | None = None, options: BuildOptions | None = None,
