@@ -36,6 +36,30 @@ def shared_alfred() -> Path:
     return SHARED_ALFRED
 
 
+UPLUS_BUILT = 7
+"""U+ entries in the shared build (`uplus_build`): one of every task type."""
+
+
+@pytest.fixture(scope="session")
+def uplus_build(tmp_path_factory) -> Path:
+    """A canonical U+ build of the first `UPLUS_BUILT` entries without frames, made once per test run and shared
+    by every test (and xdist worker) that reads it; tests copy what they change, never edit it."""
+    from filelock import FileLock
+
+    from luminous_sim.data import BuildOptions, build_split
+
+    base = tmp_path_factory.getbasetemp()
+    root = base.parent if os.environ.get("PYTEST_XDIST_WORKER") else base  # the run's folder, shared by its workers
+    out, done = root / "uplus-build", root / "uplus-build.done"
+    with FileLock(str(root / "uplus-build.lock")):
+        if not done.is_file():
+            report = build_split(out, "U+", UPLUS_BUILT, options=BuildOptions(frames=False, video=False),
+                                 progress=False)
+            assert report.built == UPLUS_BUILT, report.summary()
+            done.write_text("")
+    return out
+
+
 def load_script(relative: str) -> Iterator[ModuleType]:
     """A script of the repository (`benchmarks/x.py`, `examples/x.py`) imported under its file's name for
     as long as the generator is suspended: `yield from load_script(...)` in a fixture."""

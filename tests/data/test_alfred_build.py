@@ -98,6 +98,7 @@ def test_more_workers_give_the_same_files(alfred_split, reference, tmp_path):
     assert tree(tmp_path / "b") == tree(reference)
 
 
+@pytest.mark.slow  # the Ray backend itself runs in the fast suite in tests/data/test_build.py
 def test_ray_backend_gives_the_same_files(alfred_split, reference, tmp_path):
     if not _has_ray():
         pytest.skip("Ray is not installed (pip install 'luminous-sim[cluster]')")

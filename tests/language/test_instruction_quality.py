@@ -94,14 +94,9 @@ def test_directives_for_alfreds_designs(shared_alfred):
 
 
 @pytest.fixture(scope="module")
-def annotations(tmp_path_factory):
+def annotations(uplus_build):
     """The three annotations of each trial of a U+ build of one episode of every task type (no frames)."""
-    from luminous_sim.data import BuildOptions, build_split
-
-    out = tmp_path_factory.mktemp("uplus")
-    report = build_split(out, "U+", 7, None, BuildOptions(frames=False, video=False), progress=False)
-    assert report.built >= 6
-    return [json.loads(p.read_text())["turk_annotations"]["anns"] for p in sorted(out.rglob("traj_data.json"))]
+    return [json.loads(p.read_text())["turk_annotations"]["anns"] for p in sorted(uplus_build.rglob("traj_data.json"))]
 
 
 def test_a_builds_instructions_have_no_glued_names_and_no_self_landmarks(annotations):
