@@ -1,30 +1,31 @@
-"""Gymnasium environment speed: steps/s and reset time of `LuminousEnv` through `gymnasium.make`.
+"""Gymnasium environment speed: steps/s single and vectorised, reset times, memory of one env process.
 
-    python benchmarks/bench_env.py                       # about a minute
-    python benchmarks/bench_env.py --repeats 5 --seconds 5   # longer, tighter figures
+    python benchmarks/bench_env.py                            # ObjectNav v2 at 64 and 300 px, HouseNav resets
+    python benchmarks/bench_env.py --repeats 5 --seconds 3    # the figures in docs/benchmarks.md (quiet machine)
 
-Prints the machine load (`os.getloadavg()`) at the start and the end, then for ALFRED's camera (300x300,
-`Luminous-ALFRED-PickPlace-v1` by default) and the small ids' size (64 px, `Luminous-NavToObject-64-v1`),
-each figure as the median over repeats with its spread (min..max):
+Prints the CPU model and the machine load (`os.getloadavg()`) at the start and the end, then for each id (by
+default `Luminous-ObjectNav-64-v2` at its 64 px and at 300 px, the same episodes and views) each figure as the
+median over repeats with its spread (min..max). Every env is the one `luminous_sim.env.make_vector_env` runs in
+a worker (`vector.wrapped_env`: the instruction as token ids, per-step info cut to a few keys), in one process
+and in the vector envs alike, so the figures compare like with like:
 
-- env steps/s, single process, for two action mixes from a seeded generator: `random`, a random policy
-  that never stops (uniform over every action but Stop: mostly interactions at grid points, which mostly
-  fail and then render nothing new), and `nav`, navigation actions only (uniform over the five: most
-  succeed and each success renders a new frame); episode limits raised so that an episode rarely ends
-  while timed; an episode that does end (success) is reset inside the timed span, as the vector env's
-  autoreset is, so that both figures count the same work;
-- env steps/s with `gymnasium.vector.AsyncVectorEnv` of 2 workers, the same id and seed in each worker,
-  counted as environment steps (2 per vector step); an episode that ends is reset by the vector env's
-  autoreset inside the timed span (the count of such resets is printed);
-- reset time for a new scene (`reset(seed=s)`, a fresh seed each repeat: CSSG generates a room, a goal is
-  drawn and the expert's plan proved) and for a reused one (`reset(seed=s, options={"scene": scene})`
+- env steps/s, single process, for two action mixes from a seeded generator: `nav`, uniform over the five
+  navigation actions (most succeed and each success renders a new frame; the ObjectNav ids end an episode only
+  on Stop, so no episode ends while timed), and `random`, uniform over every action but Stop (mostly
+  interactions at grid points, which mostly fail and render nothing new); episode limits raised; an episode
+  that ends is reset inside the timed span, as the vector envs' autoreset is;
+- env steps/s of `make_vector_env(..., 2)` (gymnasium's `AsyncVectorEnv`, shared memory) and of
+  stable-baselines3's `SubprocVecEnv` over the same envs (`backend="subproc"`), 2 workers, the same episode
+  (id and seed) in each worker and in the single process, counted as environment steps (2 per vector step),
+  and the ratio to the single process;
+- reset time for a new scene (`reset(seed=s)`, a fresh seed each repeat: CSSG generates a room or a house, a
+  goal is drawn and the expert's plan proved) and for a reused one (`reset(seed=s, options={"scene": scene})`
   with the scene of the previous episode: no generation, and the env's kept worlds of that scene are put
-  back (`World.reset_to_start`) instead of built, where their physics was not touched: the agent's world
-  is (no action was taken in it), the expert's proof world is only if the expert just walked). The worlds
-  built and reused during the reused-scene resets are printed beside the figure;
+  back (`World.reset_to_start`) instead of built, where their physics was not touched). The worlds built and
+  reused during the reused-scene resets are printed beside the figure; `--reset-ids` (default
+  `Luminous-HouseNav-64-v2`) are measured for resets only;
 - memory of one env process (a fresh spawned process: `gymnasium.make`, `reset`, 50 steps): RSS, and the
-  worlds it holds (the agent's, and the expert's where its physics was untouched and so kept; each its own
-  PyBullet client).
+  worlds it holds (the agent's, and the expert's where its physics was untouched and so kept).
 """
 
 from __future__ import annotations
@@ -43,6 +44,9 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 import luminous_sim  # noqa: F401  (registers the ids)
+from benchmarks.machine import cpu_model
+from luminous_sim.env import make_vector_env
+from luminous_sim.env.vector import wrapped_env
 
 LIMITS = {"max_steps": 10**6, "max_failures": 10**6}
 """Episode limits while timing steps, so that truncation does not interrupt the timed span."""
@@ -67,10 +71,11 @@ def _actions(mix: str, n: int, rng: np.random.Generator, count: int) -> np.ndarr
     return draws + (draws >= STOP)
 
 
-def single_steps_per_s(env_id: str, mix: str, seed: int, repeats: int, seconds: float) -> tuple[list[float], int]:
+def single_steps_per_s(env_id: str, options: dict, mix: str, seed: int, repeats: int,
+                       seconds: float) -> tuple[list[float], int]:
     """Steps/s of one env per repeat, and how many episodes ended while stepping (each reset inside the timed
     span, as the vector env's autoreset is)."""
-    env = gymnasium.make(env_id, **LIMITS)
+    env = wrapped_env(env_id, **options, **LIMITS)
     rng = np.random.default_rng(seed)
     env.reset(seed=seed)
     n = int(env.action_space.n)
@@ -90,30 +95,42 @@ def single_steps_per_s(env_id: str, mix: str, seed: int, repeats: int, seconds: 
     return rates, ended
 
 
-def vector_steps_per_s(env_id: str, mix: str, seed: int, repeats: int, seconds: float,
-                       workers: int = 2) -> tuple[list[float], int]:
-    """Environment steps/s (workers per vector step) of an AsyncVectorEnv per repeat, and the autoresets."""
-    envs = gymnasium.vector.AsyncVectorEnv([lambda: gymnasium.make(env_id, **LIMITS)] * workers)
+def vector_steps_per_s(env_id: str, options: dict, mix: str, seed: int, repeats: int, seconds: float,
+                       backend: str = "async", workers: int = 2) -> tuple[list[float], int]:
+    """Environment steps/s (workers per vector step) of `make_vector_env(backend=...)` per repeat, and the
+    autoresets."""
+    envs = make_vector_env(env_id, workers, backend=backend, **options, **LIMITS)
     rng = np.random.default_rng(seed)
-    envs.reset(seed=[seed] * workers)
-    n = int(envs.single_action_space.n)
+    if backend == "subproc":
+        envs.seed(seed)
+        for i in range(workers):  # SB3 seeds worker i with seed + i: the same episode in each instead
+            envs.env_method("reset", seed=seed, indices=[i])
+        n = int(envs.action_space.n)
+    else:
+        envs.reset(seed=[seed] * workers)
+        n = int(envs.single_action_space.n)
     rates, ended = [], 0
     for _ in range(repeats):
         steps = 0
         t0 = time.perf_counter()
         while time.perf_counter() - t0 < seconds:
-            _, _, terminated, truncated, _ = envs.step(_actions(mix, n, rng, workers))
+            if backend == "subproc":
+                _, _, done, _ = envs.step(_actions(mix, n, rng, workers))
+            else:
+                _, _, terminated, truncated, _ = envs.step(_actions(mix, n, rng, workers))
+                done = terminated | truncated
             steps += workers
-            ended += int(np.sum(terminated | truncated))
+            ended += int(np.sum(done))
         rates.append(steps / (time.perf_counter() - t0))
     envs.close()
     return rates, ended
 
 
-def reset_seconds(env_id: str, seed: int, repeats: int) -> tuple[list[float], list[float], tuple[int, int]]:
+def reset_seconds(env_id: str, options: dict, seed: int,
+                  repeats: int) -> tuple[list[float], list[float], tuple[int, int]]:
     """Seconds per reset: a new scene each repeat, and the previous episode's scene passed again; the worlds
     built and reused by the reused-scene resets."""
-    env = gymnasium.make(env_id)
+    env = gymnasium.make(env_id, **options)
     env.reset(seed=seed)  # imports and first-use costs stay out of the figures
     pool = env.unwrapped.worlds  # type: ignore[attr-defined]
     new, reused, builds, reuses = [], [], 0, 0
@@ -136,11 +153,11 @@ def _rss_mb() -> float:
         return next(int(line.split()[1]) / 1024 for line in fh if line.startswith("VmRSS"))
 
 
-def env_process_memory(job: tuple[str, int]) -> tuple[float, float, int]:
+def env_process_memory(job: tuple[str, dict, int]) -> tuple[float, float, int]:
     """In a fresh process: RSS after the imports, RSS after a reset and 50 steps, and the worlds held then."""
-    env_id, seed = job
+    env_id, options, seed = job
     before = _rss_mb()
-    env = gymnasium.make(env_id, **LIMITS)  # 50 steps in one episode (a step after its end would raise)
+    env = gymnasium.make(env_id, **options, **LIMITS)  # 50 steps in one episode (a step after its end would raise)
     env.reset(seed=seed)
     rng = np.random.default_rng(seed)
     for a in _actions("nav", int(env.action_space.n), rng, 50):
@@ -151,38 +168,59 @@ def env_process_memory(job: tuple[str, int]) -> tuple[float, float, int]:
     return before, rss, worlds
 
 
-def bench(env_id: str, args: argparse.Namespace) -> None:
-    spec = gymnasium.spec(env_id)
-    size = f"{spec.kwargs.get('width', 300)}x{spec.kwargs.get('height', 300)}"
-    print(f"\n{env_id} ({size})")
+def _options(spec_id: str) -> tuple[str, dict]:
+    """'ID' or 'ID@SIZE' (square frames of SIZE px instead of the id's own): the id and its env options."""
+    env_id, _, size = spec_id.partition("@")
+    return env_id, ({"width": int(size), "height": int(size)} if size else {})
+
+
+def _size(env_id: str, options: dict) -> str:
+    kwargs = {**gymnasium.spec(env_id).kwargs, **options}
+    return f"{kwargs.get('width', 300)}x{kwargs.get('height', 300)}"
+
+
+def bench(spec_id: str, args: argparse.Namespace) -> None:
+    env_id, options = _options(spec_id)
+    print(f"\n{env_id} ({_size(env_id, options)})", flush=True)
     for mix in args.mixes:
-        rates, ended = single_steps_per_s(env_id, mix, args.seed, args.repeats, args.seconds)
-        print(f"  steps/s, {mix:6} single process:    {spread(rates)}   episodes ended: {ended}")
-        vrates, vended = vector_steps_per_s(env_id, mix, args.seed, args.repeats, args.seconds)
-        print(f"  steps/s, {mix:6} AsyncVectorEnv x2: {spread(vrates)}   autoresets: {vended}"
-              f"   ({statistics.median(vrates) / statistics.median(rates):.2f}x single)")
-    new, reused, (builds, reuses) = reset_seconds(env_id, args.seed, args.repeats)
-    print(f"  reset s, new scene:                 {spread(new, '.2f')}")
-    print(f"  reset s, reused scene:              {spread(reused, '.2f')}   worlds built: {builds}, "
-          f"reused: {reuses}")
+        rates, ended = single_steps_per_s(env_id, options, mix, args.seed, args.repeats, args.seconds)
+        print(f"  steps/s, {mix:6} single process:     {spread(rates)}   episodes ended: {ended}", flush=True)
+        for backend, name in (("async", "AsyncVectorEnv x2"), ("subproc", "SubprocVecEnv x2 ")):
+            vrates, vended = vector_steps_per_s(env_id, options, mix, args.seed, args.repeats, args.seconds, backend)
+            print(f"  steps/s, {mix:6} {name}:  {spread(vrates)}   autoresets: {vended}"
+                  f"   ({statistics.median(vrates) / statistics.median(rates):.2f}x single)", flush=True)
+    resets(spec_id, args)
     with mp.get_context("spawn").Pool(1) as pool:
-        before, rss, worlds = pool.apply(env_process_memory, ((env_id, args.seed),))
-    print(f"  memory, one env process:            {rss:.0f} MB after reset and 50 steps ({before:.0f} MB after "
+        before, rss, worlds = pool.apply(env_process_memory, ((env_id, options, args.seed),))
+    print(f"  memory, one env process:             {rss:.0f} MB after reset and 50 steps ({before:.0f} MB after "
           f"the imports; worlds held: {worlds}, the agent's and, where its physics was untouched, the expert's)")
+
+
+def resets(spec_id: str, args: argparse.Namespace) -> None:
+    env_id, options = _options(spec_id)
+    new, reused, (builds, reuses) = reset_seconds(env_id, options, args.seed, args.repeats)
+    print(f"  reset s, new scene:                  {spread(new, '.2f')}")
+    print(f"  reset s, reused scene:               {spread(reused, '.2f')}   worlds built: {builds}, "
+          f"reused: {reuses}", flush=True)
 
 
 def main(argv: list[str] | None = None) -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("--ids", nargs="+", default=["Luminous-ALFRED-PickPlace-v1", "Luminous-NavToObject-64-v1"],
-                    help="environment ids to measure")
+    ap.add_argument("--ids", nargs="+", default=["Luminous-ObjectNav-64-v2", "Luminous-ObjectNav-64-v2@300"],
+                    help="ids to measure, each ID or ID@SIZE (square frames of SIZE px)")
+    ap.add_argument("--reset-ids", nargs="*", default=["Luminous-HouseNav-64-v2"],
+                    help="ids whose reset times alone are measured (houses)")
     ap.add_argument("--mixes", nargs="+", choices=MIXES, default=list(MIXES), help="action mixes to time")
     ap.add_argument("--seed", type=int, default=0, help="episode seed (and action-generator seed)")
     ap.add_argument("--repeats", type=int, default=3, help="repeats per figure (median and min..max reported)")
     ap.add_argument("--seconds", type=float, default=1.5, help="seconds stepping per repeat of a steps/s figure")
     args = ap.parse_args(argv)
-    print(f"load average at start (1, 5, 15 min): {os.getloadavg()}; cores: {os.cpu_count()}")
-    for env_id in args.ids:
-        bench(env_id, args)
+    print(f"CPU: {cpu_model()}, {os.cpu_count()} cores; load average at start (1, 5, 15 min): {os.getloadavg()}")
+    for spec_id in args.ids:
+        bench(spec_id, args)
+    for spec_id in args.reset_ids:
+        print(f"\n{spec_id} (resets)", flush=True)
+        resets(spec_id, args)
     print(f"\nload average at end (1, 5, 15 min): {os.getloadavg()}")
 
 

@@ -20,6 +20,11 @@ Policies (each seeded; every one plays the same held-out seeds, `reset(seed=s)`,
   target visible by ALFRED's rule within the success distance): the bound of a random walk that always
   recognises its goal. On PickUp it is `walk-seg`.
 * `oracle`: the env's expert (`env.expert_action()`; its plan ends with Stop).
+* `ppo:NAME` (`--ppo NAME=DIR`, repeatable): a policy trained by `bench_ppo.py`/`examples/train_ppo.py` (DIR
+  holds its `model.zip` and `config.json`), sampling from its action distribution (seeded), in the id as
+  registered plus the observation options it was trained with (e.g. `goal_mask`), through the same wrappers
+  (`train_ppo.make_env`: instruction tokens, its action subset, feedback): the same episodes as every other
+  policy.
 
 SR comes with a 95% Wilson interval; SPL and soft SPL with a 95% percentile bootstrap interval (2,000
 resamples of the episodes, seeded). Episodes end by success, Stop (failed), the failure limit or the step
@@ -53,7 +58,8 @@ from luminous_sim.env.shaping import goal_scores  # noqa: E402
 
 ENV_IDS = ("Luminous-ObjectNav-64-v2", "Luminous-PickUp-64-v2")
 POLICIES = ("random", "walk-stop", "walk-seg", "walk-seg-near", "oracle")
-Policy = Callable[[LuminousEnv], Any]
+Policy = Callable[[LuminousEnv, Any], Any]
+"""(the env, the observation as the policy's env gives it) -> action."""
 
 
 
@@ -97,17 +103,17 @@ def make_policy(name: str, env: LuminousEnv, seed: int) -> Policy:
     nav = [env.actions.index(a) for a in NAVIGATION]
     stop = env.actions.index(STOP)
     if name == "random":
-        return lambda e: int(rng.integers(e.action_space.n))
+        return lambda e, _: int(rng.integers(e.action_space.n))
     if name == "walk-stop":
         stop_at = int(rng.integers(1, env.config.max_steps + 1))
         steps = [0]
 
-        def walk_stop(e: LuminousEnv) -> Any:
+        def walk_stop(e: LuminousEnv, _: Any) -> Any:
             steps[0] += 1
             return stop if steps[0] >= stop_at else nav[int(rng.integers(len(nav)))]
         return walk_stop
     if name in ("walk-seg", "walk-seg-near"):
-        def walk_seg(e: LuminousEnv) -> Any:
+        def walk_seg(e: LuminousEnv, _: Any) -> Any:
             stops = e.episode is not None and e.episode.goal.stop_to_succeed
             if stops and name == "walk-seg-near":
                 assert e.world is not None and e.episode is not None
@@ -119,19 +125,21 @@ def make_policy(name: str, env: LuminousEnv, seed: int) -> Policy:
             return stop if stops else {"action": "PickupObject", "objectId": oid}
         return walk_seg
     if name == "oracle":
-        return lambda e: e.expert_action()
+        return lambda e, _: e.expert_action()
     raise ValueError(f"unknown policy {name!r}; expected one of {', '.join(POLICIES)}")
 
 
-def play(env: LuminousEnv, policy: Policy, seed: int) -> dict[str, Any]:
-    """One episode from `reset(seed=seed)`: its figures."""
+def play(outer: gymnasium.Env, policy: Policy, seed: int) -> dict[str, Any]:
+    """One episode from `reset(seed=seed)` of `outer` (a `LuminousEnv`, wrapped or not): its figures."""
+    env = outer.unwrapped
+    assert isinstance(env, LuminousEnv)
     t = time.perf_counter()
-    _, start = env.reset(seed=seed)
+    obs, start = outer.reset(seed=seed)
     reset_s = time.perf_counter() - t
     steps, info, end = 0, start, "step limit"
     while True:
-        action = policy(env)
-        _, _, terminated, truncated, info = env.step(action)
+        action = policy(env, obs)
+        obs, _, terminated, truncated, info = outer.step(action)
         steps += 1
         if terminated or truncated:
             if info["success"]:
@@ -147,6 +155,23 @@ def play(env: LuminousEnv, policy: Policy, seed: int) -> dict[str, Any]:
             "start_distance": float(start["start_distance"]), "room": env.world.scene.room.name if env.world else "",
             "target": getattr(env.episode.goal, "object_type", "") if env.episode else "",
             "reset_s": reset_s, "cross_room": start.get("cross_room")}
+
+
+def trained_player(env_id: str, folder: Path, seed: int) -> tuple[gymnasium.Env, Policy]:
+    """The policy trained in `folder` and the env it plays in (the id with its observation options and
+    wrappers)."""
+    sys.path.insert(0, str(ROOT / "examples"))
+    import train_ppo
+    from stable_baselines3 import PPO
+
+    config = json.loads((folder / "config.json").read_text())
+    if config["env_id"] != env_id:
+        raise SystemExit(f"{folder}: trained on {config['env_id']}, not {env_id}")
+    model = PPO.load(folder / "model.zip", device="cpu")
+    model.set_random_seed(seed)
+    outer = train_ppo.make_env(env_id, train_ppo.observation_kwargs(config["env_kwargs"]),
+                               feedback=config.get("feedback", False), actions=config.get("actions"))
+    return outer, lambda e, obs: int(model.predict(obs, deterministic=False)[0])
 
 
 def summary(rows: list[dict[str, Any]]) -> dict[str, Any]:
@@ -179,25 +204,36 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--episodes", type=int, default=50, help="held-out episodes per id (default 50)")
     p.add_argument("--policies", default=",".join(POLICIES))
     p.add_argument("--json", type=Path, help="write every episode and the summaries here")
+    p.add_argument("--ppo", action="append", default=[], metavar="NAME=DIR",
+                   help="also play the policy trained in DIR, as policy ppo:NAME (repeatable)")
     args = p.parse_args(argv)
-    policies = args.policies.split(",")
+    policies = [x for x in args.policies.split(",") if x]
+    trained = dict(item.partition("=")[::2] for item in args.ppo)
+    if any(not name or not folder for name, folder in trained.items()):
+        p.error("--ppo: expected NAME=DIR")
     print(f"CPU: {cpu_model()}, {os.cpu_count()} cores; load at start: {load()}", flush=True)
     out: dict[str, Any] = {"cpu": cpu_model(), "load_start": load(), "ids": {}}
     for env_id in args.env or ENV_IDS:
         seeds = eval_seeds(env_id)[: args.episodes]
         env = gymnasium.make(env_id).unwrapped
         assert isinstance(env, LuminousEnv)
-        rows: dict[str, list[dict[str, Any]]] = {name: [] for name in policies}
+        players = {f"ppo:{name}": trained_player(env_id, Path(folder), 0) for name, folder in trained.items()}
+        rows: dict[str, list[dict[str, Any]]] = {name: [] for name in [*policies, *players]}
         t0, w0 = time.process_time(), time.perf_counter()
         for i, seed in enumerate(seeds):
             for j, name in enumerate(policies):  # all policies on one episode, then the next: its worlds are reused
                 rows[name].append(play(env, make_policy(name, env, seed * 16 + j), seed))
+            for name, (outer, policy) in players.items():
+                rows[name].append(play(outer, policy, seed))
             if (i + 1) % 10 == 0:
                 print(f"  {env_id}: {i + 1}/{len(seeds)} episodes, {time.process_time() - t0:.0f} CPU s, "
                       f"load {load()}", flush=True)
         env.close()
+        for outer, _ in players.values():
+            outer.close()
         result = {"seeds": [seeds[0], seeds[-1]] if seeds else [], "policies": {n: summary(r) for n, r in rows.items()},
-                  "distances": distances(rows[policies[0]]), "episodes": rows, "cpu_s": time.process_time() - t0,
+                  "distances": distances(next(iter(rows.values()))), "episodes": rows,
+                  "cpu_s": time.process_time() - t0,
                   "wall_s": time.perf_counter() - w0}
         out["ids"][env_id] = result
         print(f"\n{env_id} (seeds {seeds[0]}..{seeds[-1]}, {len(seeds)} episodes; {result['cpu_s']:.0f} CPU s, "

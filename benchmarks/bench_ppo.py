@@ -55,7 +55,6 @@ sys.path[:0] = [str(ROOT), str(ROOT / "examples")]
 import train_ppo  # noqa: E402  (examples/train_ppo.py)
 
 from luminous_sim.assets.objio import write_atomic  # noqa: E402
-from luminous_sim.env.actions import NAVIGATION  # noqa: E402
 
 ENV_ID = "Luminous-NavToObject-64-v1"
 POLICIES = ("random", "random-nav", "oracle", "ppo")
@@ -85,8 +84,12 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--resume", action="store_true", help="go on from the model in --out (the CPU budget counts "
                                                          "the earlier runs too)")
     p.add_argument("--no-train", action="store_true", help="evaluate the model in --out as it is")
-    p.add_argument("--actions", default="navigation", choices=("navigation", "all"),
-                   help="the agent's actions: the five navigation ones (default) or the env's whole space")
+    p.add_argument("--actions", default="navigation", choices=tuple(train_ppo.ACTION_SETS),
+                   help="the agent's actions: the five navigation ones (default), those and Stop (objectnav) or "
+                        "the env's whole space")
+    p.add_argument("--env-kwarg", action="append", default=[], metavar="NAME=VALUE",
+                   help=f"training env option (repeatable; on top of {train_ppo.TRAIN_KWARGS}); the observation "
+                        "options among them are used in evaluation too")
     args = p.parse_args(argv)
     policies = [x for x in args.policies.split(",") if x]
     bad = [x for x in policies if x not in POLICIES]
@@ -103,8 +106,8 @@ def main(argv: list[str] | None = None) -> int:
     else:
         model = train_ppo.train(args.env, args.out, args.max_steps, seed=args.seed, n_envs=args.n_envs,
                                 ppo_kwargs=train_ppo._kwargs(args.ppo), cpu_budget_s=args.cpu_minutes * 60,
-                                resume=args.resume, save_every=2000,
-                                actions=NAVIGATION if args.actions == "navigation" else None)
+                                resume=args.resume, save_every=2000, actions=train_ppo.ACTION_SETS[args.actions],
+                                env_kwargs={**train_ppo.TRAIN_KWARGS, **train_ppo._kwargs(args.env_kwarg)})
     wall = time.perf_counter() - t0
     progress = json.loads((args.out / "progress.json").read_text())
     config = json.loads((args.out / "config.json").read_text())

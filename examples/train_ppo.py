@@ -60,14 +60,14 @@ from luminous_sim.env import (
     NewPlaceBonus,
     SceneRepeat,
 )
-from luminous_sim.env.actions import NAVIGATION
+from luminous_sim.env.actions import NAVIGATION, STOP
 
 DEFAULT_ENV = "Luminous-NavToObject-64-v1"
 TRAIN_KWARGS: dict[str, Any] = {"depth": True, "reward": {"failure": -0.2}}
 """Env options for training by default: the id as registered with a `depth` observation (evaluation adds it
 too: `observation_kwargs`), and a failed action costing 0.2 rather than ALFRED's 0.05, nearer what it costs
 in the end, as the 10th failure ends the episode and loses the goal's 9 (see the module docstring)."""
-OBSERVATION_OPTIONS = ("depth", "segmentation", "pose", "inventory", "targets", "grid", "object_slots",
+OBSERVATION_OPTIONS = ("depth", "segmentation", "goal_mask", "pose", "inventory", "targets", "grid", "object_slots",
                        "step_instructions", "width", "height")
 """Env options that change what a policy sees or does: a trained policy is evaluated with the same ones."""
 PPO_DEFAULTS: dict[str, Any] = {"n_steps": 128, "batch_size": 64, "n_epochs": 4, "learning_rate": 3e-4,
@@ -79,6 +79,10 @@ gained toward the goal earns."""
 FEEDBACK_HISTORY = 8
 """Past steps in the `feedback` observation (`ActionFeedback`): enough to see a full turn (4 rotations) and what
 came before it, a short memory for a policy that has none."""
+ACTION_SETS: dict[str, tuple[str, ...] | None] = {"all": None, "navigation": NAVIGATION,
+                                                   "objectnav": (*NAVIGATION, STOP)}
+"""`--actions` choices: the env's whole space, the five navigation actions (`goto_object` needs no more), or
+those and Stop (ObjectNav v2 succeeds only on Stop)."""
 EVAL_SEED0 = 1_000_000
 """Evaluation seeds start here, far from the training env's seeds (the training env is reset with `--seed`,
 then draws its later episodes from its own generator)."""
@@ -437,8 +441,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     p.add_argument("--cpu-minutes", type=float, default=None,
                    help="stop training when it has used this much CPU time (all its processes, all resumed runs)")
     p.add_argument("--no-feedback", action="store_true", help="leave out the previous action's feedback observation")
-    p.add_argument("--actions", default="all", choices=("all", "navigation"),
-                   help="the agent's actions: the env's whole space, or its five navigation actions (default all)")
+    p.add_argument("--actions", default="all", choices=tuple(ACTION_SETS),
+                   help="the agent's actions: the env's whole space (default), its five navigation actions, or "
+                        "those and Stop (objectnav)")
     p.add_argument("--no-normalize-reward", action="store_true", help="train on the raw rewards")
     args = p.parse_args(argv)
     if args.steps < 1 or args.eval_episodes < 0 or args.n_envs < 1 or args.save_every < 1:
@@ -448,7 +453,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     eval_kwargs = _kwargs(args.eval_kwarg)
     started = time.perf_counter()
     feedback = not args.no_feedback
-    actions = NAVIGATION if args.actions == "navigation" else None
+    actions = ACTION_SETS[args.actions]
     model = train(args.env, args.out, args.steps, seed=args.seed, env_kwargs=env_kwargs,
                   ppo_kwargs=_kwargs(args.ppo), n_envs=args.n_envs, save_every=args.save_every, resume=args.resume,
                   cpu_budget_s=None if args.cpu_minutes is None else args.cpu_minutes * 60, feedback=feedback,

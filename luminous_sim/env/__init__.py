@@ -29,6 +29,7 @@ if TYPE_CHECKING:
     from luminous_sim.env.registration import EnvEntry, eval_seeds, load_entries, register_envs
     from luminous_sim.env.reset_options import RESET_OPTIONS, ResetOptions, reset_options
     from luminous_sim.env.rewards import RewardConfig
+    from luminous_sim.env.vector import StepInfo, make_vector_env
     from luminous_sim.env.wrappers import (
         ActionFeedback,
         ActionSubset,
@@ -53,6 +54,7 @@ _WHERE = {
     "InstructionTokens": "wrappers", "ActionFeedback": "wrappers", "ActionSubset": "wrappers",
     "FailureLimitEnds": "wrappers", "NewPlaceBonus": "wrappers",
     "SceneRepeat": "wrappers",
+    "StepInfo": "vector", "make_vector_env": "vector",
 }
 
 __all__ = [
@@ -75,9 +77,11 @@ __all__ = [
     "ResetOptions",
     "RewardConfig",
     "SceneRepeat",
+    "StepInfo",
     "TaskKind",
     "eval_seeds",
     "load_entries",
+    "make_vector_env",
     "register_envs",
     "reset_options",
 ]

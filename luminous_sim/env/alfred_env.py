@@ -6,6 +6,7 @@ Observations (a `Dict`): `rgb` (H, W, 3) uint8; `instruction` (`Text`: the goal 
 of an episode); with `objects` targets,
 `objects` (the type of the object in each slot, as `inventory` gives it); optionally
 `depth` (H, W, 1) float32 metres, `segmentation` (H, W) int32 instance ids (PyBullet bodies, -1 for none),
+`goal_mask` (H, W, 1) uint8 (255 on the goal type's pixels; `luminous_sim.env.goal_mask`),
 `pose` (x, y metres, yaw and horizon degrees) and `inventory` (the held object's type, an index into
 `luminous_sim.vocab.ALL_TYPES` plus one; 0 for nothing).
 
@@ -71,6 +72,7 @@ from luminous_sim.env.episodes import (
     trial_episode,
 )
 from luminous_sim.env.expert import Expert
+from luminous_sim.env.goal_mask import goal_mask, goal_type
 from luminous_sim.env.history import Sent
 from luminous_sim.env.navscore import NavScore, nav_score
 from luminous_sim.env.replay import episode_data, episode_from_data, history_data, replay
@@ -157,6 +159,8 @@ class LuminousEnv(gymnasium.Env):
             obs["depth"] = spaces.Box(0.0, DEPTH_FAR, (c.height, c.width, 1), np.float32)
         if c.segmentation:
             obs["segmentation"] = spaces.Box(-1, np.iinfo(np.int32).max, (c.height, c.width), np.int32)
+        if c.goal_mask:
+            obs["goal_mask"] = spaces.Box(0, 255, (c.height, c.width, 1), np.uint8)
         if c.pose:
             obs["pose"] = spaces.Box(np.array([-POSE_BOUND, -POSE_BOUND, 0, -30], np.float32),
                                      np.array([POSE_BOUND, POSE_BOUND, 270, 60], np.float32), dtype=np.float32)
@@ -179,6 +183,8 @@ class LuminousEnv(gymnasium.Env):
         """The episode's navigation figures (start distance, SPL) when its goal is scored so (`navscore`)."""
         self._slots: list[str] = []
         self._texts = (".", ".")
+        self._goal_type = ""
+        """The type the `goal_mask` observation shows (`goal_mask.goal_type`)."""
         """The episode's `instruction` and `high_descs` texts (made at reset)."""
         self._steps = 0
         self._failures = 0
@@ -216,6 +222,7 @@ class LuminousEnv(gymnasium.Env):
     def _start(self, episode: Episode, world: World) -> None:
         self.history, self._steps, self._failures, self._ended = [], 0, 0, False
         self._texts = self._episode_texts()
+        self._goal_type = goal_type(episode.goal)
         self.expert = Expert.for_episode(episode, self.worlds)
         self.shaper.start(episode.goal, world, episode.expert)
         self.navscore = nav_score(episode.goal, world)
@@ -341,6 +348,8 @@ class LuminousEnv(gymnasium.Env):
             obs["depth"] = np.clip(depth, 0.0, DEPTH_FAR).astype(np.float32)[..., None]
         if c.segmentation:
             obs["segmentation"] = world.instance_ids().astype(np.int32)
+        if c.goal_mask:
+            obs["goal_mask"] = goal_mask(world, self._goal_type)
         if c.pose:
             p = world.agent
             obs["pose"] = np.array([p.x, p.y, p.rotation % 360, p.horizon], np.float32)

@@ -69,6 +69,10 @@ class EnvConfig:
         object_slots: the number of visible-object slots (`objects` targets).
         depth: add a `depth` observation (float32 metres).
         segmentation: add a `segmentation` observation (int32 instance index, -1 for background).
+        goal_mask: add a `goal_mask` observation: (H, W, 1) uint8, 255 where an object of the goal's type shows
+            (the goal's `object_type`; ALFRED's tasks: `pddl_params.object_target`'s type), else 0. A semantic
+            sensor for the goal's category only: privileged perception, as ObjectNav's ground-truth
+            semantics setting; a policy trained with it is evaluated with it.
         pose: add a `pose` observation (x, y metres, yaw and horizon degrees).
         inventory: add an `inventory` observation (index of the held object's type, 0 for none).
         step_instructions: follow the goal directive in `instruction` with step-by-step instructions (the
@@ -111,6 +115,7 @@ class EnvConfig:
     object_slots: int = 16
     depth: bool = False
     segmentation: bool = False
+    goal_mask: bool = False
     pose: bool = False
     inventory: bool = False
     step_instructions: bool = False

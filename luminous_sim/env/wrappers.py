@@ -53,9 +53,15 @@ class InstructionTokens(gymnasium.ObservationWrapper, gymnasium.utils.RecordCons
         inner = env.observation_space
         assert isinstance(inner, spaces.Dict) and "instruction" in inner.spaces, "needs a Dict with an instruction"
         self.observation_space = spaces.Dict({**inner.spaces, "instruction": tokens})
+        self._text: str | None = None
+        self._tokens = np.zeros(length, np.int64)
 
     def observation(self, observation: dict[str, Any]) -> dict[str, Any]:
-        return {**observation, "instruction": np.array(encode(observation["instruction"], self.length), np.int64)}
+        text = observation["instruction"]
+        if text != self._text:  # the instruction is fixed for an episode: encoded once, not every step
+            self._text, self._tokens = text, np.array(encode(text, self.length), np.int64)
+            self._tokens.flags.writeable = False
+        return {**observation, "instruction": self._tokens}
 
 
 class ActionFeedback(gymnasium.Wrapper, gymnasium.utils.RecordConstructorArgs):

@@ -17,7 +17,7 @@ from luminous_sim.env.actions import INTERACTIONS, NAVIGATION, ActionTable
 from luminous_sim.errors import LuminousError
 
 SMALL = "Luminous-PickUp-64-v1"
-ALL_OBS = {"depth": True, "segmentation": True, "pose": True, "inventory": True}
+ALL_OBS = {"depth": True, "segmentation": True, "goal_mask": True, "pose": True, "inventory": True}
 
 
 def small(**kwargs) -> LuminousEnv:
