@@ -5,6 +5,8 @@ steps per second of that loop against our own World on the same trials.
     python benchmarks/bench_thor.py --count 28 --out out/bench_thor
     python benchmarks/bench_thor.py --data DIR           # a folder `luminous dataset build` wrote (S+, U+,
                                                          # or --from-alfred)
+    python benchmarks/bench_thor.py --data DIR --modes eval,api --workers 2 --out OUT    # a whole split,
+                                                         # resumable: rows already in OUT are kept
 
 Needs ALFRED's code in ../shared/alfred/code (as `tests/thor` does; it says so and stops where it is absent).
 For each built trial it runs, in one process under `python -m luminous_sim.thor`:
@@ -15,6 +17,10 @@ For each built trial it runs, in one process under `python -m luminous_sim.thor`
   as judged successful when ALFRED's code says its goal is satisfied, no action failed, and ALFRED's
   goal-condition counts equal our judge's. Its steps/s is the trial's low actions over the whole
   `evaluate` call (set-up included, as ALFRED's evaluation pays it per episode).
+- `api` (with `--modes ...,api`): the replay ALFRED's data tools do: ALFRED's `restore_scene`, then each
+  recorded `api_action` through `ThorEnv.step`; a trial passes when every action succeeds, the goal is
+  satisfied and the goal-condition counts equal our judge's. `va`: the same with `va_interact` and the
+  decompressed masks outside `EvalTask` (what `eval` does inside it).
 
 and then, in this process, on the same trials:
 
@@ -62,15 +68,41 @@ def build_split(out: Path, split: str, count: int, start: int) -> Path:
     return out
 
 
-def alfred_rows(data: Path, mirror: Path, out: Path) -> list[dict[str, Any]]:
-    out.unlink(missing_ok=True)
-    cmd = [sys.executable, "-m", "luminous_sim.thor", "--data", str(data), str(DRIVER), "--alfred", str(mirror),
-           "--out", str(out), "--mode", "eval"]
-    proc = subprocess.run(cmd, cwd=ROOT, env={**os.environ, "PYTHONPATH": str(ROOT)}, capture_output=True,
-                          text=True)
-    if proc.returncode != 0:
-        raise SystemExit(f"ALFRED's loop did not run: {proc.stderr[-2000:]}")
-    return [json.loads(line) for line in out.read_text().splitlines()]
+def _read_rows(out: Path) -> list[dict[str, Any]]:
+    rows = []
+    for path in sorted(out.glob("rows*.jsonl")):
+        for line in path.read_text().splitlines():
+            try:
+                rows.append(json.loads(line))
+            except json.JSONDecodeError:  # a line cut by an interrupted run: that trial runs again
+                continue
+    return rows
+
+
+def alfred_rows(data: Path, mirror: Path, out: Path, trials: list[Path], modes: list[str],
+                workers: int = 1) -> list[dict[str, Any]]:
+    """ALFRED's code on every trial in every mode, in `workers` driver processes; rows already in `out`'s
+    `rows*.jsonl` are kept (a resumed sweep runs only the rest)."""
+    done = {(r["mode"], r["trial"]) for r in _read_rows(out)}
+    for mode in modes:
+        todo = [str(t) for t in trials if (mode, str(t)) not in done]
+        chunks = [todo[k::workers] for k in range(workers) if todo[k::workers]]
+        procs = [subprocess.Popen([sys.executable, "-m", "luminous_sim.thor", "--data", str(data), str(DRIVER),
+                                   "--alfred", str(mirror), "--out", str(out / f"rows-{k}.jsonl"), "--mode", mode,
+                                   "--trials", *chunk],
+                                  cwd=ROOT, env={**os.environ, "PYTHONPATH": str(ROOT)}, stderr=subprocess.PIPE,
+                                  text=True) for k, chunk in enumerate(chunks)]
+        for proc in procs:
+            _, err = proc.communicate()
+            if proc.returncode != 0:
+                raise SystemExit(f"ALFRED's loop did not run: {err[-2000:]}")
+    wanted = {str(t) for t in trials}
+    latest = {(r["mode"], r["trial"]): r for r in _read_rows(out) if r["trial"] in wanted and r["mode"] in modes}
+    return list(latest.values())
+
+
+def _passed(r: dict[str, Any]) -> bool:
+    return bool(r.get("satisfied") and not r.get("failures") and r.get("alfred_gc") == r.get("our_gc"))
 
 
 def _set_up(c: Any, traj: dict[str, Any]) -> None:
@@ -122,7 +154,13 @@ def main() -> int:
     parser.add_argument("--count", type=int, default=14, help="episodes to build (default 14: two per type)")
     parser.add_argument("--start", type=int, default=0)
     parser.add_argument("--out", type=Path, default=Path("out/bench_thor"))
+    parser.add_argument("--modes", default="eval", help="driver modes, comma-separated: eval, va, api (default eval)")
+    parser.add_argument("--workers", type=int, default=1, help="driver processes (trials split between them)")
+    parser.add_argument("--no-ours", action="store_true", help="skip the controller/World steps/s comparison")
     args = parser.parse_args()
+    modes = [m for m in args.modes.split(",") if m]
+    if not modes or set(modes) - {"eval", "va", "api"} or args.workers < 1:
+        parser.error("--modes: some of eval, va, api; --workers: a positive number")
     why = alfred_code.missing()
     if why:
         print(f"not run: {why}")
@@ -135,19 +173,28 @@ def main() -> int:
         alfred_code.mirror(mirror)
     trials = sorted(p.parent for p in data.glob("*/*/*/traj_data.json"))
     built = Counter(t.parent.name.split("-")[0] for t in trials)
-    rows = alfred_rows(data, mirror, args.out / "rows.jsonl")
-    judged = Counter(r["task_type"] for r in rows if r.get("satisfied") and not r.get("failures")
-                     and r.get("alfred_gc") == r.get("our_gc"))
-    print(f"\n{'task type':34s} judged successful by ALFRED's code / built")
-    for t in sorted(built):
-        print(f"{t:34s} {judged[t]:3d} / {built[t]:3d}")
-    print(f"{'all':34s} {sum(judged.values()):3d} / {len(trials):3d}")
-    for r in rows:
-        if not (r.get("satisfied") and not r.get("failures") and r.get("alfred_gc") == r.get("our_gc")):
-            print("  not judged successful:", Path(r["trial"]).parent.name, r.get("crash") or
-                  {k: r.get(k) for k in ("satisfied", "alfred_gc", "our_gc", "failures")})
-    steps = sum(r.get("steps", 0) for r in rows if "crash" not in r)
-    seconds = sum(r.get("seconds", 0.0) for r in rows if "crash" not in r)
+    t0 = time.perf_counter()
+    rows = alfred_rows(data, mirror, args.out, trials, modes, args.workers)
+    print(f"ALFRED's code ran in {time.perf_counter() - t0:.0f} s (this call; rows kept from earlier calls are "
+          "not timed)")
+    for mode in modes:
+        mine_rows = [r for r in rows if r["mode"] == mode]
+        judged = Counter(r["task_type"] for r in mine_rows if _passed(r))
+        print(f"\nmode {mode}: {'task type':28s} judged successful by ALFRED's code / built")
+        for t in sorted(built):
+            print(f"{'':10s}{t:34s} {judged[t]:4d} / {built[t]:4d}")
+        print(f"{'':10s}{'all':34s} {sum(judged.values()):4d} / {len(trials):4d} "
+              f"({sum(judged.values()) / max(len(trials), 1):.3f}; rows {len(mine_rows)})")
+        for r in mine_rows:
+            if not _passed(r):
+                print("  not judged successful:", Path(r["trial"]).parent.name, Path(r["trial"]).name,
+                      r.get("crash") or {k: r.get(k) for k in ("satisfied", "alfred_gc", "our_gc", "failures")})
+    timed = [r for r in rows if r["mode"] == "eval" and "crash" not in r]
+    steps = sum(r.get("steps", 0) for r in timed)
+    seconds = sum(r.get("seconds", 0.0) for r in timed)
+    if args.no_ours or not timed:
+        print(f"\nend: {machine()}")
+        return 0
     mine = ours(data, trials)
     print(f"\n{'engine':52s} actions  seconds  steps/s  failed")
     print(f"{'ALFRED EvalTask.evaluate on luminous_sim.thor':52s} {steps:7d} {seconds:8.1f} {steps / seconds:8.1f}"
