@@ -57,6 +57,10 @@ class RewardConfig:
     """ALFRED's reward per path step gained toward the current go-to location."""
     goto_reach: float = 3.0
     """ALFRED's `min_reach_distance`: a go-to is done within fewer path steps than this."""
+    failed_stop: float = 0.0
+    """Added when Stop ends a goal that counts only at Stop (ObjectNav) without reaching it. 0: the field scores
+    a wrong Stop as a failed episode and nothing more; a training option (a negative value keeps a learner from
+    stopping at once to end episodes that pay little)."""
     positive: Mapping[str, float] = field(default_factory=lambda: POSITIVE)
     sparse: bool = False
 

@@ -70,6 +70,8 @@ class RewardShaper:
                              step=step, expert_length=self._expert_length)
         if self.goto is not None:
             reward += self.goto.step(world.agent, action, ok)
+        if self._stopped and self.goal.stop_to_succeed and not success:
+            reward += self.config.failed_stop
         return reward
 
     def replayed(self, world: World, action: str, ok: bool) -> None:

@@ -39,3 +39,29 @@ def test_sparse_pays_the_goal_only_and_overrides_apply():
     assert reward(NONE, {**NONE, "isHot(Apple)": 1}, cfg, reached=True) == 13
     with pytest.raises(LuminousError, match="unknown term"):
         RewardConfig.of("dense", {"bonus": 1})
+
+
+def test_failed_stop_costs_only_a_wrong_stop_of_a_stop_judged_goal():
+    import gymnasium
+
+    import luminous_sim  # noqa: F401  (registers the ids)
+    from luminous_sim.env.actions import STOP
+
+    plain = gymnasium.make("Luminous-ObjectNav-64-v2").unwrapped
+    costly = gymnasium.make("Luminous-ObjectNav-64-v2", reward={"failed_stop": -1.0}).unwrapped
+    stop = plain.actions.index(STOP)
+    rewards = []
+    for env in (plain, costly):
+        env.reset(seed=5)
+        _, reward, terminated, _, info = env.step(stop)  # starts are >= 2 m from success: a wrong Stop
+        assert terminated and not info["success"]
+        rewards.append(reward)
+    assert rewards[1] == rewards[0] - 1.0
+    costly.reset(seed=5)
+    info: dict = {}
+    while not info.get("success"):
+        _, reward, _, truncated, info = costly.step(costly.expert_action())
+        assert not truncated
+    assert reward >= 5.0 - 0.01  # the right Stop earns the goal (less ALFRED's step penalty), no cost
+    for env in (plain, costly):
+        env.close()
