@@ -101,6 +101,21 @@ def alfred_rows(data: Path, mirror: Path, out: Path, trials: list[Path], modes: 
     return list(latest.values())
 
 
+def _in_order(data: Path) -> list[Path]:
+    """The build's trials in its manifest's episode order (path order where it has none)."""
+    found = sorted(p.parent for p in data.glob("*/*/*/traj_data.json"))
+    manifest = data / "manifest.jsonl"
+    if not manifest.exists():
+        return found
+    order: dict[str, int] = {}
+    for line in manifest.read_text().splitlines():
+        record = json.loads(line)
+        path = record.get("trial") or record.get("path")
+        if isinstance(path, str):
+            order.setdefault(Path(path).name, len(order))
+    return sorted(found, key=lambda t: (order.get(t.name, len(order)), str(t)))
+
+
 def _passed(r: dict[str, Any]) -> bool:
     return bool(r.get("satisfied") and not r.get("failures") and r.get("alfred_gc") == r.get("our_gc"))
 
@@ -157,10 +172,12 @@ def main() -> int:
     parser.add_argument("--modes", default="eval", help="driver modes, comma-separated: eval, va, api (default eval)")
     parser.add_argument("--workers", type=int, default=1, help="driver processes (trials split between them)")
     parser.add_argument("--no-ours", action="store_true", help="skip the controller/World steps/s comparison")
+    parser.add_argument("--every", type=int, default=1,
+                        help="every K-th trial of the build in episode order (a sample across types; default 1)")
     args = parser.parse_args()
     modes = [m for m in args.modes.split(",") if m]
-    if not modes or set(modes) - {"eval", "va", "api"} or args.workers < 1:
-        parser.error("--modes: some of eval, va, api; --workers: a positive number")
+    if not modes or set(modes) - {"eval", "va", "api"} or args.workers < 1 or args.every < 1:
+        parser.error("--modes: some of eval, va, api; --workers, --every: positive numbers")
     why = alfred_code.missing()
     if why:
         print(f"not run: {why}")
@@ -171,7 +188,7 @@ def main() -> int:
     mirror = args.out / "alfred"
     if not mirror.exists():
         alfred_code.mirror(mirror)
-    trials = sorted(p.parent for p in data.glob("*/*/*/traj_data.json"))
+    trials = _in_order(data)[::args.every]
     built = Counter(t.parent.name.split("-")[0] for t in trials)
     t0 = time.perf_counter()
     rows = alfred_rows(data, mirror, args.out, trials, modes, args.workers)
