@@ -160,13 +160,13 @@ def play(outer: gymnasium.Env, policy: Policy, seed: int) -> dict[str, Any]:
 def trained_player(env_id: str, folder: Path, seed: int) -> tuple[gymnasium.Env, Policy]:
     """The policy trained in `folder` and the env it plays in (the id with its observation options and
     wrappers)."""
+    config = json.loads((folder / "config.json").read_text())
+    if config["env_id"] != env_id:
+        raise SystemExit(f"{folder}: trained on {config['env_id']}, not {env_id}")
     sys.path.insert(0, str(ROOT / "examples"))
     import train_ppo
     from stable_baselines3 import PPO
 
-    config = json.loads((folder / "config.json").read_text())
-    if config["env_id"] != env_id:
-        raise SystemExit(f"{folder}: trained on {config['env_id']}, not {env_id}")
     model = PPO.load(folder / "model.zip", device="cpu")
     model.set_random_seed(seed)
     outer = train_ppo.make_env(env_id, train_ppo.observation_kwargs(config["env_kwargs"]),
