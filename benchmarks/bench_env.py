@@ -14,7 +14,8 @@ and in the vector envs alike, so the figures compare like with like:
   on Stop, so no episode ends while timed), and `random`, uniform over every action but Stop (mostly
   interactions at grid points, which mostly fail and render nothing new); episode limits raised; an episode
   that ends is reset inside the timed span, as the vector envs' autoreset is;
-- env steps/s of `make_vector_env(..., 2)` (gymnasium's `AsyncVectorEnv`, shared memory) and of
+- env steps/s of `make_vector_env(..., 2, copy=False)` (gymnasium's `AsyncVectorEnv`, shared memory, the
+  observations handed out as views of the shared buffers, as the single process hands out its own) and of
   stable-baselines3's `SubprocVecEnv` over the same envs (`backend="subproc"`), 2 workers, the same episode
   (id and seed) in each worker and in the single process, counted as environment steps (2 per vector step),
   and the ratio to the single process;
@@ -99,7 +100,8 @@ def vector_steps_per_s(env_id: str, options: dict, mix: str, seed: int, repeats:
                        backend: str = "async", workers: int = 2) -> tuple[list[float], int]:
     """Environment steps/s (workers per vector step) of `make_vector_env(backend=...)` per repeat, and the
     autoresets."""
-    envs = make_vector_env(env_id, workers, backend=backend, **options, **LIMITS)
+    extra = {"copy": False} if backend == "async" else {}  # the single process hands out its arrays uncopied too
+    envs = make_vector_env(env_id, workers, backend=backend, **extra, **options, **LIMITS)
     rng = np.random.default_rng(seed)
     if backend == "subproc":
         envs.seed(seed)
