@@ -87,6 +87,9 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--actions", default="navigation", choices=tuple(train_ppo.ACTION_SETS),
                    help="the agent's actions: the five navigation ones (default), those and Stop (objectnav) or "
                         "the env's whole space")
+    p.add_argument("--new-place-bonus", type=float, default=train_ppo.NEW_PLACE_BONUS,
+                   help=f"training reward per grid position first stood on (default {train_ppo.NEW_PLACE_BONUS}; "
+                        "0: none)")
     p.add_argument("--env-kwarg", action="append", default=[], metavar="NAME=VALUE",
                    help=f"training env option (repeatable; on top of {train_ppo.TRAIN_KWARGS}); the observation "
                         "options among them are used in evaluation too")
@@ -107,7 +110,8 @@ def main(argv: list[str] | None = None) -> int:
         model = train_ppo.train(args.env, args.out, args.max_steps, seed=args.seed, n_envs=args.n_envs,
                                 ppo_kwargs=train_ppo._kwargs(args.ppo), cpu_budget_s=args.cpu_minutes * 60,
                                 resume=args.resume, save_every=2000, actions=train_ppo.ACTION_SETS[args.actions],
-                                env_kwargs={**train_ppo.TRAIN_KWARGS, **train_ppo._kwargs(args.env_kwarg)})
+                                env_kwargs={**train_ppo.TRAIN_KWARGS, **train_ppo._kwargs(args.env_kwarg)},
+                                new_place_bonus=args.new_place_bonus)
     wall = time.perf_counter() - t0
     progress = json.loads((args.out / "progress.json").read_text())
     config = json.loads((args.out / "config.json").read_text())

@@ -97,16 +97,19 @@ def observation_kwargs(env_kwargs: dict[str, Any]) -> dict[str, Any]:
 
 
 def make_env(env_id: str, env_kwargs: dict[str, Any] | None = None, *, feedback: bool = False,
-             actions: Sequence[str] | None = None, training: bool = False, scene_repeats: int = 1) -> gymnasium.Env:
+             actions: Sequence[str] | None = None, training: bool = False, scene_repeats: int = 1,
+             new_place_bonus: float = NEW_PLACE_BONUS) -> gymnasium.Env:
     """The registered id with its instruction as token ids (what SB3's `MultiInputPolicy` takes); with
     `feedback`, the previous action and whether it failed as an observation (`ActionFeedback`); with `actions`
     (names), the agent acts over those actions only (`ActionSubset`); with `training`,
     the failure limit ends an episode as a termination (`FailureLimitEnds`), each scene serves
-    `scene_repeats` episodes (`SceneRepeat`) and each grid position first stood on earns `NEW_PLACE_BONUS`
-    (`NewPlaceBonus`)."""
+    `scene_repeats` episodes (`SceneRepeat`) and each grid position first stood on earns `new_place_bonus`
+    (`NewPlaceBonus`; 0: none)."""
     env: gymnasium.Env = gymnasium.make(env_id, **(env_kwargs or {}))
     if training:
-        env = NewPlaceBonus(FailureLimitEnds(SceneRepeat(env, scene_repeats)), NEW_PLACE_BONUS)
+        env = FailureLimitEnds(SceneRepeat(env, scene_repeats))
+        if new_place_bonus:
+            env = NewPlaceBonus(env, new_place_bonus)
     env = InstructionTokens(env)
     if actions:
         env = ActionSubset(env, actions)
@@ -115,21 +118,24 @@ def make_env(env_id: str, env_kwargs: dict[str, Any] | None = None, *, feedback:
 
 
 def _monitored(env_id: str, env_kwargs: dict[str, Any], feedback: bool, actions: Sequence[str] | None,
-               scene_repeats: int) -> gymnasium.Env:
+               scene_repeats: int, new_place_bonus: float) -> gymnasium.Env:
     from stable_baselines3.common.monitor import Monitor
 
-    env = make_env(env_id, env_kwargs, feedback=feedback, actions=actions, training=True, scene_repeats=scene_repeats)
+    env = make_env(env_id, env_kwargs, feedback=feedback, actions=actions, training=True, scene_repeats=scene_repeats,
+                   new_place_bonus=new_place_bonus)
     return Monitor(env, info_keywords=("success",))
 
 
 def make_vec_env(env_id: str, env_kwargs: dict[str, Any], n_envs: int, seed: int, *, feedback: bool = False,
-                 actions: Sequence[str] | None = None, scene_repeats: int = 1, processes: bool = True) -> Any:
+                 actions: Sequence[str] | None = None, scene_repeats: int = 1, processes: bool = True,
+                 new_place_bonus: float = NEW_PLACE_BONUS) -> Any:
     """`n_envs` monitored training envs, in worker processes (`processes` and more than one env) or in this one."""
     from functools import partial
 
     from stable_baselines3.common.vec_env import DummyVecEnv, SubprocVecEnv
 
-    makers = [partial(_monitored, env_id, env_kwargs, feedback, actions, scene_repeats) for _ in range(n_envs)]
+    makers = [partial(_monitored, env_id, env_kwargs, feedback, actions, scene_repeats, new_place_bonus)
+              for _ in range(n_envs)]
     vec = SubprocVecEnv(makers, start_method="fork") if processes and n_envs > 1 else DummyVecEnv(makers)
     vec.seed(seed)
     return vec
@@ -217,7 +223,7 @@ def train(env_id: str, out: Path, steps: int, *, seed: int = 0, env_kwargs: dict
           time_budget_s: float | None = None, cpu_budget_s: float | None = None, feedback: bool = True,
           actions: Sequence[str] | None = None,
           normalize_reward: bool = True, scene_repeats: int = 4, processes: bool = True, torch_threads: int | None = 1,
-          verbose: int = 0) -> Any:
+          new_place_bonus: float = NEW_PLACE_BONUS, verbose: int = 0) -> Any:
     """Train (or go on training) PPO with `MultiInputPolicy` until `steps` timesteps in all, until
     `time_budget_s` seconds of this call have passed, or until the training's CPU time (this process and its env
     workers, every call on this `out` together) reaches `cpu_budget_s`; the model.
@@ -250,7 +256,7 @@ def train(env_id: str, out: Path, steps: int, *, seed: int = 0, env_kwargs: dict
     progress_path = out / "progress.json"
     resuming = resume and model_path.exists()
     vec = make_vec_env(env_id, env_kwargs, n_envs, seed, feedback=feedback, actions=actions,
-                       scene_repeats=scene_repeats, processes=processes)
+                       scene_repeats=scene_repeats, processes=processes, new_place_bonus=new_place_bonus)
     pids = worker_pids(vec)
     if normalize_reward:
         vec = (VecNormalize.load(str(norm_path), vec) if resuming and norm_path.exists()
@@ -264,7 +270,7 @@ def train(env_id: str, out: Path, steps: int, *, seed: int = 0, env_kwargs: dict
         rows, cpu_before = [], 0.0
     config = {"env_id": env_id, "env_kwargs": env_kwargs, "ppo": ppo_kwargs, "policy": "MultiInputPolicy",
               "feedback": feedback, "feedback_history": FEEDBACK_HISTORY if feedback else 0,
-              "new_place_bonus": NEW_PLACE_BONUS,
+              "new_place_bonus": new_place_bonus,
               "actions": list(actions) if actions else None,
               "normalize_reward": normalize_reward, "failure_limit_ends": True,
               "scene_repeats": scene_repeats,
@@ -445,6 +451,8 @@ def main(argv: Sequence[str] | None = None) -> int:
                    help="the agent's actions: the env's whole space (default), its five navigation actions, or "
                         "those and Stop (objectnav)")
     p.add_argument("--no-normalize-reward", action="store_true", help="train on the raw rewards")
+    p.add_argument("--new-place-bonus", type=float, default=NEW_PLACE_BONUS,
+                   help=f"training reward per grid position first stood on (default {NEW_PLACE_BONUS}; 0: none)")
     args = p.parse_args(argv)
     if args.steps < 1 or args.eval_episodes < 0 or args.n_envs < 1 or args.save_every < 1:
         p.error("--steps, --n-envs and --save-every must be positive, --eval-episodes >= 0")
@@ -457,7 +465,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     model = train(args.env, args.out, args.steps, seed=args.seed, env_kwargs=env_kwargs,
                   ppo_kwargs=_kwargs(args.ppo), n_envs=args.n_envs, save_every=args.save_every, resume=args.resume,
                   cpu_budget_s=None if args.cpu_minutes is None else args.cpu_minutes * 60, feedback=feedback,
-                  normalize_reward=not args.no_normalize_reward, actions=actions)
+                  normalize_reward=not args.no_normalize_reward, actions=actions, new_place_bonus=args.new_place_bonus)
     train_s = time.perf_counter() - started
     report: dict[str, Any] = {"env_id": args.env, "eval_kwargs": eval_kwargs, "train_seconds": round(train_s, 1),
                               "timesteps": int(model.num_timesteps)}
