@@ -15,10 +15,12 @@ and in the vector envs alike, so the figures compare like with like:
   interactions at grid points, which mostly fail and render nothing new); episode limits raised; an episode
   that ends is reset inside the timed span, as the vector envs' autoreset is;
 - env steps/s of `make_vector_env(..., 2, copy=False)` (gymnasium's `AsyncVectorEnv`, shared memory, the
-  observations handed out as views of the shared buffers, as the single process hands out its own) and of
-  stable-baselines3's `SubprocVecEnv` over the same envs (`backend="subproc"`), 2 workers, the same episode
-  (id and seed) in each worker and in the single process, counted as environment steps (2 per vector step),
-  and the ratio to the single process;
+  observations handed out as views of the shared buffers, as the single process hands out its own), of
+  stable-baselines3's `SubprocVecEnv` over the same envs (`backend="subproc"`), and of `make_vector_env(...,
+  2 * k, workers=2)` (`GroupedVectorEnv`: 2 worker processes stepping k envs each in turn; `--per-worker`), the
+  same episode (id and seed) in every env and in the single process, counted as environment steps, and the
+  ratio to the single process; then two single-env processes stepping at once (no vector env: the ceiling
+  two cores give);
 - reset time for a new scene (`reset(seed=s)`, a fresh seed each repeat: CSSG generates a room or a house, a
   goal is drawn and the expert's plan proved) and for a reused one (`reset(seed=s, options={"scene": scene})`
   with the scene of the previous episode: no generation, and the env's kept worlds of that scene are put
@@ -97,19 +99,22 @@ def single_steps_per_s(env_id: str, options: dict, mix: str, seed: int, repeats:
 
 
 def vector_steps_per_s(env_id: str, options: dict, mix: str, seed: int, repeats: int, seconds: float,
-                       backend: str = "async", workers: int = 2) -> tuple[list[float], int]:
-    """Environment steps/s (workers per vector step) of `make_vector_env(backend=...)` per repeat, and the
-    autoresets."""
-    extra = {"copy": False} if backend == "async" else {}  # the single process hands out its arrays uncopied too
-    envs = make_vector_env(env_id, workers, backend=backend, **extra, **options, **LIMITS)
+                       backend: str = "async", workers: int = 2, per_worker: int = 1) -> tuple[list[float], int]:
+    """Environment steps/s (envs per vector step) of `make_vector_env(backend=...)` with `workers` processes of
+    `per_worker` envs each, per repeat, and the autoresets."""
+    extra: dict = {"copy": False} if backend == "async" else {}  # the single process hands out its arrays uncopied
+    if per_worker > 1:
+        extra["workers"] = workers
+    n_envs = workers * per_worker
+    envs = make_vector_env(env_id, n_envs, backend=backend, **extra, **options, **LIMITS)
     rng = np.random.default_rng(seed)
     if backend == "subproc":
         envs.seed(seed)
-        for i in range(workers):  # SB3 seeds worker i with seed + i: the same episode in each instead
+        for i in range(n_envs):  # SB3 seeds env i with seed + i: the same episode in each instead
             envs.env_method("reset", seed=seed, indices=[i])
         n = int(envs.action_space.n)
     else:
-        envs.reset(seed=[seed] * workers)
+        envs.reset(seed=[seed] * n_envs)
         n = int(envs.single_action_space.n)
     rates, ended = [], 0
     for _ in range(repeats):
@@ -117,15 +122,28 @@ def vector_steps_per_s(env_id: str, options: dict, mix: str, seed: int, repeats:
         t0 = time.perf_counter()
         while time.perf_counter() - t0 < seconds:
             if backend == "subproc":
-                _, _, done, _ = envs.step(_actions(mix, n, rng, workers))
+                _, _, done, _ = envs.step(_actions(mix, n, rng, n_envs))
             else:
-                _, _, terminated, truncated, _ = envs.step(_actions(mix, n, rng, workers))
+                _, _, terminated, truncated, _ = envs.step(_actions(mix, n, rng, n_envs))
                 done = terminated | truncated
-            steps += workers
+            steps += n_envs
             ended += int(np.sum(done))
         rates.append(steps / (time.perf_counter() - t0))
     envs.close()
     return rates, ended
+
+
+def _alone(job: tuple[str, dict, str, int, int, float]) -> list[float]:
+    env_id, options, mix, seed, repeats, seconds = job
+    return single_steps_per_s(env_id, options, mix, seed, repeats, seconds)[0]
+
+
+def two_processes(env_id: str, options: dict, mix: str, seed: int, repeats: int, seconds: float) -> list[float]:
+    """Steps/s of two single-env processes stepping at once, summed per repeat: what two cores give with no
+    vector env between them."""
+    with mp.get_context("fork").Pool(2) as pool:
+        a, b = pool.map(_alone, [(env_id, options, mix, seed, repeats, seconds)] * 2)
+    return [x + y for x, y in zip(a, b, strict=True)]
 
 
 def reset_seconds(env_id: str, options: dict, seed: int,
@@ -187,10 +205,17 @@ def bench(spec_id: str, args: argparse.Namespace) -> None:
     for mix in args.mixes:
         rates, ended = single_steps_per_s(env_id, options, mix, args.seed, args.repeats, args.seconds)
         print(f"  steps/s, {mix:6} single process:     {spread(rates)}   episodes ended: {ended}", flush=True)
-        for backend, name in (("async", "AsyncVectorEnv x2"), ("subproc", "SubprocVecEnv x2 ")):
-            vrates, vended = vector_steps_per_s(env_id, options, mix, args.seed, args.repeats, args.seconds, backend)
-            print(f"  steps/s, {mix:6} {name}:  {spread(vrates)}   autoresets: {vended}"
+        setups = [("async", 1, "AsyncVectorEnv, 2 envs"), ("subproc", 1, "SubprocVecEnv, 2 envs")]
+        setups += [("async", k, f"grouped, 2 workers x {k} envs") for k in args.per_worker]
+        for backend, per_worker, name in setups:
+            vrates, vended = vector_steps_per_s(env_id, options, mix, args.seed, args.repeats, args.seconds, backend,
+                                                per_worker=per_worker)
+            print(f"  steps/s, {mix:6} {name:28s} {spread(vrates)}   autoresets: {vended}"
                   f"   ({statistics.median(vrates) / statistics.median(rates):.2f}x single)", flush=True)
+        pair = two_processes(env_id, options, mix, args.seed, args.repeats, args.seconds)
+        print(f"  steps/s, {mix:6} two independent processes     {spread(pair)}"
+              f"   ({statistics.median(pair) / statistics.median(rates):.2f}x single: the ceiling of 2 cores)",
+              flush=True)
     resets(spec_id, args)
     with mp.get_context("spawn").Pool(1) as pool:
         before, rss, worlds = pool.apply(env_process_memory, ((env_id, options, args.seed),))
@@ -216,6 +241,8 @@ def main(argv: list[str] | None = None) -> None:
     ap.add_argument("--seed", type=int, default=0, help="episode seed (and action-generator seed)")
     ap.add_argument("--repeats", type=int, default=3, help="repeats per figure (median and min..max reported)")
     ap.add_argument("--seconds", type=float, default=1.5, help="seconds stepping per repeat of a steps/s figure")
+    ap.add_argument("--per-worker", nargs="*", type=int, default=[8, 16],
+                    help="envs per worker of the grouped vector env (2 workers) to measure")
     args = ap.parse_args(argv)
     print(f"CPU: {cpu_model()}, {os.cpu_count()} cores; load average at start (1, 5, 15 min): {os.getloadavg()}")
     for spec_id in args.ids:

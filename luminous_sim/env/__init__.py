@@ -29,6 +29,7 @@ if TYPE_CHECKING:
     from luminous_sim.env.registration import EnvEntry, eval_seeds, load_entries, register_envs
     from luminous_sim.env.reset_options import RESET_OPTIONS, ResetOptions, reset_options
     from luminous_sim.env.rewards import RewardConfig
+    from luminous_sim.env.grouped_vector import GroupedVectorEnv, VectorWorkerError
     from luminous_sim.env.vector import StepInfo, make_vector_env
     from luminous_sim.env.wrappers import (
         ActionFeedback,
@@ -55,6 +56,7 @@ _WHERE = {
     "FailureLimitEnds": "wrappers", "NewPlaceBonus": "wrappers",
     "SceneRepeat": "wrappers",
     "StepInfo": "vector", "make_vector_env": "vector",
+    "GroupedVectorEnv": "grouped_vector", "VectorWorkerError": "grouped_vector",
 }
 
 __all__ = [
@@ -69,6 +71,7 @@ __all__ = [
     "EpisodeUnavailable",
     "Expert",
     "FailureLimitEnds",
+    "GroupedVectorEnv",
     "InstructionTokens",
     "LuminousEnv",
     "NewPlaceBonus",
@@ -79,6 +82,7 @@ __all__ = [
     "SceneRepeat",
     "StepInfo",
     "TaskKind",
+    "VectorWorkerError",
     "eval_seeds",
     "load_entries",
     "make_vector_env",

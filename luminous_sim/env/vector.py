@@ -13,6 +13,10 @@ Two workers of a 64 px env stepped through a plain `AsyncVectorEnv` gained 1.2x 
 - autoreset happens in the worker (gymnasium's next-step mode): the step after an episode ends resets it there,
   and the main process only reads the new observation from shared memory.
 
+With `workers` fewer than the envs, each worker process steps its share of the envs in turn
+(`GroupedVectorEnv`): lock-step waiting and process wake-ups are paid once per worker, not per env, which is
+what lets two workers use two cores (docs/benchmarks.md, "Environment speed").
+
 `backend="subproc"` gives stable-baselines3's `SubprocVecEnv` over the same wrapped envs (SB3's own vector
 API: `reset()` returns only observations, autoreset in the same step), for SB3 users.
 """
@@ -72,15 +76,18 @@ def env_makers(env_id: str, num_envs: int, **kwargs: Any) -> list[Callable[[], g
     return [partial(wrapped_env, env_id, **kwargs) for _ in range(num_envs)]
 
 
-def make_vector_env(env_id: str, num_envs: int = 2, *, backend: str = "async", tokens: int = 32,
-                    step_keys: Sequence[str] | None = STEP_KEYS, copy: bool = True, **kwargs: Any) -> Any:
+def make_vector_env(env_id: str, num_envs: int = 2, *, backend: str = "async", workers: int | None = None,
+                    tokens: int = 32, step_keys: Sequence[str] | None = STEP_KEYS, copy: bool = True,
+                    **kwargs: Any) -> Any:
     """`num_envs` copies of a registered id in worker processes (see the module docstring).
 
     Args:
         env_id: a registered id; `kwargs` are its env options (`EnvConfig`).
-        num_envs: how many envs (one worker process each; `sync`: all in this process).
+        num_envs: how many envs (one worker process each, unless `workers`; `sync`: all in this process).
         backend: `async` (gymnasium's `AsyncVectorEnv`, shared memory), `sync` (`SyncVectorEnv`, for
             debugging) or `subproc` (stable-baselines3's `SubprocVecEnv`; needs the `learn` extra).
+        workers: `async`: worker processes, each stepping its share of the envs in turn (`GroupedVectorEnv`);
+            None: one per env (gymnasium's `AsyncVectorEnv`).
         tokens: instruction length in token ids (0: the instruction stays text, and `async` copies it each step).
         step_keys: info keys kept on steps that do not end an episode (None: the env's whole info).
         copy: `async`: return copies of the observations (False: views into the shared buffers, overwritten by
@@ -95,4 +102,8 @@ def make_vector_env(env_id: str, num_envs: int = 2, *, backend: str = "async", t
         from stable_baselines3.common.vec_env import SubprocVecEnv
 
         return SubprocVecEnv(makers, start_method="fork")
+    if workers is not None and workers != num_envs:
+        from luminous_sim.env.grouped_vector import GroupedVectorEnv
+
+        return GroupedVectorEnv(makers, workers, copy=copy)
     return gymnasium.vector.AsyncVectorEnv(makers, shared_memory=True, copy=copy, context="fork")

@@ -22,6 +22,13 @@ FAST = {"verify_expert": False}
 ACTIONS = [[0, 1], [2, 0], [1, 4], [3, 2], [0, 0]]
 
 
+def _stop_index() -> int:
+    env = gymnasium.make(ID, **FAST)
+    index = env.unwrapped.actions.index(STOP)  # type: ignore[attr-defined]
+    env.close()
+    return int(index)
+
+
 def _single(seed: int, actions: list[int]) -> tuple[list[np.ndarray], np.ndarray]:
     env = wrapped_env(ID, **FAST)
     obs, _ = env.reset(seed=seed)
@@ -50,7 +57,7 @@ def test_async_vector_env_plays_the_single_process_episodes():
             for got, want in zip(frames, single, strict=True):
                 np.testing.assert_array_equal(got[i], want)
             np.testing.assert_array_equal(obs["instruction"][i], tokens)
-        stop = envs.unwrapped.env_fns[0]().unwrapped.actions.index(STOP)  # type: ignore[attr-defined]
+        stop = _stop_index()
         _, _, terminated, _, info = envs.step(np.array([stop, 0]))
         assert terminated.tolist() == [True, False]
         assert info["_spl"].tolist() == [True, False]  # the ending step's info is whole (SPL is in it)
@@ -111,3 +118,47 @@ def test_bad_arguments_are_named(kwargs, words):
 def test_step_info_refuses_a_string_of_keys():
     with pytest.raises(WrapperArgumentError, match="StepInfo keys"):
         StepInfo(gymnasium.make(ID, **FAST), keys="success")
+
+
+def test_grouped_workers_play_the_single_process_episodes_and_autoreset():
+    envs = make_vector_env(ID, 4, workers=2, **FAST)
+    try:
+        assert [len(g) for g in envs.unwrapped.groups] == [2, 2] and len(envs.unwrapped.processes) == 2
+        seeds = [5, 6, 7, 8]
+        obs, info = envs.reset(seed=seeds)
+        assert obs["rgb"].shape == (4, 64, 64, 3) and info["_episode_key"].all()
+        frames = [obs["rgb"]]
+        moves = [[0, 1, 2, 3], [2, 0, 1, 1], [1, 4, 0, 2]]
+        for row in moves:
+            obs, _, terminated, truncated, info = envs.step(np.array(row))
+            assert not (terminated.any() or truncated.any())
+            frames.append(obs["rgb"])
+        for i, seed in enumerate(seeds):
+            single, tokens = _single(seed, [m[i] for m in moves])
+            for got, want in zip(frames, single, strict=True):
+                np.testing.assert_array_equal(got[i], want)
+            np.testing.assert_array_equal(obs["instruction"][i], tokens)
+        stop = _stop_index()
+        _, _, terminated, _, info = envs.step(np.array([0, 0, stop, 0]))
+        assert terminated.tolist() == [False, False, True, False] and info["_spl"].tolist() == [False, False, True,
+                                                                                                 False]
+        _, reward, terminated, _, _ = envs.step(np.array([0, 0, 0, 0]))  # env 2 resets in its worker
+        assert not terminated.any() and reward[2] == 0.0
+    finally:
+        envs.close()
+
+
+def test_a_worker_error_is_raised_here_naming_the_env():
+    from luminous_sim.env.grouped_vector import VectorWorkerError
+
+    envs = make_vector_env(ID, 2, workers=1, **FAST)
+    try:
+        with pytest.raises(VectorWorkerError, match="env 0 of the vector env raised in its worker"):
+            envs.reset(seed=[1, 2], options={"no_such_option": 1})
+    finally:
+        envs.close()
+
+
+def test_grouped_workers_must_be_between_one_and_the_envs():
+    with pytest.raises(Exception, match="GroupedVectorEnv workers: expected a whole number from 1 to 2"):
+        make_vector_env(ID, 2, workers=3, **FAST)
