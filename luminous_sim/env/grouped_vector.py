@@ -99,7 +99,7 @@ class GroupedVectorEnv(VectorEnv):
         self.num_envs, self.copy = n, copy
         self.observation_space = batch_space(self.single_observation_space, n)
         self.action_space = batch_space(self.single_action_space, n)
-        ctx = mp.get_context(context or ("fork" if "fork" in mp.get_all_start_methods() else None))
+        ctx: Any = mp.get_context(context or ("fork" if "fork" in mp.get_all_start_methods() else None))
         self._shared = create_shared_memory(self.single_observation_space, n, ctx=ctx)
         self._observations = read_from_shared_memory(self.single_observation_space, self._shared, n)
         self.groups = [list(map(int, g)) for g in np.array_split(np.arange(n), workers)]
