@@ -24,12 +24,12 @@ if TYPE_CHECKING:
     from luminous_sim.env.config import EnvConfig
     from luminous_sim.env.episodes import UNAVAILABLE_CAUSES, EpisodeUnavailable
     from luminous_sim.env.expert import Expert
+    from luminous_sim.env.grouped_vector import GroupedVectorEnv, VectorWorkerError
     from luminous_sim.env.kinds import TASK_KINDS, TaskKind
     from luminous_sim.env.oracle_policy import OraclePolicy
     from luminous_sim.env.registration import EnvEntry, eval_seeds, load_entries, register_envs
     from luminous_sim.env.reset_options import RESET_OPTIONS, ResetOptions, reset_options
     from luminous_sim.env.rewards import RewardConfig
-    from luminous_sim.env.grouped_vector import GroupedVectorEnv, VectorWorkerError
     from luminous_sim.env.vector import StepInfo, make_vector_env
     from luminous_sim.env.wrappers import (
         ActionFeedback,
