@@ -10,7 +10,8 @@ per k steps, and the lengths of k steps vary less, relatively, than one's.
 
 Semantics are gymnasium's `AsyncVectorEnv` with shared memory: the observations in a shared buffer (returned
 as views unless `copy`), infos merged per key with `_key` masks, next-step autoreset in the worker. A worker
-that raises sends the error back; the call raises it in this process, naming the env.
+that raises sends the error back; the call raises it in this process, naming the env. It offers `reset`,
+`step` and `close` (what a training loop calls), not `AsyncVectorEnv`'s `call`/`set_attr`.
 """
 
 from __future__ import annotations
