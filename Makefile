@@ -24,7 +24,7 @@ demo: install
 test: install
 	$(BIN)/ruff check luminous_sim tests benchmarks scripts examples
 	$(BIN)/mypy
-	$(BIN)/python -m pytest -q -m "not slow" -n auto tests  # pytest-xdist: one worker a core
+	$(BIN)/python -m pytest -q -m "not slow" -n auto --dist worksteal tests  # pytest-xdist: one worker a core; idle workers take queued tests from busy ones
 
 lint: install
 	$(BIN)/ruff check luminous_sim tests benchmarks scripts examples
