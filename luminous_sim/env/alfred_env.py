@@ -183,9 +183,9 @@ class LuminousEnv(gymnasium.Env):
         """The episode's navigation figures (start distance, SPL) when its goal is scored so (`navscore`)."""
         self._slots: list[str] = []
         self._texts = (".", ".")
+        """The episode's `instruction` and `high_descs` texts (made at reset)."""
         self._goal_type = ""
         """The type the `goal_mask` observation shows (`goal_mask.goal_type`)."""
-        """The episode's `instruction` and `high_descs` texts (made at reset)."""
         self._steps = 0
         self._failures = 0
         self._ended = False

@@ -29,5 +29,5 @@ def goal_mask(world: World, object_type: str) -> np.ndarray:
     state = world.view().state
     bodies = [loaded.body for oid, loaded in world.built.objects.items()
               if oid in state.objects and state.objects[oid].object_type == object_type]
-    mask = np.isin(world.instance_ids(), bodies) if bodies else np.zeros(world.instance_ids().shape, dtype=bool)
+    mask = np.isin(world.instance_ids(), bodies)  # all False where the type has no object
     return (mask.astype(np.uint8) * 255)[..., None]

@@ -8,7 +8,7 @@ Two workers of a 64 px env stepped through a plain `AsyncVectorEnv` gained 1.2x 
   token ids (`InstructionTokens`, encoded once an episode, not per step), never as text through the pipe;
 - per step, `info` carries only `step_keys` (by default `success`, `failures`, `failure_code`): gymnasium
   pickles every step's info in the worker and merges it key by key in the main process, which cost about a
-  third of the main process's time per step with the env's full info (13 keys, lists and strings); the full
+  quarter of the main process's time per step with the env's full info (13 keys, lists and strings); the full
   info still comes on `reset` and on the step that ends an episode (`StepInfo`);
 - autoreset happens in the worker (gymnasium's next-step mode): the step after an episode ends resets it there,
   and the main process only reads the new observation from shared memory.

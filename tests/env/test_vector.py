@@ -16,6 +16,7 @@ from luminous_sim.env.actions import STOP
 from luminous_sim.env.vector import STEP_KEYS, wrapped_env
 from luminous_sim.env.vocabulary import encode
 from luminous_sim.env.wrappers import WrapperArgumentError
+from luminous_sim.errors import LuminousError
 
 ID = "Luminous-ObjectNav-64-v2"
 FAST = {"verify_expert": False}
@@ -160,5 +161,5 @@ def test_a_worker_error_is_raised_here_naming_the_env():
 
 
 def test_grouped_workers_must_be_between_one_and_the_envs():
-    with pytest.raises(Exception, match="GroupedVectorEnv workers: expected a whole number from 1 to 2"):
+    with pytest.raises(LuminousError, match="GroupedVectorEnv workers: expected a whole number from 1 to 2"):
         make_vector_env(ID, 2, workers=3, **FAST)
