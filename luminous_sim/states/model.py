@@ -14,7 +14,7 @@ from types import MappingProxyType
 from typing import Any, Literal, get_args
 
 from luminous_sim.errors import LuminousError
-from luminous_sim.vocab import check_type
+from luminous_sim.vocab import MOVABLE_RECEPTACLES, check_type
 
 Temperature = Literal["RoomTemp", "Hot", "Cold"]
 TEMPERATURES: tuple[str, ...] = get_args(Temperature)
@@ -206,6 +206,17 @@ class WorldState:
         ):
             out.append(obj.parent)
             obj = self.objects.get(obj.parent)
+        return out
+
+    def parent_receptacles(self, object_id: str) -> list[str]:
+        """The receptacles an object counts as in, innermost first (AI2-THOR's `parentReceptacles`): its
+        ancestors, cut after the first that is not a movable receptacle (an apple in a bowl in a fridge is in
+        the bowl and the fridge, as the fridge's receptacle volume holds both)."""
+        out: list[str] = []
+        for anc in self.ancestors(object_id):
+            out.append(anc)
+            if self.objects[anc].object_type not in MOVABLE_RECEPTACLES:
+                break
         return out
 
     def without(self, excluded: set[str] | frozenset[str]) -> WorldState:

@@ -28,16 +28,9 @@ Check = Callable[[WorldState, tuple[str, ...]], bool]
 
 
 def parents(state: WorldState, object_id: str) -> list[str]:
-    """The receptacles an object counts as in, innermost first (AI2-THOR's `parentReceptacles`).
-
-    The chain of ancestors, cut after the first one that is not a movable receptacle.
-    """
-    out: list[str] = []
-    for anc in state.ancestors(object_id):
-        out.append(anc)
-        if state[anc].object_type not in _MOVABLE:
-            break
-    return out
+    """The receptacles an object counts as in, innermost first (AI2-THOR's `parentReceptacles`;
+    `WorldState.parent_receptacles`)."""
+    return state.parent_receptacles(object_id)
 
 
 def in_receptacle(state: WorldState, object_id: str, receptacle_id: str) -> bool:

@@ -19,13 +19,17 @@ def _xyz(v) -> dict[str, float]:
 def object_metadata(world: World, visible: dict[str, int]) -> list[dict[str, Any]]:
     """One dict per object, with AI2-THOR's field names."""
     inter = world.interactions
+    # AI2-THOR lists an object under every receptacle whose volume holds it (an apple in a bowl in a fridge
+    # under both), as ALFRED's ThorEnv reads a fridge's receptacleObjectIds when it closes
+    state = inter.state
+    parents = {c: state.parent_receptacles(c) for c in state.objects}
     children: dict[str, list[str]] = {}
-    for c, s in inter.state.objects.items():  # in the state's order, as receptacleObjectIds lists them
-        if s.parent is not None:
-            children.setdefault(s.parent, []).append(c)
+    for c in state.objects:  # in the state's order, as receptacleObjectIds lists them
+        for p in parents[c]:
+            children.setdefault(p, []).append(c)
     out = []
     for oid in sorted(world.built.objects):
-        st = inter.state.objects[oid]
+        st = state.objects[oid]
         ab = abilities(st.object_type)
         pos, yaw = world.built.pose_of(oid)
         out.append({
@@ -44,7 +48,7 @@ def object_metadata(world: World, visible: dict[str, int]) -> list[dict[str, Any
             "isOpen": st.isOpen, "isToggled": st.isToggled, "isDirty": st.isDirty, "isSliced": st.isSliced,
             "isCooked": st.isCooked, "isFilledWithLiquid": st.isFilledWithLiquid, "isPickedUp": st.isPickedUp,
             "temperature": st.temperature,
-            "parentReceptacles": [st.parent] if st.parent else [],
+            "parentReceptacles": parents[oid],
             "receptacleObjectIds": list(children.get(oid, ())),
         })
     return out

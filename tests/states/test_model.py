@@ -42,6 +42,15 @@ def test_contents_direct_and_recursive():
     assert s.ancestors("Fridge|1") == []
 
 
+def test_parent_receptacles_cut_after_the_first_fixed_receptacle():
+    """AI2-THOR's `parentReceptacles`: the bowl and the fridge holding it, not what holds the fridge."""
+    s = kitchen({"Plate|1": {"parent": "Fridge|1"}, "Apple|1": {"parent": "Plate|1"}, "Mug|1": {"parent": "Fridge|1"}})
+    assert s.parent_receptacles("Apple|1") == ["Plate|1", "Fridge|1"]
+    assert s.parent_receptacles("Mug|1") == ["Fridge|1"] and s.parent_receptacles("Fridge|1") == []
+    nested = s.replace(objects={**s.objects, "Fridge|1": s["Fridge|1"].replace(parent="CounterTop|1")})
+    assert nested.parent_receptacles("Apple|1") == ["Plate|1", "Fridge|1"]
+
+
 def test_queries():
     s = kitchen()
     assert s.of_type("Faucet") == ["Faucet|1", "Faucet|2"] and s.of_type("Sofa") == []

@@ -85,9 +85,11 @@ def test_cached_facts_equal_the_uncached_computation(world):
         assert world.visible_objects() == visible
         objects = world.metadata()["objects"]
         assert objects == object_metadata(world, visible)
-        state = world.view().state.objects
-        assert all(o["receptacleObjectIds"] == [c for c, s in state.items() if s.parent == o["objectId"]]
+        state = world.view().state
+        assert all(o["receptacleObjectIds"] == [c for c in state.objects
+                                                 if o["objectId"] in state.parent_receptacles(c)]
                    for o in objects)
+        assert all(o["parentReceptacles"] == state.parent_receptacles(o["objectId"]) for o in objects)
         assert np.array_equal(world.frame().rgb, fresh_render(world).rgb)
 
 

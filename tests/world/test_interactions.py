@@ -155,6 +155,12 @@ def test_movable_receptacle_carries_its_contents(world, kitchen_scene):
     assert state(world, plate).parent == counter and state(world, apple).parent == plate
     gap = np.linalg.norm(world.built.pose_of(apple)[0][:2] - world.built.pose_of(plate)[0][:2])
     assert gap < 0.12, "put down, the plate still carries the apple"
+    # AI2-THOR's containment (what ALFRED's ThorEnv reads when a fridge closes): the apple is in the plate and
+    # in what the plate stands on
+    objects = {o["objectId"]: o for o in world.metadata()["objects"]}
+    assert objects[apple]["parentReceptacles"] == [plate, counter]
+    assert apple in objects[counter]["receptacleObjectIds"] and plate in objects[counter]["receptacleObjectIds"]
+    assert objects[plate]["receptacleObjectIds"] == [apple]
 
 
 def test_put_refuses_incompatible_and_full_receptacles(world, kitchen_scene, monkeypatch):
