@@ -93,6 +93,7 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--env-kwarg", action="append", default=[], metavar="NAME=VALUE",
                    help=f"training env option (repeatable; on top of {train_ppo.TRAIN_KWARGS}); the observation "
                         "options among them are used in evaluation too")
+    train_ppo.add_recipe_arguments(p)
     args = p.parse_args(argv)
     policies = [x for x in args.policies.split(",") if x]
     bad = [x for x in policies if x not in POLICIES]
@@ -111,7 +112,7 @@ def main(argv: list[str] | None = None) -> int:
                                 ppo_kwargs=train_ppo._kwargs(args.ppo), cpu_budget_s=args.cpu_minutes * 60,
                                 resume=args.resume, save_every=2000, actions=train_ppo.ACTION_SETS[args.actions],
                                 env_kwargs={**train_ppo.TRAIN_KWARGS, **train_ppo._kwargs(args.env_kwarg)},
-                                new_place_bonus=args.new_place_bonus)
+                                new_place_bonus=args.new_place_bonus, **train_ppo.recipe_kwargs(args))
     wall = time.perf_counter() - t0
     progress = json.loads((args.out / "progress.json").read_text())
     config = json.loads((args.out / "config.json").read_text())

@@ -62,6 +62,9 @@ from luminous_sim.env import (
 )
 from luminous_sim.env.actions import NAVIGATION, STOP
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))  # the examples' own modules, when imported from elsewhere
+from dagger import WarmStart, critic_first, warm_start
+
 DEFAULT_ENV = "Luminous-NavToObject-64-v1"
 TRAIN_KWARGS: dict[str, Any] = {"depth": True, "reward": {"failure": -0.2}}
 """Env options for training by default: the id as registered with a `depth` observation (evaluation adds it
@@ -223,7 +226,8 @@ def train(env_id: str, out: Path, steps: int, *, seed: int = 0, env_kwargs: dict
           time_budget_s: float | None = None, cpu_budget_s: float | None = None, feedback: bool = True,
           actions: Sequence[str] | None = None,
           normalize_reward: bool = True, scene_repeats: int = 4, processes: bool = True, torch_threads: int | None = 1,
-          new_place_bonus: float = NEW_PLACE_BONUS, verbose: int = 0) -> Any:
+          new_place_bonus: float = NEW_PLACE_BONUS, net: str = "default", warm: WarmStart | None = None,
+          critic_warmup: int = 0, verbose: int = 0) -> Any:
     """Train (or go on training) PPO with `MultiInputPolicy` until `steps` timesteps in all, until
     `time_budget_s` seconds of this call have passed, or until the training's CPU time (this process and its env
     workers, every call on this `out` together) reaches `cpu_budget_s`; the model.
@@ -239,8 +243,14 @@ def train(env_id: str, out: Path, steps: int, *, seed: int = 0, env_kwargs: dict
     most of the time, and on a busy machine torch's intra-op threads spin (PPO took 111 s for 256 steps with
     2 threads against 13 s with 1 on our 2 shared cores).
 
+    `net` names the policy's feature extractor (`nets.NETS`: SB3's default or `goal-depth`). With `warm`, the
+    policy first imitates the oracle (`dagger.warm_start`, in this process, its CPU time counted in the budget;
+    once per `out`: a resumed run does not repeat it), and for the first `critic_warmup` PPO timesteps only the
+    critic learns (the actor and the shared features frozen), so that PPO's first updates do not undo the
+    imitation with advantages from an untrained critic.
+
     Writes `model.zip`, `curve.csv`, `progress.json` (timesteps and CPU seconds so far) and `config.json` under
-    `out` (and saves them every `save_every` steps).
+    `out` (and saves them every `save_every` steps), and `warm_start.json` (a row per imitation round).
     """
     import stable_baselines3
     import torch
@@ -266,9 +276,15 @@ def train(env_id: str, out: Path, steps: int, *, seed: int = 0, env_kwargs: dict
         rows = read_curve(curve_path) if curve_path.exists() else []
         cpu_before = json.loads(progress_path.read_text())["cpu_seconds"] if progress_path.exists() else 0.0
     else:
-        model = PPO("MultiInputPolicy", vec, seed=seed, device="cpu", verbose=verbose, **ppo_kwargs)
+        from nets import NETS
+
+        extractor = NETS[net]
+        policy_kwargs = {} if extractor is None else {"features_extractor_class": extractor}
+        model = PPO("MultiInputPolicy", vec, seed=seed, device="cpu", verbose=verbose, policy_kwargs=policy_kwargs,
+                    **ppo_kwargs)
         rows, cpu_before = [], 0.0
     config = {"env_id": env_id, "env_kwargs": env_kwargs, "ppo": ppo_kwargs, "policy": "MultiInputPolicy",
+              "net": net, "warm_start": asdict(warm) if warm else None, "critic_warmup": critic_warmup,
               "feedback": feedback, "feedback_history": FEEDBACK_HISTORY if feedback else 0,
               "new_place_bonus": new_place_bonus,
               "actions": list(actions) if actions else None,
@@ -291,11 +307,22 @@ def train(env_id: str, out: Path, steps: int, *, seed: int = 0, env_kwargs: dict
         write_atomic(progress_path, json.dumps({"timesteps": int(model.num_timesteps),
                                                 "cpu_seconds": round(cpu(), 1)}) + "\n")
 
+    warm_path = out / "warm_start.json"
+    if warm is not None and not warm_path.exists():
+        imitation_env = make_env(env_id, env_kwargs, feedback=feedback, actions=actions, training=True,
+                                 scene_repeats=scene_repeats, new_place_bonus=0.0)
+        try:
+            warm_rows = warm_start(model, imitation_env, warm, seed, cpu)
+        finally:
+            imitation_env.close()
+        save()
+        write_atomic(warm_path, json.dumps(warm_rows, indent=2) + "\n")
     remaining = steps - model.num_timesteps
     deadline = None if time_budget_s is None else time.monotonic() + time_budget_s
     if remaining > 0 and (cpu_budget_s is None or cpu() < cpu_budget_s):
         log = _callback_class()(rows, save, save_every, deadline, cpu, cpu_budget_s)
-        model.learn(remaining, callback=log, reset_num_timesteps=False)
+        callbacks = [log] if critic_warmup <= model.num_timesteps else [critic_first(critic_warmup), log]
+        model.learn(remaining, callback=callbacks, reset_num_timesteps=False)
     save()
     vec.close()
     return model
@@ -429,6 +456,28 @@ def _kwargs(items: Sequence[str]) -> dict[str, Any]:
     return out
 
 
+def add_recipe_arguments(p: argparse.ArgumentParser) -> None:
+    """The flags of `train`'s network and warm start (shared with `benchmarks/bench_ppo.py`)."""
+    p.add_argument("--net", default="default", choices=("default", "goal-depth"),
+                   help="the policy's feature extractor: SB3's default for a Dict observation, or a small CNN over "
+                        "goal_mask and depth (`nets.GoalDepthCNN`; needs goal_mask=true)")
+    p.add_argument("--bc-steps", type=int, default=0,
+                   help="imitate the oracle for this many labelled steps before PPO (DAgger; 0: no warm start)")
+    p.add_argument("--bc-rounds", type=int, default=WarmStart.rounds,
+                   help="DAgger rounds (the first follows the expert)")
+    p.add_argument("--bc-expert-share", type=float, default=WarmStart.expert_share,
+                   help="share of the expert's actions taken in DAgger rounds after the first")
+    p.add_argument("--bc-epochs", type=int, default=WarmStart.epochs, help="passes over the labels after each round")
+    p.add_argument("--critic-warmup", type=int, default=0,
+                   help="PPO timesteps with the actor frozen, only the critic learning (after a warm start)")
+
+
+def recipe_kwargs(args: argparse.Namespace) -> dict[str, Any]:
+    """`train`'s keyword arguments from the flags `add_recipe_arguments` adds."""
+    warm = WarmStart(args.bc_steps, args.bc_rounds, args.bc_expert_share, args.bc_epochs) if args.bc_steps else None
+    return {"net": args.net, "warm": warm, "critic_warmup": args.critic_warmup}
+
+
 def main(argv: Sequence[str] | None = None) -> int:
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0], formatter_class=argparse.RawTextHelpFormatter)
     p.add_argument("--env", default=DEFAULT_ENV, help=f"a registered id (default {DEFAULT_ENV})")
@@ -453,6 +502,7 @@ def main(argv: Sequence[str] | None = None) -> int:
     p.add_argument("--no-normalize-reward", action="store_true", help="train on the raw rewards")
     p.add_argument("--new-place-bonus", type=float, default=NEW_PLACE_BONUS,
                    help=f"training reward per grid position first stood on (default {NEW_PLACE_BONUS}; 0: none)")
+    add_recipe_arguments(p)
     args = p.parse_args(argv)
     if args.steps < 1 or args.eval_episodes < 0 or args.n_envs < 1 or args.save_every < 1:
         p.error("--steps, --n-envs and --save-every must be positive, --eval-episodes >= 0")
@@ -465,7 +515,8 @@ def main(argv: Sequence[str] | None = None) -> int:
     model = train(args.env, args.out, args.steps, seed=args.seed, env_kwargs=env_kwargs,
                   ppo_kwargs=_kwargs(args.ppo), n_envs=args.n_envs, save_every=args.save_every, resume=args.resume,
                   cpu_budget_s=None if args.cpu_minutes is None else args.cpu_minutes * 60, feedback=feedback,
-                  normalize_reward=not args.no_normalize_reward, actions=actions, new_place_bonus=args.new_place_bonus)
+                  normalize_reward=not args.no_normalize_reward, actions=actions, new_place_bonus=args.new_place_bonus,
+                  **recipe_kwargs(args))
     train_s = time.perf_counter() - started
     report: dict[str, Any] = {"env_id": args.env, "eval_kwargs": eval_kwargs, "train_seconds": round(train_s, 1),
                               "timesteps": int(model.num_timesteps)}
