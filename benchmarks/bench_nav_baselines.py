@@ -158,8 +158,11 @@ def play(outer: gymnasium.Env, policy: Policy, seed: int) -> dict[str, Any]:
 
 
 def trained_player(env_id: str, folder: Path, seed: int) -> tuple[gymnasium.Env, Policy]:
-    """The policy trained in `folder` and the env it plays in (the id with its observation options and
-    wrappers)."""
+    """The policy trained in `folder` (or saved in the `.zip` file `folder` names, e.g. a run's
+    `model_warm.zip`, beside its run's `config.json`) and the env it plays in (the id with its observation
+    options and wrappers)."""
+    model_path = folder if folder.suffix == ".zip" else folder / "model.zip"
+    folder = model_path.parent
     config = json.loads((folder / "config.json").read_text())
     if config["env_id"] != env_id:
         raise SystemExit(f"{folder}: trained on {config['env_id']}, not {env_id}")
@@ -167,7 +170,7 @@ def trained_player(env_id: str, folder: Path, seed: int) -> tuple[gymnasium.Env,
     import train_ppo
     from stable_baselines3 import PPO
 
-    model = PPO.load(folder / "model.zip", device="cpu")
+    model = PPO.load(model_path, device="cpu")
     model.set_random_seed(seed)
     outer = train_ppo.make_env(env_id, train_ppo.observation_kwargs(config["env_kwargs"]),
                                feedback=config.get("feedback", False), actions=config.get("actions"))
@@ -205,7 +208,8 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("--policies", default=",".join(POLICIES))
     p.add_argument("--json", type=Path, help="write every episode and the summaries here")
     p.add_argument("--ppo", action="append", default=[], metavar="NAME=DIR",
-                   help="also play the policy trained in DIR, as policy ppo:NAME (repeatable)")
+                   help="also play the policy trained in DIR (or a model .zip of a run, e.g. DIR/model_warm.zip), "
+                        "as policy ppo:NAME (repeatable)")
     args = p.parse_args(argv)
     policies = [x for x in args.policies.split(",") if x]
     trained = dict(item.partition("=")[::2] for item in args.ppo)

@@ -250,7 +250,8 @@ def train(env_id: str, out: Path, steps: int, *, seed: int = 0, env_kwargs: dict
     imitation with advantages from an untrained critic.
 
     Writes `model.zip`, `curve.csv`, `progress.json` (timesteps and CPU seconds so far) and `config.json` under
-    `out` (and saves them every `save_every` steps), and `warm_start.json` (a row per imitation round).
+    `out` (and saves them every `save_every` steps); with `warm`, `warm_start.json` (a row per imitation round)
+    and `model_warm.zip` (the policy as imitation left it).
     """
     import stable_baselines3
     import torch
@@ -316,6 +317,7 @@ def train(env_id: str, out: Path, steps: int, *, seed: int = 0, env_kwargs: dict
         finally:
             imitation_env.close()
         save()
+        save_model(model, out / "model_warm.zip")  # the imitation alone, to compare PPO's fine-tuning with
         write_atomic(warm_path, json.dumps(warm_rows, indent=2) + "\n")
     remaining = steps - model.num_timesteps
     deadline = None if time_budget_s is None else time.monotonic() + time_budget_s

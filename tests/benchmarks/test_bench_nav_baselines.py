@@ -53,3 +53,5 @@ def test_a_policy_trained_on_another_id_is_refused(bench, tmp_path):
     (tmp_path / "model.zip").write_bytes(b"")
     with pytest.raises(SystemExit, match="trained on Luminous-PickUp-64-v2, not Luminous-ObjectNav-64-v2"):
         bench.trained_player(ID, tmp_path, 0)
+    with pytest.raises(SystemExit, match="trained on Luminous-PickUp-64-v2"):  # a run's other model, its config
+        bench.trained_player(ID, tmp_path / "model_warm.zip", 0)

@@ -103,6 +103,7 @@ def test_train_ppo_warm_starts_once_per_output_folder(tmp_path, train_ppo):
             "--ppo", "n_steps=32", "--ppo", "batch_size=16", "--ppo", "n_epochs=1", "--eval-episodes", "0",
             "--out", str(out)]
     assert train_ppo.main([*args, "--steps", "64"]) == 0
+    assert (out / "model_warm.zip").stat().st_size > 0
     rows = json.loads((out / "warm_start.json").read_text())
     assert [r["round"] for r in rows] == [1, 2] and [r["labels"] for r in rows] == [30, 60]
     assert rows[0]["expert_share"] == 1.0 and rows[0]["successes"] == rows[0]["episodes"]
