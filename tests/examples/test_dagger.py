@@ -106,7 +106,7 @@ def test_train_ppo_warm_starts_once_per_output_folder(tmp_path, train_ppo):
     assert (out / "model_warm.zip").stat().st_size > 0
     rows = json.loads((out / "warm_start.json").read_text())
     assert [r["round"] for r in rows] == [1, 2] and [r["labels"] for r in rows] == [30, 60]
-    assert rows[0]["expert_share"] == 1.0 and rows[0]["successes"] == rows[0]["episodes"]
+    assert rows[0]["expert_share"] == 1.0 and rows[0]["successes"] == rows[0]["episodes"] >= 1
     config = json.loads((out / "config.json").read_text())
     assert config["net"] == "goal-depth" and config["warm_start"]["steps"] == 60 and config["critic_warmup"] == 64
     first = (out / "warm_start.json").stat().st_mtime_ns
