@@ -23,7 +23,8 @@ Prints the machine load at the start, then each figure as the median over repeat
   the cycle with `World.step` + `World.frame()` (goal >= 0.9x);
 - with `--size-ratio BIG,SMALL` (only that): the default World at two frame sizes on the same views,
   interleaved: CPU and wall-clock milliseconds per navigation step (World.step + World.frame()) at each,
-  and the BIG/SMALL ratio of CPU time per repeat (how much cheaper a small frame is);
+  and the BIG/SMALL ratio of CPU time per repeat (how much cheaper a small frame is); and the small size
+  with every culled link shown again after each frame (as culling did before culled links stayed hidden);
 - navigation steps/s with rendering off (goal >= 1,000) and interaction actions/s;
 - memory: N Worlds of the same scene built and held at once in a fresh process; RSS per World held
   (goal <= 150 MB per World process);
@@ -87,14 +88,16 @@ def record_views(world, steps: int) -> tuple[list[tuple[list[float], list[float]
     return views, failed
 
 
-def env_steps_per_s(world, steps: int) -> tuple[float, float]:
-    """Replay the navigation cycle from the start pose: World.step + World.frame() per step; steps per
-    second of wall-clock time and of CPU time."""
+def env_steps_per_s(world, steps: int, after_frame=None) -> tuple[float, float]:
+    """Replay the navigation cycle from the start pose: World.step + World.frame() (and `after_frame(world)`)
+    per step; steps per second of wall-clock time and of CPU time."""
     start = world.agent
     t0, c0 = time.perf_counter(), time.process_time()
     for i in range(steps):
         world.step(NAV[i % len(NAV)])
         world.frame()
+        if after_frame is not None:
+            after_frame(world)
     dt, dc = time.perf_counter() - t0, time.process_time() - c0
     _rewind(world, start)
     return steps / dt, steps / max(dc, 1e-9)
@@ -202,8 +205,14 @@ def frame_figures(seed: int, size: int, steps: int, repeats: int) -> None:
               f"environment / raw: {spread(ratio, '.2f')}x (goal >= 0.9x)")
 
 
+def _show_culled(world) -> None:
+    world._culler.reveal()
+
+
 def size_ratio(seed: int, big: int, small: int, steps: int, repeats: int) -> None:
-    """Milliseconds per step of the default World at two frame sizes on the same views, interleaved."""
+    """Milliseconds per step of the default World at two frame sizes on the same views, interleaved; and at the
+    small size with every culled link shown again after each frame (culling as it was before culled links
+    stayed hidden between frames), in the same World."""
     from luminous_sim.world.config import WorldConfig
     from luminous_sim.world.world import World
 
@@ -214,19 +223,25 @@ def size_ratio(seed: int, big: int, small: int, steps: int, repeats: int) -> Non
         assert record_views(little, steps)[0] == views, "the two Worlds took different views"
         env_steps_per_s(large, steps)  # warm both (caches, first renders)
         env_steps_per_s(little, steps)
-        ms: dict[int, tuple[list[float], list[float]]] = {big: ([], []), small: ([], [])}
+        runs = {f"{big}x{big}": (large, None), f"{small}x{small}": (little, None),
+                f"{small}x{small}, culled links shown after each frame": (little, _show_culled)}
+        ms: dict[str, tuple[list[float], list[float]]] = {name: ([], []) for name in runs}
         for _ in range(repeats):
-            for size, world in ((big, large), (small, little)):
-                wall, cpu = env_steps_per_s(world, steps)
-                ms[size][0].append(1e3 / cpu)
-                ms[size][1].append(1e3 / wall)
+            for name, (world, after) in runs.items():
+                wall, cpu = env_steps_per_s(world, steps, after)
+                ms[name][0].append(1e3 / cpu)
+                ms[name][1].append(1e3 / wall)
         print(f"default World, {steps} navigation steps ({failed} failed, {len(views)} distinct views), "
               f"the same views at both sizes, ms per step:")
-        for size in (big, small):
-            print(f"  {size}x{size}: {spread(ms[size][0], '.3f')} ms of CPU time, {spread(ms[size][1], '.3f')} ms "
+        for name in runs:
+            print(f"  {name}: {spread(ms[name][0], '.3f')} ms of CPU time, {spread(ms[name][1], '.3f')} ms "
                   f"wall clock")
-        ratio = [b / s for b, s in zip(ms[big][0], ms[small][0], strict=True)]
+        big_ms, small_ms = ms[f"{big}x{big}"][0], ms[f"{small}x{small}"][0]
+        ratio = [b / s for b, s in zip(big_ms, small_ms, strict=True)]
         print(f"  {big}/{small} CPU time per step, per repeat: {spread(ratio, '.2f')}x")
+        kept = [a / s for a, s in zip(ms[f"{small}x{small}, culled links shown after each frame"][0], small_ms,
+                                      strict=True)]
+        print(f"  {small} px, shown after each frame / kept hidden, CPU time per repeat: {spread(kept, '.2f')}x")
 
 
 def nav_unrendered(world, seconds: float) -> float:

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-from contextlib import nullcontext
 from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
@@ -29,17 +28,19 @@ def render(
     shadows: bool = False, light_direction=(0.4, -0.6, 1.0), culler: FrustumCuller | None = None,
 ) -> Frame:
     """Render from `eye` looking at `target`; depth converted from the z-buffer to metres. With `culler`
-    (TinyRenderer only), links wholly outside the view are left out of the render: the same frame, faster."""
+    (TinyRenderer only), links wholly outside the view are left out of the render, and stay hidden after it
+    until the client is used otherwise (`culling.CullingClient`): the same frame, faster."""
     if renderer is None:
         renderer = getattr(client, "luminous_renderer", p.ER_TINY_RENDERER)
     view = client.computeViewMatrix(list(eye), list(target), list(up))
     proj = client.computeProjectionMatrixFOV(fov, width / height, near, far)
-    cull = culler.culled(view, proj, width, height) if culler and renderer == p.ER_TINY_RENDERER else nullcontext()
-    with cull:
-        _, _, rgba, zbuf, seg = client.getCameraImage(
-            width, height, view, proj, renderer=renderer, shadow=int(shadows), lightDirection=list(light_direction),
-            flags=p.ER_SEGMENTATION_MASK_OBJECT_AND_LINKINDEX,
-        )
+    if culler is not None and renderer == p.ER_TINY_RENDERER:
+        culler.cull(view, proj, width, height)
+        client = culler.client  # through the CullingClient, the render would show the hidden links again
+    _, _, rgba, zbuf, seg = client.getCameraImage(
+        width, height, view, proj, renderer=renderer, shadow=int(shadows), lightDirection=list(light_direction),
+        flags=p.ER_SEGMENTATION_MASK_OBJECT_AND_LINKINDEX,
+    )
     rgb = np.asarray(rgba, dtype=np.uint8).reshape(height, width, 4)[:, :, :3]
     z = np.asarray(zbuf, dtype=np.float32).reshape(height, width)
     depth = (far * near / (far - (far - near) * z)).astype(np.float32)

@@ -4,17 +4,23 @@ TinyRenderer transforms and sets up every triangle of every visual it is given, 
 on the picture, but skips a visual whose alpha is 0 at no cost (measured: a kitchen with every visual at
 alpha 0 renders as fast as an empty world). So before a render each object link whose visual bounding box
 lies wholly outside one plane of the view frustum (with a margin of `MARGIN_PX` pixels) has its visuals
-set to alpha 0, and they get their colour back right after. A culled link has no pixel in the frame, so
-the frame is the same, pixel for pixel (tests/world/test_culling.py checks RGB, depth and segmentation).
-The floor, walls and ceiling are never culled; the outdoors is, when no doorway or window can show it
-(`world.portals`). Only TinyRenderer is culled: the EGL path draws on the GPU.
+set to alpha 0. A culled link has no pixel in the frame, so the frame is the same, pixel for pixel
+(tests/world/test_culling.py checks RGB, depth and segmentation). The floor, walls and ceiling are never
+culled; the outdoors is, when no doorway or window can show it (`world.portals`). Only TinyRenderer is
+culled: the EGL path draws on the GPU.
 
 The test is vectorised: a table of every object link's box (`_Boxes`, made again when an object is added,
 removed or replaced), every pose asked of PyBullet into one array, the corners transformed again only for
-the boxes whose pose changed, and one product against the frustum's planes for all of them. What a culled
-64x64 frame still pays for culling (measured on the bench_world kitchen, 59 boxes, about 49 culled a frame:
-about 0.6 ms of a 2.8 ms frame, against 0.8 ms before) is mostly PyBullet calls that cannot be batched:
-about 180 `changeVisualShape` calls to hide and put back (0.25 ms) and 58 pose queries (0.1 ms).
+the boxes whose pose changed, and one product against the frustum's planes for all of them.
+
+Hiding and showing are the cost that cannot be batched: one `changeVisualShape` call hides a link, one per
+visual shows it again (about 2.4 us each). Showing every culled link right after each render made about 180
+calls a 64x64 frame of the bench_world kitchen (about 49 of 59 boxes culled), 0.36 ms of a 2.2 ms step. So
+culled links stay hidden between renders (`FrustumCuller.cull`), and each cull changes only the links whose
+side of the view changed (about 6 hidden and 6 shown a navigation step); poses are asked again only after a
+call that can move a body. Nothing else may see a link hidden: the World's client is a `CullingClient`,
+which shows them all before any call that draws, reads or changes a visual or adds or removes a body, and
+notes any call that can move one. What a culled 64x64 step still pays for culling: about 0.1 ms.
 """
 
 from __future__ import annotations
@@ -24,12 +30,14 @@ from collections.abc import Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from functools import lru_cache
 from pathlib import Path
+from typing import Any
 
 import numpy as np
 
 from luminous_sim.world.asset_loader import LoadedAsset
 from luminous_sim.world.client import BulletClient
 from luminous_sim.world.portals import OutdoorCuller, outside_view
+from luminous_sim.world.restore import HARMLESS, HARMLESS_PREFIXES
 
 MARGIN_PX = 2.0
 """A link is culled only if its box is at least this many pixels beyond the picture's edge."""
@@ -171,15 +179,28 @@ def _margin(width: int, height: int) -> tuple[float, float]:
 
 
 class FrustumCuller:
-    """Hides, for the length of one render, the object links that cannot appear in it."""
+    """Keeps hidden the object links (and outdoor bodies) that the last culled view cannot show.
+
+    `cull` brings the hidden set in line with a view, changing only the links whose side of the view changed
+    since the last cull (a navigation step changes about a tenth of them), and leaves them hidden after the
+    render; `reveal` shows them all again. Everyone else uses the client through `CullingClient`, which
+    reveals them before any call that draws, reads or changes a visual, or adds or removes a body, so nothing
+    but the culled render ever sees a link hidden. Poses are asked of PyBullet again only after a call that
+    can move a body (`poses_moved`)."""
 
     def __init__(self, client: BulletClient, objects: Mapping[str, LoadedAsset], room: object | None = None,
                  outdoors: Sequence[int] = ()):
         """`objects` are culled by the view frustum; `outdoors` (bodies of axis-aligned boxes with one visual,
         seen only through the openings of `room`, a `rooms.RoomShell`) by the view and the openings."""
-        self._client = client
+        self.client = client
+        """The client itself (not the `CullingClient` around it): the culled render draws through it."""
         self._objects = objects
         self._table: _Boxes | None = None
+        self._stale = True
+        self._hidden: dict[int, tuple[LoadedAsset, str, int, list[int]]] = {}
+        """Links kept hidden, by box index: asset, link name, link index, the visuals to show again."""
+        self._away: set[int] = set()
+        """Outdoor bodies kept hidden."""
         self._outdoor_bodies: list[tuple[int, list[float]]] = []
         boxes = []
         for body in outdoors if room is not None else ():
@@ -191,6 +212,10 @@ class FrustumCuller:
         self._outdoor_colors = dict(self._outdoor_bodies)
         self._outdoors = OutdoorCuller(room, boxes) if boxes else None
 
+    def poses_moved(self) -> None:
+        """A body or link may have moved: ask every pose again at the next cull."""
+        self._stale = True
+
     def _boxes(self) -> _Boxes:
         """The box table for the objects now (made again when an object was added, removed or replaced: a body
         id can be reused after removeBody, so the assets themselves are compared)."""
@@ -198,16 +223,21 @@ class FrustumCuller:
         objects = self._objects.values()
         if table is None or len(table.loaded) != len(objects) \
                 or any(a is not b for a, b in zip(table.loaded, objects, strict=True)):
-            table = self._table = _Boxes(self._client, list(objects))
+            self.reveal()  # the hidden links are indexed by the old table
+            table = self._table = _Boxes(self.client, list(objects))
+            self._stale = True
         return table
 
     def _outside(self, view_proj: np.ndarray, margin: tuple[float, float]) -> tuple[_Boxes, np.ndarray]:
         table = self._boxes()
         if not table.keys:
             return table, np.zeros(0, dtype=bool)
-        return table, outside_view(table.update(self._client), view_proj, margin)
+        if self._stale:
+            table.update(self.client)
+            self._stale = False
+        return table, outside_view(table.world, view_proj, margin)
 
-    def _away(self, view: list[float], view_proj: np.ndarray, margin: tuple[float, float]) -> list[int]:
+    def _away_from(self, view: list[float], view_proj: np.ndarray, margin: tuple[float, float]) -> list[int]:
         if self._outdoors is None:
             return []
         v = np.asarray(view, dtype=float).reshape(4, 4).T
@@ -221,40 +251,87 @@ class FrustumCuller:
 
     def outdoors_hidden(self, view: list[float], proj: list[float], width: int, height: int) -> list[int]:
         """The outdoor bodies that no doorway or window shows to this camera."""
-        return self._away(view, _view_proj(view, proj), _margin(width, height))
+        return self._away_from(view, _view_proj(view, proj), _margin(width, height))
 
-    @contextmanager
-    def culled(self, view: list[float], proj: list[float], width: int, height: int) -> Iterator[int]:
-        """Within the block, the links outside the view are hidden; yields how many links were hidden.
-
-        A link is hidden with one call (every visual of it at alpha 0); each of its visuals that was showing
-        gets its own colour and alpha back afterwards (those already at alpha 0 stay so), the link's
-        last-set visual last, as `getVisualShapeData` reports the last colour set on a link."""
-        change = self._client.changeVisualShape
+    def cull(self, view: list[float], proj: list[float], width: int, height: int) -> int:
+        """Hide exactly the links outside this view and the outdoor bodies no opening shows (each with one
+        call, every visual of it at alpha 0), showing again those the view can show; they stay so until the
+        next cull or `reveal`. How many links and bodies are hidden."""
+        change = self.client.changeVisualShape
         view_proj, margin = _view_proj(view, proj), _margin(width, height)
-        away = self._away(view, view_proj, margin)
+        away = set(self._away_from(view, view_proj, margin))
+        for body in self._away - away:
+            change(body, -1, rgbaColor=self._outdoor_colors[body])
+        for body in away - self._away:
+            change(body, -1, rgbaColor=[0.0, 0.0, 0.0, 0.0])
+        self._away = away
         table, out = self._outside(view_proj, margin)
-        hidden = []
+        out_now = np.flatnonzero(out).tolist()
+        hidden = self._hidden
+        for k in hidden.keys() - set(out_now):
+            self._show(*hidden.pop(k))
         keys, links, visuals = table.keys, table.links, table.visuals
-        for k in np.flatnonzero(out).tolist():
+        for k in out_now:
+            if k in hidden:
+                continue
             loaded, name = keys[k]
             alphas = loaded.alphas
             showing = [i for i in visuals[k] if alphas[name, i] > 0]
             if showing:
-                hidden.append((loaded, name, links[k], showing))
+                change(loaded.body, links[k], rgbaColor=[0.0, 0.0, 0.0, 0.0])
+                hidden[k] = (loaded, name, links[k], showing)
+        return len(hidden) + len(away)
+
+    def _show(self, loaded: LoadedAsset, name: str, link: int, showing: list[int]) -> None:
+        """Each visual that was showing gets its colour and alpha as they are now (one hidden since stays so),
+        the link's last-set visual last, as `getVisualShapeData` reports the last colour set on a link."""
+        last = loaded.last_set.get(name)
+        if last is not None:
+            showing = [i for i in showing if i != last] + [last]
+        colors, alphas, change = loaded.colors, loaded.alphas, self.client.changeVisualShape
+        for i in showing:
+            change(loaded.body, link, shapeIndex=i, rgbaColor=[*colors[(name, i)][:3], alphas[(name, i)]])
+
+    def reveal(self) -> None:
+        """Show every link and outdoor body the last cull hid."""
+        for body in self._away:
+            self.client.changeVisualShape(body, -1, rgbaColor=self._outdoor_colors[body])
+        self._away = set()
+        hidden, self._hidden = self._hidden, {}
+        for entry in hidden.values():
+            self._show(*entry)
+
+    @contextmanager
+    def culled(self, view: list[float], proj: list[float], width: int, height: int) -> Iterator[int]:
+        """Within the block, the links outside the view are hidden; yields how many links were hidden; every
+        one is shown again after it."""
         try:
-            for body in away:
-                change(body, -1, rgbaColor=[0.0, 0.0, 0.0, 0.0])
-            for loaded, _, link, _ in hidden:
-                change(loaded.body, link, rgbaColor=[0.0, 0.0, 0.0, 0.0])
-            yield len(hidden) + len(away)
+            yield self.cull(view, proj, width, height)
         finally:
-            for body in away:
-                change(body, -1, rgbaColor=self._outdoor_colors[body])
-            for loaded, name, link, showing in hidden:
-                last = loaded.last_set.get(name)  # set last again, so that PyBullet reports what it did before
-                if last is not None:
-                    showing = [i for i in showing if i != last] + [last]
-                colors, alphas = loaded.colors, loaded.alphas
-                for i in showing:
-                    change(loaded.body, link, shapeIndex=i, rgbaColor=[*colors[(name, i)][:3], alphas[(name, i)]])
+            self.reveal()
+
+
+REVEALING = frozenset({"getCameraImage", "getVisualShapeData", "changeVisualShape", "changeTexture", "removeBody",
+                       "loadURDF", "loadSDF", "loadMJCF", "createMultiBody", "resetSimulation"})
+"""Client calls before which the culler shows every link it keeps hidden: they draw, read or change visuals,
+or add or remove bodies (and with them the culler's box table)."""
+
+
+class CullingClient:
+    """A scene's client as everyone but its culler uses it: before any `REVEALING` call every link the culler
+    keeps hidden is shown again, and any call that can move a body (anything but queries, ray tests,
+    transforms, rendering and colours: `restore.HARMLESS`) makes the culler ask every pose again."""
+
+    def __init__(self, client: BulletClient, culler: FrustumCuller):
+        self._client = client
+        self._culler = culler
+
+    def __getattr__(self, name: str) -> Any:
+        attr = getattr(self._client, name)
+        if not callable(attr):
+            return attr
+        if name in REVEALING:
+            self._culler.reveal()
+        if not (name in HARMLESS or name.startswith(HARMLESS_PREFIXES)):
+            self._culler.poses_moved()
+        return attr

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from collections.abc import Iterable
 from dataclasses import dataclass
-from typing import Any
+from typing import Any, cast
 
 import numpy as np
 
@@ -20,7 +20,7 @@ from luminous_sim.vocab import AGENT_ACTIONS, INTERACTION_ACTIONS, TELEPORT_ACTI
 from luminous_sim.world.agent import AgentPose
 from luminous_sim.world.arguments import argument_failure, shown, teleport_pose
 from luminous_sim.world.camera import Frame, render
-from luminous_sim.world.client import body_aabb
+from luminous_sim.world.client import BulletClient, body_aabb
 from luminous_sim.world.config import WorldConfig
 from luminous_sim.world.frame_facts import FrameFacts, body_ids
 from luminous_sim.world.interaction import Interactions
@@ -66,11 +66,13 @@ class World:
         self._facts: FrameFacts | None = None
         self._kept: KeptFrame | None = None
         self._scene_digest: str | None = None
-        from luminous_sim.world.culling import FrustumCuller
+        from luminous_sim.world.culling import CullingClient, FrustumCuller
 
         room = scene.room if self.config.cull_outdoors else None
         self._culler = FrustumCuller(self.client, self.built.objects, room, self.built.outdoors) \
             if self.config.cull else None
+        if self._culler is not None:  # everyone but the culled render sees every link as it is
+            self.built.client = self.client = cast(BulletClient, CullingClient(self.client, self._culler))
         self.last = StepResult(True, "", {"action": "Initialize"})
         self.interactions = Interactions(self)
         self._view = LiveView(self)

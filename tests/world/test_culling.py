@@ -117,3 +117,82 @@ def test_culled_render_leaves_what_pybullet_reports_unchanged(kitchen_scene):
             culled += len(w._culler.outside(view, w.client.computeProjectionMatrixFOV(60.0, 1.0, 0.05, 20.0), 64, 64))
             assert [w.client.getVisualShapeData(lo.body) for lo in w.built.objects.values()] == report, pose
         assert culled
+
+
+def _plain_now(world: World) -> object:
+    pose = world.agent
+    return _plain(world, pose, world.config.width)
+
+
+def test_hidden_links_stay_hidden_between_frames_but_no_one_else_sees_them(kitchen_scene):
+    """After a culled frame the culled links keep alpha 0 in PyBullet itself; anything asked through the World's
+    client (a visual's colour, another render) first gets them back, and the next frame hides them again."""
+    with World(kitchen_scene, WorldConfig(width=64, height=64, settle_steps=120)) as w:
+        raw = w._culler.client
+        bodies = [lo.body for lo in w.built.objects.values()]
+        before = [raw.getVisualShapeData(b) for b in bodies]
+        w.frame()
+        hidden_raw = [raw.getVisualShapeData(b) for b in bodies]
+        assert hidden_raw != before, "nothing kept hidden after the frame: the test tests nothing"
+        assert [w.client.getVisualShapeData(b) for b in bodies] == before
+        assert [raw.getVisualShapeData(b) for b in bodies] == before, "asking through the World showed them all"
+        w.invalidate_frame()
+        first = w.frame()
+        assert [raw.getVisualShapeData(b) for b in bodies] == hidden_raw
+        plain = _plain_now(w)  # a render through the World's client: every link drawn
+        for name in ("rgb", "depth", "seg"):
+            assert np.array_equal(getattr(first, name), getattr(plain, name)), name
+        assert [raw.getVisualShapeData(b) for b in bodies] == before
+
+
+def test_culled_frames_follow_bodies_moved_between_them(kitchen_scene):
+    """Poses are asked again after any call that can move a body: an object put in front of the camera
+    from where the last frame culled it is in the next frame."""
+    with World(kitchen_scene, WorldConfig(width=64, height=64, settle_steps=120)) as w:
+        apple = w.built.objects[obj(kitchen_scene, "apple")]
+        for pose in _views(w):
+            w.agent = pose
+            w.invalidate_frame()
+            w.frame()
+            if any(lo is apple for lo, _ in w._culler.outside(*_matrices(w, pose), 64, 64)):
+                break
+        else:
+            pytest.fail("no view culls the apple")
+        ahead = np.array(pose.eye()) + 0.8 * np.array(pose.view_direction())
+        w.client.resetBasePositionAndOrientation(apple.body, ahead.tolist(), [0, 0, 0, 1])
+        w.invalidate_frame()
+        moved = w.frame()
+        assert apple.body in set((moved.seg[moved.seg >= 0] & 0xFFFFFF).tolist()), "the moved apple was culled"
+        assert np.array_equal(moved.rgb, _plain_now(w).rgb)
+
+
+def test_culled_frames_equal_plain_frames_through_an_episode(kitchen_scene):
+    """Pick up, open, put, close and walk: after every action the World's culled frame is the plain render."""
+    with World(kitchen_scene, WorldConfig(width=64, height=64, settle_steps=120)) as w:
+        mug, fridge = obj(kitchen_scene, "mug"), obj(kitchen_scene, "fridge")
+        steps = [("PickupObject", mug, {"objectId": mug}), ("OpenObject", fridge, {"objectId": fridge}),
+                 ("PutObject", fridge, {"objectId": mug, "receptacleObjectId": fridge}),
+                 ("CloseObject", fridge, {"objectId": fridge})]
+        checked = 0
+        for action, target, args in steps:
+            pose = w.view().interaction_pose(target)
+            assert pose is not None, target
+            w.agent = pose
+            w.invalidate_frame()
+            w.frame()
+            assert w.step(action, **args).success, (action, w.last.error)
+            for walk in ("", "RotateLeft", "MoveAhead", "RotateRight", "LookDown"):
+                if walk:
+                    w.step(walk)
+                frame = w.frame()
+                plain = _plain_now(w)
+                for name in ("rgb", "depth", "seg"):
+                    assert np.array_equal(getattr(frame, name), getattr(plain, name)), (action, walk, name)
+                checked += 1
+        assert checked == 20
+
+
+def _matrices(world: World, pose: AgentPose) -> tuple[list[float], list[float]]:
+    eye = np.array(pose.eye())
+    view = world.client.computeViewMatrix(list(eye), list(eye + np.array(pose.view_direction())), [0, 0, 1])
+    return view, world.client.computeProjectionMatrixFOV(60.0, 1.0, 0.05, 20.0)
