@@ -466,9 +466,10 @@ def _kwargs(items: Sequence[str]) -> dict[str, Any]:
 
 def add_recipe_arguments(p: argparse.ArgumentParser) -> None:
     """The flags of `train`'s network and warm start (shared with `benchmarks/bench_ppo.py`)."""
-    p.add_argument("--net", default="default", choices=("default", "goal-depth"),
-                   help="the policy's feature extractor: SB3's default for a Dict observation, or a small CNN over "
-                        "goal_mask and depth (`nets.GoalDepthCNN`; needs goal_mask=true)")
+    p.add_argument("--net", default="default", choices=("default", "goal-depth", "rgb-depth-goal"),
+                   help="the policy's feature extractor: SB3's default for a Dict observation, a small CNN over "
+                        "goal_mask and depth (`nets.GoalDepthCNN`; needs goal_mask=true), or one over rgb and depth "
+                        "told the goal by the instruction (`nets.RgbDepthGoalCNN`; needs depth=true)")
     p.add_argument("--bc-steps", type=int, default=0,
                    help="imitate the oracle for this many labelled steps before PPO (DAgger; 0: no warm start)")
     p.add_argument("--bc-rounds", type=int, default=WarmStart.rounds,

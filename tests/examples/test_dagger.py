@@ -91,6 +91,45 @@ def test_goal_depth_net_names_the_observations_it_needs(train_ppo):
         env.close()
 
 
+def test_rgb_depth_goal_net_takes_the_goal_from_the_instruction(train_ppo):
+    """Without goal_mask the net is told the goal only by the instruction: two instructions give two features
+    for the same pixels, and it names what it needs."""
+    import torch
+    from nets import RgbDepthGoalCNN
+    from stable_baselines3.common.preprocessing import preprocess_obs
+
+    env = train_ppo.make_env(ENV, {"depth": True}, feedback=True)
+    try:
+        obs, _ = env.reset(seed=3)
+        space = env.observation_space
+        torch.manual_seed(0)
+        net = RgbDepthGoalCNN(_channel_first(space))
+
+        def features(tokens):
+            batch = {k: torch.as_tensor(np.array(v))[None] for k, v in {**obs, "instruction": tokens}.items()}
+            batch["rgb"] = batch["rgb"].permute(0, 3, 1, 2)
+            with torch.no_grad():
+                return net(preprocess_obs(batch, _channel_first(space)))
+
+        tokens = np.array(obs["instruction"])
+        other = np.where(tokens > 0, np.arange(5, 5 + len(tokens)), 0)  # the same length, other words
+        assert (tokens > 0).any() and not np.array_equal(tokens, other)
+        assert not torch.allclose(features(tokens), features(other)), "the instruction does not reach the features"
+        assert torch.equal(features(tokens), features(tokens.copy()))
+        with pytest.raises(ValueError, match="depth=true"):
+            RgbDepthGoalCNN(_channel_first(train_ppo.make_env(ENV, {}, feedback=True).observation_space))
+    finally:
+        env.close()
+
+
+def _channel_first(space):
+    """The Dict space as SB3 hands it to an extractor: images channel-first."""
+    from gymnasium import spaces
+
+    rgb = space.spaces["rgb"]
+    return spaces.Dict({**space.spaces, "rgb": spaces.Box(0, 255, (rgb.shape[2], *rgb.shape[:2]), np.uint8)})
+
+
 def test_bad_warm_start_settings_are_refused(train_ppo, dagger):
     with pytest.raises(ValueError, match="steps >= rounds >= 1"):
         dagger.warm_start(None, None, dagger.WarmStart(steps=2, rounds=3), seed=0)
