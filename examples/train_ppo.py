@@ -27,7 +27,8 @@ serves 4 episodes with new goals (`SceneRepeat`: a reset in a built world costs 
 scene's), and rewards are normalised (`VecNormalize`). Evaluation uses the id as registered (`--eval-kwarg`
 on top), whose episodes the oracle solves.
 
-`--net goal-depth` swaps the feature extractor for a small CNN over `goal_mask` and `depth` (`nets.py`), and
+`--net goal-depth` swaps the feature extractor for a small CNN over `goal_mask` and `depth` (`nets.py`;
+`--net rgb-depth-goal` the same over `rgb` and `depth`, told the goal by the instruction alone), and
 `--bc-steps N` first makes the policy imitate the oracle with DAgger (`dagger.py`; `--critic-warmup T` then trains
 only the critic for PPO's first T steps): PIRLNav's recipe, what reaches a held-out SR of 0.33-0.36 on
 `Luminous-ObjectNav-64-v2` with `goal_mask=true` (docs/benchmarks.md). Such a run also writes
@@ -249,11 +250,11 @@ def train(env_id: str, out: Path, steps: int, *, seed: int = 0, env_kwargs: dict
     most of the time, and on a busy machine torch's intra-op threads spin (PPO took 111 s for 256 steps with
     2 threads against 13 s with 1 on our 2 shared cores).
 
-    `net` names the policy's feature extractor (`nets.NETS`: SB3's default or `goal-depth`). With `warm`, the
-    policy first imitates the oracle (`dagger.warm_start`, in this process, its CPU time counted in the budget;
-    once per `out`: a resumed run does not repeat it), and for the first `critic_warmup` PPO timesteps only the
-    critic learns (the actor and the shared features frozen), so that PPO's first updates do not undo the
-    imitation with advantages from an untrained critic.
+    `net` names the policy's feature extractor (`nets.NETS`: SB3's default, `goal-depth` or `rgb-depth-goal`).
+    With `warm`, the policy first imitates the oracle (`dagger.warm_start`, in this process, its CPU time counted
+    in the budget; once per `out`: a resumed run does not repeat it), and for the first `critic_warmup` PPO
+    timesteps only the critic learns (the actor and the shared features frozen), so that PPO's first updates do
+    not undo the imitation with advantages from an untrained critic.
 
     Writes `model.zip`, `curve.csv`, `progress.json` (timesteps and CPU seconds so far) and `config.json` under
     `out` (and saves them every `save_every` steps); with `warm`, `warm_start.json` (a row per imitation round)
