@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from luminous_sim.world.client import BulletClient, p
+from luminous_sim.world.eye_plane import nudged
 
 if TYPE_CHECKING:
     from luminous_sim.world.culling import FrustumCuller
@@ -26,14 +27,21 @@ def render(
     client: BulletClient, eye, target, up=(0.0, 0.0, 1.0), width: int = 300, height: int = 300,
     fov: float = 60.0, near: float = 0.05, far: float = 20.0, renderer: int | None = None,
     shadows: bool = False, light_direction=(0.4, -0.6, 1.0), culler: FrustumCuller | None = None,
+    guard: FrustumCuller | None = None,
 ) -> Frame:
     """Render from `eye` looking at `target`; depth converted from the z-buffer to metres. With `culler`
     (TinyRenderer only), links wholly outside the view are left out of the render, and stay hidden after it
-    until the client is used otherwise (`culling.CullingClient`): the same frame, faster."""
+    until the client is used otherwise (`culling.CullingClient`): the same frame, faster. With `guard` (or
+    `culler`), where a triangle of the scene lies in the plane through the eye, the camera moves a tenth of a
+    millimetre forward, since TinyRenderer would never return (`world.eye_plane`)."""
     if renderer is None:
         renderer = getattr(client, "luminous_renderer", p.ER_TINY_RENDERER)
     view = client.computeViewMatrix(list(eye), list(target), list(up))
     proj = client.computeProjectionMatrixFOV(fov, width / height, near, far)
+    guard = guard or culler
+    if guard is not None and renderer == p.ER_TINY_RENDERER and guard.touches_eye_plane(view):
+        eye, target = nudged(eye, target)
+        view = client.computeViewMatrix(list(eye), list(target), list(up))
     if culler is not None and renderer == p.ER_TINY_RENDERER:
         culler.cull(view, proj, width, height)
         client = culler.client  # through the CullingClient, the render would show the hidden links again

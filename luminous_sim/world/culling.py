@@ -35,7 +35,8 @@ from typing import Any
 import numpy as np
 
 from luminous_sim.world.asset_loader import LoadedAsset
-from luminous_sim.world.client import BulletClient
+from luminous_sim.world.client import BulletClient, p
+from luminous_sim.world.eye_plane import near_eye_plane
 from luminous_sim.world.portals import OutdoorCuller, outside_view
 from luminous_sim.world.restore import HARMLESS, HARMLESS_PREFIXES
 
@@ -47,25 +48,35 @@ _VISUAL = re.compile(r'<visual [^>]*><origin xyz="0 0 0" rpy="0 0 0"/><geometry>
 
 
 @lru_cache(maxsize=4096)
-def _obj_bounds(path: str) -> tuple[tuple[float, ...], tuple[float, ...]] | None:
-    verts = [line.split()[1:4] for line in Path(path).read_text().splitlines() if line.startswith("v ")]
+def _obj_mesh(path: str) -> tuple[np.ndarray, np.ndarray] | None:
+    """An OBJ file's vertices (n, 3) and triangles (m, 3; 0-based), or None for one without vertices."""
+    verts, faces = [], []
+    for line in Path(path).read_text().splitlines():
+        if line.startswith("v "):
+            verts.append(line.split()[1:4])
+        elif line.startswith("f "):
+            faces.append([int(f.split("/")[0]) - 1 for f in line.split()[1:4]])
     if not verts:
         return None
-    v = np.asarray(verts, dtype=float)
-    return tuple(v.min(axis=0)), tuple(v.max(axis=0))
+    return np.asarray(verts, dtype=float), np.asarray(faces, dtype=np.int64).reshape(-1, 3)
+
+
+def link_visual_meshes(urdf: str) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """Each link's visual vertices (n, 3) and triangles (m, 3), every visual included (hidden state visuals
+    too), in its own frame, at scale 1, read from the URDF's mesh files. A link with a visual this cannot
+    read (an offset origin, a scaled mesh, another geometry) is left out: it is never culled."""
+    return _link_visual_meshes(urdf, Path(urdf).stat().st_mtime_ns)
 
 
 def link_visual_bounds(urdf: str) -> dict[str, tuple[np.ndarray, np.ndarray]]:
-    """Each link's visual bounding box (lo, hi) in its own frame, every visual included (hidden state
-    visuals too), at scale 1, read from the URDF's mesh files. A link with a visual this cannot bound (an
-    offset origin, a scaled mesh, another geometry) is left out: it is never culled."""
-    return _link_visual_bounds(urdf, Path(urdf).stat().st_mtime_ns)
+    """Each link's visual bounding box (lo, hi) in its own frame (`link_visual_meshes`' links)."""
+    return {k: (v.min(axis=0), v.max(axis=0)) for k, (v, _) in link_visual_meshes(urdf).items()}
 
 
 @lru_cache(maxsize=1024)
-def _link_visual_bounds(urdf: str, _mtime: int) -> dict[str, tuple[np.ndarray, np.ndarray]]:
-    out: dict[str, tuple[np.ndarray, np.ndarray]] = {}
-    unbounded: set[str] = set()
+def _link_visual_meshes(urdf: str, _mtime: int) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    out: dict[str, list[tuple[np.ndarray, np.ndarray]]] = {}
+    unreadable: set[str] = set()
     link = None
     for line in Path(urdf).read_text().splitlines():
         m = _LINK.search(line)
@@ -74,15 +85,19 @@ def _link_visual_bounds(urdf: str, _mtime: int) -> dict[str, tuple[np.ndarray, n
         if "<visual" not in line or link is None:
             continue
         mesh = _VISUAL.search(line)
-        b = _obj_bounds(str(Path(urdf).parent / mesh.group(1))) if mesh and "scale=" not in line else None
-        if b is None:
-            unbounded.add(link)
+        vf = _obj_mesh(str(Path(urdf).parent / mesh.group(1))) if mesh and "scale=" not in line else None
+        if vf is None:
+            unreadable.add(link)
             continue
-        lo, hi = np.array(b[0]), np.array(b[1])
-        if link in out:
-            lo, hi = np.minimum(out[link][0], lo), np.maximum(out[link][1], hi)
-        out[link] = (lo, hi)
-    return {k: v for k, v in out.items() if k not in unbounded}
+        out.setdefault(link, []).append(vf)
+    return {k: _joined(parts) for k, parts in out.items() if k not in unreadable}
+
+
+def _joined(parts: list[tuple[np.ndarray, np.ndarray]]) -> tuple[np.ndarray, np.ndarray]:
+    """Meshes as one: vertices stacked, each mesh's triangles moved past the vertices before it."""
+    starts = np.cumsum([0] + [len(v) for v, _ in parts[:-1]])
+    faces = [f + k for (_, f), k in zip(parts, starts, strict=True)]
+    return np.concatenate([v for v, _ in parts]), np.concatenate(faces)
 
 
 def _corners(lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
@@ -114,9 +129,14 @@ class _Boxes:
         """Each box's visual indices."""
         self.queries: list[tuple[int, bool, list[int]]] = []
         """Per body with a box: its id, whether its base has one, the link indices of its other boxes."""
+        self.vertices: list[np.ndarray] = []
+        """Each box's visual vertices, in the frame of its corners."""
+        triangles: list[np.ndarray] = []
         local: list[np.ndarray] = []
         for loaded in objects:
-            bounds = link_visual_bounds(str(loaded.entry.urdf_for(loaded.lod)))
+            meshes = link_visual_meshes(str(loaded.entry.urdf_for(loaded.lod)))
+            vertices = {k: v for k, (v, _) in meshes.items()}
+            bounds = {k: (v.min(axis=0), v.max(axis=0)) for k, v in vertices.items()}
             s = loaded.entry.scale
             visuals: dict[str, list[int]] = {}
             for vis in loaded.entry.visuals:
@@ -126,13 +146,18 @@ class _Boxes:
                 # PyBullet reports the base's inertial frame; the visuals hang off the base link frame
                 local_pos, local_orn = client.getDynamicsInfo(loaded.body, -1)[3:5]
                 inv_pos, inv_orn = client.invertTransform(local_pos, local_orn)
+                inv = _rotations(np.array([inv_orn]))[0].T
                 corners = _corners(bounds["base"][0] * s, bounds["base"][1] * s)
-                local.append(corners @ _rotations(np.array([inv_orn]))[0].T + np.array(inv_pos))
+                local.append(corners @ inv + np.array(inv_pos))
+                triangles.append(meshes["base"][1] + sum(len(v) for v in self.vertices))
+                self.vertices.append(vertices["base"] * s @ inv + np.array(inv_pos))
                 self._add(loaded, "base", -1, visuals)
             ids = []
             for name, j in loaded.link_index.items():
                 if name != "base" and name in bounds:
                     local.append(_corners(bounds[name][0] * s, bounds[name][1] * s))
+                    triangles.append(meshes[name][1] + sum(len(v) for v in self.vertices))
+                    self.vertices.append(vertices[name] * s)
                     self._add(loaded, name, j, visuals)
                     ids.append(j)
             if has_base or ids:
@@ -141,6 +166,14 @@ class _Boxes:
         self.poses = np.full((len(self.keys), 7), np.nan)
         """The pose (position, quaternion) each box's world corners were computed for."""
         self.world = np.zeros_like(self.local)
+        self.vertex_box = np.concatenate([np.full(len(v), k) for k, v in enumerate(self.vertices)]) \
+            if self.vertices else np.zeros(0, dtype=int)
+        """Each vertex's box index, in the order of `world_vertices`."""
+        self.local_vertices = np.concatenate(self.vertices) if self.vertices else np.zeros((0, 3))
+        self.world_vertices = np.zeros_like(self.local_vertices)
+        """Every box's visual vertices in world coordinates for the poses last seen, shape (n, 3)."""
+        self.triangles = np.concatenate(triangles) if triangles else np.zeros((0, 3), dtype=np.int64)
+        """Every visual triangle, as three rows of `world_vertices`."""
 
     def _add(self, loaded: LoadedAsset, name: str, link: int, visuals: dict[str, list[int]]) -> None:
         self.keys.append((loaded, name))
@@ -166,6 +199,11 @@ class _Boxes:
         if moved.any():
             rot = _rotations(poses[moved, 3:])
             self.world[moved] = np.einsum("nij,nkj->nki", rot, self.local[moved]) + poses[moved, None, :3]
+            which = np.cumsum(moved) - 1  # box index -> row of `rot`
+            vertex_moved = moved[self.vertex_box]
+            boxes = self.vertex_box[vertex_moved]
+            self.world_vertices[vertex_moved] = np.einsum("nij,nj->ni", rot[which[boxes]],
+                                                          self.local_vertices[vertex_moved]) + poses[boxes, :3]
             self.poses = poses
         return self.world
 
@@ -211,6 +249,23 @@ class FrustumCuller:
             self._outdoor_bodies.append((body, list(shape[7])))
         self._outdoor_colors = dict(self._outdoor_bodies)
         self._outdoors = OutdoorCuller(room, boxes) if boxes else None
+        self._structure = _structure_corners(client, {lo.body for lo in objects.values()})
+        """The corners of every visible box that is not an object (floor, walls, ceiling, outdoors), (n, 8, 3):
+        they never move."""
+
+    def touches_eye_plane(self, view: list[float]) -> bool:
+        """Whether a face of a visible structure box or a triangle of an object link lies in the plane through
+        this view's eye (`eye_plane`: TinyRenderer would loop for good)."""
+        if _BOX_FACES.size and (near_eye_plane(view, self._structure)[:, _BOX_FACES].all(axis=2)).any():
+            return True
+        table = self._boxes()
+        if not table.keys:
+            return False
+        if self._stale:
+            table.update(self.client)
+            self._stale = False
+        near = near_eye_plane(view, table.world_vertices)
+        return bool(near.any()) and bool(near[table.triangles].all(axis=1).any())
 
     def poses_moved(self) -> None:
         """A body or link may have moved: ask every pose again at the next cull."""
@@ -309,6 +364,27 @@ class FrustumCuller:
             yield self.cull(view, proj, width, height)
         finally:
             self.reveal()
+
+
+_BOX_FACES = np.array([[0, 1, 2, 3], [4, 5, 6, 7], [0, 1, 4, 5], [2, 3, 6, 7], [0, 2, 4, 6], [1, 3, 5, 7]])
+"""The corners of each face of a box, as `_corners` orders them."""
+
+
+def _structure_corners(client: BulletClient, objects: set[int]) -> np.ndarray:
+    """The corners (n, 8, 3) of every visible box visual of the bodies that are not `objects`."""
+    corners = []
+    for i in range(client.getNumBodies()):
+        body = client.getBodyUniqueId(i)
+        if body in objects:
+            continue
+        pos, orn = client.getBasePositionAndOrientation(body)
+        for shape in client.getVisualShapeData(body):
+            if shape[2] != p.GEOM_BOX or shape[1] != -1 or shape[7][3] == 0:
+                continue
+            half = np.array(shape[3]) / 2
+            at, turn = client.multiplyTransforms(pos, orn, shape[5], shape[6])
+            corners.append(_corners(-half, half) @ _rotations(np.array([turn]))[0].T + np.array(at))
+    return np.stack(corners) if corners else np.zeros((0, 8, 3))
 
 
 REVEALING = frozenset({"getCameraImage", "getVisualShapeData", "changeVisualShape", "changeTexture", "removeBody",

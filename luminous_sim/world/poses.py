@@ -52,7 +52,7 @@ def _seen_in_preview(world: World, pose: AgentPose, body: int) -> bool:
 
     eye = np.array(pose.eye())
     frame = render(world.client, eye, eye + np.array(pose.view_direction()), width=PREVIEW, height=PREVIEW,
-                   fov=world.config.fov, near=0.05, far=20.0)
+                   fov=world.config.fov, near=0.05, far=20.0, guard=world.eye_guard)
     seg = frame.seg
     return bool(((seg >= 0) & ((seg & ((1 << 24) - 1)) == body)).any())
 

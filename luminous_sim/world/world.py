@@ -69,10 +69,11 @@ class World:
         from luminous_sim.world.culling import CullingClient, FrustumCuller
 
         room = scene.room if self.config.cull_outdoors else None
-        self._culler = FrustumCuller(self.client, self.built.objects, room, self.built.outdoors) \
-            if self.config.cull else None
-        if self._culler is not None:  # everyone but the culled render sees every link as it is
-            self.built.client = self.client = cast(BulletClient, CullingClient(self.client, self._culler))
+        self.eye_guard = FrustumCuller(self.client, self.built.objects, room, self.built.outdoors)
+        """Knows the scene's triangles: every render of this World passes it as `guard` (`world.eye_plane`)."""
+        self._culler = self.eye_guard if self.config.cull else None
+        # everyone but the culled render sees every link as it is; the guard hears of every move
+        self.built.client = self.client = cast(BulletClient, CullingClient(self.client, self.eye_guard))
         self.last = StepResult(True, "", {"action": "Initialize"})
         self.interactions = Interactions(self)
         self._view = LiveView(self)
@@ -271,7 +272,7 @@ class World:
             target = eye + np.array(pose.view_direction())
             c = self.config
             self._facts = FrameFacts(render(self.client, eye, target, width=c.width, height=c.height, fov=c.fov,
-                                            near=0.05, far=20.0, culler=self._culler))
+                                            near=0.05, far=20.0, culler=self._culler, guard=self.eye_guard))
         return self._facts
 
     def frame(self) -> Frame:

@@ -30,7 +30,8 @@ set is the `slow` case."""
 
 def _plain(world: World, pose: AgentPose, size: int):
     eye = np.array(pose.eye())
-    return render(world.client, eye, eye + np.array(pose.view_direction()), width=size, height=size)
+    return render(world.client, eye, eye + np.array(pose.view_direction()), width=size, height=size,
+                  guard=world.eye_guard)
 
 
 @pytest.mark.parametrize(("size", "sample"), SIZES)
@@ -45,7 +46,7 @@ def test_culled_frames_equal_plain_frames(kitchen_scene, size, sample):
         for pose in views:
             eye = np.array(pose.eye())
             target = eye + np.array(pose.view_direction())
-            plain = render(w.client, eye, target, width=size, height=size)
+            plain = render(w.client, eye, target, width=size, height=size, guard=w.eye_guard)
             view = w.client.computeViewMatrix(list(eye), list(target), [0, 0, 1])
             proj = w.client.computeProjectionMatrixFOV(60.0, 1.0, 0.05, 20.0)
             culled_any += len(w._culler.outside(view, proj, size, size))

@@ -33,7 +33,7 @@ def fresh_render(world):
     pose, c = world.agent, world.config
     eye = np.array(pose.eye())
     return render(world.client, eye, eye + np.array(pose.view_direction()), width=c.width, height=c.height,
-                  fov=c.fov, near=0.05, far=20.0)
+                  fov=c.fov, near=0.05, far=20.0, guard=world.eye_guard)
 
 
 def test_one_step_computes_the_masks_once(world, mask_calls):

@@ -44,7 +44,7 @@ def test_outdoors_culled_frames_equal_plain_frames(room, seed, size, step):
             away = w._culler.outdoors_hidden(view, proj, size, size)
             hidden_in += ground in away
             shown_in += ground not in away
-            plain = render(w.client, eye, target, width=size, height=size)
+            plain = render(w.client, eye, target, width=size, height=size, guard=w.eye_guard)
             fast = render(w.client, eye, target, width=size, height=size, culler=w._culler)
             for name in ("depth", "seg"):
                 assert np.array_equal(getattr(plain, name), getattr(fast, name)), (name, pose, away)
