@@ -129,8 +129,7 @@ class _Boxes:
         """Each box's visual indices."""
         self.queries: list[tuple[int, bool, list[int]]] = []
         """Per body with a box: its id, whether its base has one, the link indices of its other boxes."""
-        self.vertices: list[np.ndarray] = []
-        """Each box's visual vertices, in the frame of its corners."""
+        vertices_of: list[np.ndarray] = []  # each box's visual vertices, in the frame of its corners
         triangles: list[np.ndarray] = []
         local: list[np.ndarray] = []
         for loaded in objects:
@@ -149,15 +148,15 @@ class _Boxes:
                 inv = _rotations(np.array([inv_orn]))[0].T
                 corners = _corners(bounds["base"][0] * s, bounds["base"][1] * s)
                 local.append(corners @ inv + np.array(inv_pos))
-                triangles.append(meshes["base"][1] + sum(len(v) for v in self.vertices))
-                self.vertices.append(vertices["base"] * s @ inv + np.array(inv_pos))
+                triangles.append(meshes["base"][1] + sum(len(v) for v in vertices_of))
+                vertices_of.append(vertices["base"] * s @ inv + np.array(inv_pos))
                 self._add(loaded, "base", -1, visuals)
             ids = []
             for name, j in loaded.link_index.items():
                 if name != "base" and name in bounds:
                     local.append(_corners(bounds[name][0] * s, bounds[name][1] * s))
-                    triangles.append(meshes[name][1] + sum(len(v) for v in self.vertices))
-                    self.vertices.append(vertices[name] * s)
+                    triangles.append(meshes[name][1] + sum(len(v) for v in vertices_of))
+                    vertices_of.append(vertices[name] * s)
                     self._add(loaded, name, j, visuals)
                     ids.append(j)
             if has_base or ids:
@@ -166,10 +165,10 @@ class _Boxes:
         self.poses = np.full((len(self.keys), 7), np.nan)
         """The pose (position, quaternion) each box's world corners were computed for."""
         self.world = np.zeros_like(self.local)
-        self.vertex_box = np.concatenate([np.full(len(v), k) for k, v in enumerate(self.vertices)]) \
-            if self.vertices else np.zeros(0, dtype=int)
+        self.vertex_box = np.concatenate([np.full(len(v), k) for k, v in enumerate(vertices_of)]) \
+            if vertices_of else np.zeros(0, dtype=int)
         """Each vertex's box index, in the order of `world_vertices`."""
-        self.local_vertices = np.concatenate(self.vertices) if self.vertices else np.zeros((0, 3))
+        self.local_vertices = np.concatenate(vertices_of) if vertices_of else np.zeros((0, 3))
         self.world_vertices = np.zeros_like(self.local_vertices)
         """Every box's visual vertices in world coordinates for the poses last seen, shape (n, 3)."""
         self.triangles = np.concatenate(triangles) if triangles else np.zeros((0, 3), dtype=np.int64)
@@ -256,14 +255,9 @@ class FrustumCuller:
     def touches_eye_plane(self, view: list[float]) -> bool:
         """Whether a face of a visible structure box or a triangle of an object link lies in the plane through
         this view's eye (`eye_plane`: TinyRenderer would loop for good)."""
-        if _BOX_FACES.size and (near_eye_plane(view, self._structure)[:, _BOX_FACES].all(axis=2)).any():
+        if near_eye_plane(view, self._structure)[:, _BOX_FACES].all(axis=2).any():
             return True
-        table = self._boxes()
-        if not table.keys:
-            return False
-        if self._stale:
-            table.update(self.client)
-            self._stale = False
+        table = self._posed()
         near = near_eye_plane(view, table.world_vertices)
         return bool(near.any()) and bool(near[table.triangles].all(axis=1).any())
 
@@ -283,13 +277,18 @@ class FrustumCuller:
             self._stale = True
         return table
 
-    def _outside(self, view_proj: np.ndarray, margin: tuple[float, float]) -> tuple[_Boxes, np.ndarray]:
+    def _posed(self) -> _Boxes:
+        """The box table with the poses of now (asked again only after a call that can move a body)."""
         table = self._boxes()
-        if not table.keys:
-            return table, np.zeros(0, dtype=bool)
-        if self._stale:
+        if self._stale and table.keys:
             table.update(self.client)
             self._stale = False
+        return table
+
+    def _outside(self, view_proj: np.ndarray, margin: tuple[float, float]) -> tuple[_Boxes, np.ndarray]:
+        table = self._posed()
+        if not table.keys:
+            return table, np.zeros(0, dtype=bool)
         return table, outside_view(table.world, view_proj, margin)
 
     def _away_from(self, view: list[float], view_proj: np.ndarray, margin: tuple[float, float]) -> list[int]:

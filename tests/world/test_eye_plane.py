@@ -49,7 +49,7 @@ def test_the_culler_sees_structure_corners_and_object_vertices_in_the_eye_plane(
             else:
                 pos, orn = c.getLinkState(loaded.body, link, computeForwardKinematics=1)[4:6]
             mine = table.world_vertices[table.vertex_box == k]
-            local = table.vertices[k][:3]
+            local = table.local_vertices[table.vertex_box == k][:3]
             want = [c.multiplyTransforms(pos, orn, list(v), [0, 0, 0, 1])[0] for v in local]
             assert np.allclose(mine[:3], want, atol=1e-6), (loaded.entry.id, name)
         # views whose eye plane holds a triangle of the fridge's door, one through a single vertex of it, and one
