@@ -8,7 +8,7 @@ plays exactly as in a new world. Any other world is closed, and the next one is 
 
 from __future__ import annotations
 
-from typing import Protocol
+from typing import Literal, Protocol, cast
 
 from luminous_sim.env.config import EnvConfig
 from luminous_sim.scene import Scene
@@ -32,7 +32,8 @@ class WorldSource(Protocol):
 
 def world_config(config: EnvConfig) -> WorldConfig:
     """The simulator settings of an environment."""
-    return WorldConfig(width=config.width, height=config.height, min_visible_pixels=config.visible_pixels)
+    return WorldConfig(width=config.width, height=config.height, min_visible_pixels=config.visible_pixels,
+                       rasteriser=cast(Literal["tinyrenderer", "compiled"], config.rasteriser))
 
 
 class WorldPool:

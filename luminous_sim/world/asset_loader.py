@@ -86,8 +86,18 @@ def _default_alpha(state: str | None) -> float:
     return 0.0 if state in HIDDEN_STATES else 1.0
 
 
+_visual_changes = [0]
+
+
+def visual_changes() -> int:
+    """How many times `set_visual_alpha` has changed a visual in this process (readers of `LoadedAsset` colours
+    compare it to know whether to read them again)."""
+    return _visual_changes[0]
+
+
 def set_visual_alpha(client: BulletClient, loaded: LoadedAsset, link: str, index: int, alpha: float) -> None:
     """Show (alpha 1) or hide (alpha 0: gone from RGB and segmentation) one visual of an asset."""
+    _visual_changes[0] += 1
     rgba = list(loaded.colors[(link, index)][:3]) + [alpha]
     loaded.alphas[(link, index)] = alpha
     loaded.last_set[link] = index

@@ -234,6 +234,8 @@ class FrustumCuller:
         self._objects = objects
         self._table: _Boxes | None = None
         self._stale = True
+        self.pose_epoch = 0
+        """Counts `poses_moved` calls: another user of poses (the compiled rasteriser) compares it."""
         self._hidden: dict[int, tuple[LoadedAsset, str, int, list[int]]] = {}
         """Links kept hidden, by box index: asset, link name, link index, the visuals to show again."""
         self._away: set[int] = set()
@@ -264,6 +266,7 @@ class FrustumCuller:
     def poses_moved(self) -> None:
         """A body or link may have moved: ask every pose again at the next cull."""
         self._stale = True
+        self.pose_epoch += 1
 
     def _boxes(self) -> _Boxes:
         """The box table for the objects now (made again when an object was added, removed or replaced: a body
@@ -302,6 +305,13 @@ class FrustumCuller:
         """The object links whose visual box lies wholly beyond one plane of this camera's frustum."""
         table, out = self._outside(_view_proj(view, proj), _margin(width, height))
         return [table.keys[k] for k in np.flatnonzero(out)]
+
+    def outside_mask(self, view: list[float], proj: list[float], width: int, height: int
+                     ) -> tuple[list[tuple[LoadedAsset, str]], np.ndarray]:
+        """Every object link with a box (asset, link name; the same list until the objects change) and whether
+        each lies wholly beyond one plane of this camera's frustum."""
+        table, out = self._outside(_view_proj(view, proj), _margin(width, height))
+        return table.keys, out
 
     def outdoors_hidden(self, view: list[float], proj: list[float], width: int, height: int) -> list[int]:
         """The outdoor bodies that no doorway or window shows to this camera."""

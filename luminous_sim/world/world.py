@@ -7,9 +7,10 @@ it was (lastActionSuccess false, errorMessage set), as AI2-THOR does. Arguments 
 
 from __future__ import annotations
 
+import warnings
 from collections.abc import Iterable
 from dataclasses import dataclass
-from typing import Any, cast
+from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
 
@@ -28,6 +29,9 @@ from luminous_sim.world.navigation import NavGrid
 from luminous_sim.world.results import StepResult
 from luminous_sim.world.scene_builder import BuiltScene, build_scene
 from luminous_sim.world.view import LiveView, WorldView
+
+if TYPE_CHECKING:
+    from luminous_sim.world.raster_scene import CompiledRenderer
 
 
 @dataclass(frozen=True)
@@ -72,6 +76,7 @@ class World:
         self.eye_guard = FrustumCuller(self.client, self.built.objects, room, self.built.outdoors)
         """Knows the scene's triangles: every render of this World passes it as `guard` (`world.eye_plane`)."""
         self._culler = self.eye_guard if self.config.cull else None
+        self._compiled = self._compiled_renderer()
         # everyone but the culled render sees every link as it is; the guard hears of every move
         self.built.client = self.client = cast(BulletClient, CullingClient(self.client, self.eye_guard))
         self.last = StepResult(True, "", {"action": "Initialize"})
@@ -262,6 +267,19 @@ class World:
         return tuple(self.client.getBasePositionAndOrientation(self.built.objects[o].body)
                      for o in family(self, self.interactions.state, held))
 
+    def _compiled_renderer(self) -> CompiledRenderer | None:
+        """The compiled rasteriser where the config asks for it (None: PyBullet's TinyRenderer draws)."""
+        if self.config.rasteriser != "compiled":
+            return None
+        from luminous_sim.world.raster_scene import CompiledRenderer, UnsupportedGeometry
+
+        try:
+            return CompiledRenderer(self.client, self.built.objects, self.eye_guard, self.config.cull)
+        except UnsupportedGeometry as exc:
+            warnings.warn(f"rasteriser='compiled' cannot draw this scene ({exc}); TinyRenderer draws it",
+                          stacklevel=3)
+            return None
+
     def _frame_facts(self) -> FrameFacts:
         kept = self._kept
         if self._facts is None and kept is not None and kept.pose == self.agent and kept.held == self._held_poses():
@@ -272,7 +290,8 @@ class World:
             target = eye + np.array(pose.view_direction())
             c = self.config
             self._facts = FrameFacts(render(self.client, eye, target, width=c.width, height=c.height, fov=c.fov,
-                                            near=0.05, far=20.0, culler=self._culler, guard=self.eye_guard))
+                                            near=0.05, far=20.0, culler=self._culler, guard=self.eye_guard,
+                                            compiled=self._compiled))
         return self._facts
 
     def frame(self) -> Frame:

@@ -1,0 +1,273 @@
+"""TinyRenderer's rasteriser, compiled with numba: the same arithmetic, without PyBullet's per-call costs.
+
+Each step follows PyBullet's TinyRenderer (bullet3 `examples/TinyRenderer`: `TinyRenderer::renderObject`,
+`our_gl.cpp`'s `triangle` / `triangleClipped` / `barycentric`, `Shader::vertex` / `Shader::fragment`, and
+`TinyRendererVisualShapeConverter::render` / `copyCameraImageData`) in float32, in the order TinyRenderer does
+it (its small-vector dot products add from the last component down), so that a frame comes out as
+TinyRenderer draws it but for rounding in the few places that are not copied exactly (each link's model
+matrix is made from its pose quaternion, the camera position for the back-face test in float64); see
+`raster_scene` for what is drawn and `tests/world/test_raster.py` for the measured agreement.
+
+What makes it cheaper: one compiled loop over every object (no call, matrix set-up or virtual shader per
+object and face), each vertex transformed once, not once per face corner; the light-view transform that only
+shadows use is skipped (shadows are off); objects outside the view are skipped by their bounding box.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+# error_model="numpy": a division by zero gives inf or nan, as in C, where TinyRenderer divides by zero
+
+F = np.float32
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _dot4(m, i, x, y, z, w):
+    """Row i of m times (x, y, z, w), added from the last component down (TinyRenderer's `vec` dot)."""
+    acc = F(0.0)
+    acc += m[i, 3] * w
+    acc += m[i, 2] * z
+    acc += m[i, 1] * y
+    acc += m[i, 0] * x
+    return acc
+
+
+@njit(cache=True, error_model="numpy")
+def matmul4(a, b):
+    """a @ b in float32 with TinyRenderer's order of additions."""
+    out = np.empty((4, 4), np.float32)
+    for i in range(4):
+        for j in range(4):
+            out[i, j] = _dot4(a, i, b[0, j], b[1, j], b[2, j], b[3, j])
+    return out
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _barycentric(ax, ay, bx, by, cx, cy, px, py):
+    s0x = cx - ax
+    s0y = bx - ax
+    s0z = ax - px
+    s1x = cy - ay
+    s1y = by - ay
+    s1z = ay - py
+    ux = s0y * s1z - s0z * s1y
+    uy = s0z * s1x - s0x * s1z
+    uz = s0x * s1y - s0y * s1x
+    if abs(uz) > F(1e-2):
+        return F(1.0) - (ux + uy) / uz, uy / uz, ux / uz
+    return F(-1.0), F(1.0), F(1.0)
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _shade(n, bar0, bar1, bar2, light, color, out_rgb, k):
+    """Shader::fragment for a face with no texture and no shadow: the colour written at pixel k."""
+    b0 = F(0.0)
+    b0 += n[2, 0] * bar2
+    b0 += n[1, 0] * bar1
+    b0 += n[0, 0] * bar0
+    b1 = F(0.0)
+    b1 += n[2, 1] * bar2
+    b1 += n[1, 1] * bar1
+    b1 += n[0, 1] * bar0
+    b2 = F(0.0)
+    b2 += n[2, 2] * bar2
+    b2 += n[1, 2] * bar1
+    b2 += n[0, 2] * bar0
+    inv = F(1.0) / np.float32(np.sqrt(b0 * b0 + b1 * b1 + b2 * b2))
+    b0 *= inv
+    b1 *= inv
+    b2 *= inv
+    nl = F(0.0)
+    nl += b2 * light[2]
+    nl += b1 * light[1]
+    nl += b0 * light[0]
+    two = nl * F(2.0)
+    rx = b0 * two - light[0]
+    ry = b1 * two - light[1]
+    rz = b2 * two - light[2]
+    rz = rz * (F(1.0) / np.float32(np.sqrt(rx * rx + ry * ry + rz * rz)))
+    r = max(rz, F(0.0))
+    specular = r * r  # pow(r, 2): the model's specular exponent without a specular map
+    diffuse = max(F(0.0), nl)
+    lit = F(0.35) * diffuse + F(0.05) * specular
+    for c in range(3):
+        base = np.float32(np.uint8(F(255.0) * color[c]))  # TGAColor(255) channel *= rgba, kept a byte
+        v = F(0.6) * base + lit * base
+        iv = np.int32(v) if v == v else np.int32(0)
+        out_rgb[k, c] = np.uint8(min(iv, 255))
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _screen(clip, i, hw, hh):
+    """Vertex i's screen x, y (the viewport row times the clip point, added last to first, over w) and w."""
+    x, y, w = clip[i, 0], clip[i, 1], clip[i, 3]
+    px = F(0.0)
+    px += hw * w
+    px += hw * x
+    py = F(0.0)
+    py += hh * w
+    py += hh * y
+    return px / w, py / w, w
+
+
+@njit(cache=True, error_model="numpy")
+def _raster(tri_clip, org_clip, clipped, normals, light, color, seg_id, width, height, near, far,
+            zbuf, rgb, seg):
+    """our_gl's `triangle` (clipped False) or `triangleClipped` for one triangle given in clip coordinates."""
+    hw = F(width) / F(2.0)
+    hh = F(height) / F(2.0)
+    s0x, s0y, w0 = _screen(tri_clip, 0, hw, hh)
+    s1x, s1y, w1 = _screen(tri_clip, 1, hw, hh)
+    s2x, s2y, w2 = _screen(tri_clip, 2, hw, hh)
+    big = F(np.finfo(np.float32).max)
+    cx = F(width - 1)
+    cy = F(height - 1)
+    bminx = max(F(0.0), min(big, s0x))
+    bmaxx = min(cx, max(-big, s0x))
+    bminy = max(F(0.0), min(big, s0y))
+    bmaxy = min(cy, max(-big, s0y))
+    bminx = max(F(0.0), min(bminx, s1x))
+    bmaxx = min(cx, max(bmaxx, s1x))
+    bminy = max(F(0.0), min(bminy, s1y))
+    bmaxy = min(cy, max(bmaxy, s1y))
+    bminx = max(F(0.0), min(bminx, s2x))
+    bmaxx = min(cx, max(bmaxx, s2x))
+    bminy = max(F(0.0), min(bminy, s2y))
+    bmaxy = min(cy, max(bmaxy, s2y))
+    o0x, o0y, v0 = s0x, s0y, w0
+    o1x, o1y, v1 = s1x, s1y, w1
+    o2x, o2y, v2 = s2x, s2y, w2
+    if clipped:
+        o0x, o0y, v0 = _screen(org_clip, 0, hw, hh)
+        o1x, o1y, v1 = _screen(org_clip, 1, hw, hh)
+        o2x, o2y, v2 = _screen(org_clip, 2, hw, hh)
+    if not (bminx <= bmaxx and bminy <= bmaxy):
+        return
+    x0 = np.int64(bminx)
+    y0 = np.int64(bminy)
+    for ix in range(x0, width):
+        if F(ix) > bmaxx:
+            break
+        for iy in range(y0, height):
+            if F(iy) > bmaxy:
+                break
+            b0, b1, b2 = _barycentric(s0x, s0y, s1x, s1y, s2x, s2y, F(ix), F(iy))
+            c0 = b0 / w0
+            c1 = b1 / w1
+            c2 = b2 / w2
+            s = c0 + c1 + c2
+            c0 /= s
+            c1 /= s
+            c2 /= s
+            d = F(0.0)
+            d += tri_clip[2, 2] * c2
+            d += tri_clip[1, 2] * c1
+            d += tri_clip[0, 2] * c0
+            depth = F(-1.0) * d
+            k = ix + iy * width
+            if b0 < 0 or b1 < 0 or b2 < 0 or zbuf[k] > depth:
+                continue
+            if clipped:
+                e0, e1, e2 = _barycentric(o0x, o0y, o1x, o1y, o2x, o2y, F(ix), F(iy))
+                c0 = e0 / v0
+                c1 = e1 / v1
+                c2 = e2 / v2
+                s = c0 + c1 + c2
+                c0 /= s
+                c1 /= s
+                c2 /= s
+            elif depth < -far or depth > near:
+                continue
+            _shade(normals, c0, c1, c2, light, color, rgb, k)
+            zbuf[k] = depth
+            seg[k] = seg_id
+
+
+@njit(cache=True, error_model="numpy")
+def _clip_edge(t, a, b, out, n):
+    """clipEdge: appends to out[n:] the part of edge a-b in front of the near plane; the new count."""
+    v0 = t[a].copy()
+    v1 = t[b].copy()
+    in0 = v0[3] > F(0.0) and v0[2] > -v0[3]
+    in1 = v1[3] > F(0.0) and v1[2] > -v1[3]
+    if in0 and in1:
+        pass
+    elif in0 or in1:
+        d0 = v0[2] + v0[3]
+        d1 = v1[2] + v1[3]
+        factor = np.float32(1.0 / np.float64(d1 - d0))
+        new = np.empty(4, np.float32)
+        for i in range(4):
+            new[i] = (v0[i] * d1 - v1[i] * d0) * factor
+        if in0:
+            v1 = new
+        else:
+            v0 = new
+    else:
+        return n
+    out[n] = v0
+    out[n + 1] = v1
+    return n + 2
+
+
+@njit(cache=True, error_model="numpy")
+def render_objects(vertices, normals, faces, obj_first, obj_count, obj_vfirst, obj_vcount, models, colors,
+                   seg_ids, drawn, view, proj, eye, light, width, height, near, far, zbuf, rgb, seg):
+    """Draw every object with drawn[o] (in order) into the buffers (TinyRenderer's: zbuf holds -depth in clip
+    units, rows bottom-up). vertices/normals (n, 3) are each object's own, faces (m, 3) index into them."""
+    clip = np.empty((vertices.shape[0], 4), np.float32)
+    world = np.empty((vertices.shape[0], 3), np.float32)
+    nrm = np.empty((vertices.shape[0], 3), np.float32)
+    tri = np.empty((3, 4), np.float32)
+    tn = np.empty((3, 3), np.float32)
+    poly = np.empty((6, 4), np.float32)
+    sub = np.empty((3, 4), np.float32)
+    for o in range(models.shape[0]):
+        if not drawn[o]:
+            continue
+        model = models[o]
+        pmv = matmul4(proj, matmul4(view, model))
+        v0, vn = obj_vfirst[o], obj_vcount[o]
+        for v in range(v0, v0 + vn):
+            x, y, z = vertices[v, 0], vertices[v, 1], vertices[v, 2]
+            for r in range(4):
+                clip[v, r] = _dot4(pmv, r, x, y, z, F(1.0))
+            for r in range(3):
+                world[v, r] = _dot4(model, r, x, y, z, F(1.0))
+            nx, ny, nz = normals[v, 0], normals[v, 1], normals[v, 2]
+            for r in range(3):  # the model's rotation: its inverse transpose for a rigid transform
+                nrm[v, r] = _dot4(model, r, nx, ny, nz, F(0.0))
+        for f in range(obj_first[o], obj_first[o] + obj_count[o]):
+            i0, i1, i2 = faces[f, 0] + v0, faces[f, 1] + v0, faces[f, 2] + v0
+            # back-face culling, in float64 as btVector3
+            ax, ay, az = np.float64(world[i0, 0]), np.float64(world[i0, 1]), np.float64(world[i0, 2])
+            ux, uy, uz = world[i1, 0] - ax, world[i1, 1] - ay, world[i1, 2] - az
+            wx, wy, wz = world[i2, 0] - ax, world[i2, 1] - ay, world[i2, 2] - az
+            ux, uy, uz = np.float64(ux), np.float64(uy), np.float64(uz)
+            wx, wy, wz = np.float64(wx), np.float64(wy), np.float64(wz)
+            nx = uy * wz - uz * wy
+            ny = uz * wx - ux * wz
+            nz = ux * wy - uy * wx
+            if (ax - eye[0]) * nx + (ay - eye[1]) * ny + (az - eye[2]) * nz >= 0:
+                continue
+            for j, i in enumerate((i0, i1, i2)):
+                tri[j] = clip[i]
+                tn[j] = nrm[i]
+            w0, w1, w2 = tri[0, 3], tri[1, 3], tri[2, 3]
+            if w0 < 0 and w1 < 0 and w2 < 0:
+                continue
+            if w0 >= 0 and w1 >= 0 and w2 >= 0:
+                _raster(tri, tri, False, tn, light, colors[o], seg_ids[o], width, height, near, far, zbuf, rgb, seg)
+                continue
+            n = _clip_edge(tri, 0, 1, poly, 0)
+            n = _clip_edge(tri, 1, 2, poly, n)
+            n = _clip_edge(tri, 2, 0, poly, n)
+            if n < 3:
+                continue
+            for i in range(1, n - 1):
+                sub[0] = poly[0]
+                sub[1] = poly[i]
+                sub[2] = poly[i + 1]
+                _raster(sub, tri, True, tn, light, colors[o], seg_ids[o], width, height, near, far, zbuf, rgb, seg)

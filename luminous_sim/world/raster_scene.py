@@ -1,0 +1,336 @@
+"""What the compiled rasteriser draws for one built scene, and the frame it makes (`raster_kernel`).
+
+The scene's drawable geometry is gathered once, as TinyRenderer holds it: one render object per visual of
+every link (objects: their URDF's OBJ meshes, scaled by the asset's scale and moved into the link's inertial
+frame, as PyBullet bakes them; everything else: its box visuals), each with its own vertices, unit normals
+and triangles. Per frame only poses and colours are read: the poses of object links after a call that can
+move a body (`FrustumCuller`'s box table knows when), colours and alphas from each `LoadedAsset` (every
+visual change goes through `asset_loader.set_visual_alpha`), and the structure's as they were built. Links
+outside the view and outdoor boxes no opening shows are skipped, as the culled TinyRenderer frame leaves them
+out. Bodies added or removed (slicing) make the table again.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from luminous_sim.world.asset_loader import visual_changes
+from luminous_sim.world.client import BulletClient, p
+
+if TYPE_CHECKING:
+    from luminous_sim.world.asset_loader import LoadedAsset
+    from luminous_sim.world.culling import FrustumCuller
+
+_LINK = re.compile(r'<link name="([^"]+)"')
+_MESH = re.compile(r'<visual [^>]*><origin xyz="0 0 0" rpy="0 0 0"/><geometry><mesh filename="([^"]+)"/>')
+
+# PyBullet's box visual (bullet3 examples/OpenGLWindow/ShapeData.h: cube_vertices_textured, cube_indices): each
+# corner's signs and normal, and the triangles, in PyBullet's order (the order sets the rounding of depth)
+_CUBE = ((-1, -1, 1, 0, 0, 1), (1, -1, 1, 0, 0, 1), (1, 1, 1, 0, 0, 1), (-1, 1, 1, 0, 0, 1),
+         (-1, -1, -1, 0, 0, -1), (1, -1, -1, 0, 0, -1), (1, 1, -1, 0, 0, -1), (-1, 1, -1, 0, 0, -1),
+         (-1, -1, -1, -1, 0, 0), (-1, 1, -1, -1, 0, 0), (-1, 1, 1, -1, 0, 0), (-1, -1, 1, -1, 0, 0),
+         (1, -1, -1, 1, 0, 0), (1, 1, -1, 1, 0, 0), (1, 1, 1, 1, 0, 0), (1, -1, 1, 1, 0, 0),
+         (-1, -1, -1, 0, -1, 0), (-1, -1, 1, 0, -1, 0), (1, -1, 1, 0, -1, 0), (1, -1, -1, 0, -1, 0),
+         (-1, 1, -1, 0, 1, 0), (-1, 1, 1, 0, 1, 0), (1, 1, 1, 0, 1, 0), (1, 1, -1, 0, 1, 0))
+_CUBE_TRIANGLES = ((0, 1, 2), (0, 2, 3), (6, 5, 4), (7, 6, 4), (10, 9, 8), (11, 10, 8), (12, 13, 14), (12, 14, 15),
+                   (18, 17, 16), (19, 18, 16), (20, 21, 22), (20, 22, 23))
+
+
+class UnsupportedGeometry(ValueError):
+    """A body has a visual the compiled rasteriser cannot draw (it then renders with TinyRenderer)."""
+
+
+@lru_cache(maxsize=4096)
+def _obj(path: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """An OBJ file's vertices, per-vertex normals (as `objio.visual_obj` writes them: f a//a) and triangles."""
+    verts, norms, faces = [], [], []
+    for line in Path(path).read_text().splitlines():
+        if line.startswith("v "):
+            verts.append(line.split()[1:4])
+        elif line.startswith("vn "):
+            norms.append(line.split()[1:4])
+        elif line.startswith("f "):
+            faces.append([int(f.split("/")[0]) - 1 for f in line.split()[1:4]])
+    v = np.asarray(verts, dtype=np.float32)
+    n = np.asarray(norms, dtype=np.float32) if len(norms) == len(verts) else None
+    f = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
+    if n is None:
+        raise UnsupportedGeometry(f"{path}: no per-vertex normals")
+    return v, n, f
+
+
+@lru_cache(maxsize=1024)
+def _urdf_visuals(urdf: str) -> dict[str, list[str]]:
+    """Each link's visual mesh files in URDF order (an offset, scaled or non-mesh visual is unsupported)."""
+    out: dict[str, list[str]] = {}
+    link = None
+    for line in Path(urdf).read_text().splitlines():
+        m = _LINK.search(line)
+        if m:
+            link = m.group(1)
+            out.setdefault(link, [])
+        if "<visual" not in line or link is None:
+            continue
+        mesh = _MESH.search(line)
+        if mesh is None or "scale=" in line:
+            raise UnsupportedGeometry(f"{urdf}: link {link} has a visual other than an unscaled mesh at its origin")
+        out[link].append(str(Path(urdf).parent / mesh.group(1)))
+    return out
+
+
+def _unit(n: np.ndarray) -> np.ndarray:
+    """Model::normal: each normal times one over its float32 length."""
+    n = n.astype(np.float32)
+    length = np.sqrt(n[:, 0] * n[:, 0] + n[:, 1] * n[:, 1] + n[:, 2] * n[:, 2])
+    return (n * (np.float32(1.0) / length)[:, None]).astype(np.float32)
+
+
+def _rotation(q) -> np.ndarray:
+    """btMatrix3x3::setRotation of a quaternion (x, y, z, w), in float64."""
+    x, y, z, w = (float(c) for c in q)
+    s = 2.0 / (x * x + y * y + z * z + w * w)
+    xs, ys, zs = x * s, y * s, z * s
+    wx, wy, wz = w * xs, w * ys, w * zs
+    xx, xy, xz = x * xs, x * ys, x * zs
+    yy, yz, zz = y * ys, y * zs, z * zs
+    return np.array([[1.0 - (yy + zz), xy - wz, xz + wy],
+                     [xy + wz, 1.0 - (xx + zz), yz - wx],
+                     [xz - wy, yz + wx, 1.0 - (xx + yy)]])
+
+
+def _box_mesh(half: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    cube = np.asarray(_CUBE, dtype=float)
+    return ((cube[:, :3] * half).astype(np.float32), cube[:, 3:].astype(np.float32),
+            np.asarray(_CUBE_TRIANGLES, dtype=np.int64))
+
+
+@dataclass
+class _Object:
+    """One render object: a visual of one link."""
+
+    body: int
+    link: int
+    vertices: np.ndarray
+    normals: np.ndarray
+    faces: np.ndarray
+    loaded: LoadedAsset | None = None
+    key: tuple[str, int] | None = None
+    """(link name, visual index) in `loaded`'s colours; None for a structure box."""
+    rgba: tuple[float, float, float, float] = (1.0, 1.0, 1.0, 1.0)
+
+
+class RasterScene:
+    """The render objects of one built scene, kept as flat arrays for `raster_kernel.render_objects`."""
+
+    def __init__(self, client: BulletClient, objects: dict[str, LoadedAsset], culler: FrustumCuller):
+        self.client = client
+        self._objects = objects
+        self._culler = culler
+        self._loaded: tuple[LoadedAsset, ...] = ()
+        self._build()
+
+    def _build(self) -> None:
+        client = self.client
+        loaded_by_body = {lo.body: lo for lo in self._objects.values()}
+        items: list[_Object] = []
+        for i in range(client.getNumBodies()):
+            body = client.getBodyUniqueId(i)
+            lo = loaded_by_body.get(body)
+            items += self._asset_objects(lo) if lo is not None else self._box_objects(body)
+        self._items = items
+        self._loaded = tuple(self._objects.values())
+        counts_v = [len(o.vertices) for o in items]
+        counts_f = [len(o.faces) for o in items]
+        self.vertices = np.concatenate([o.vertices for o in items]).astype(np.float32)
+        self.normals = np.concatenate([o.normals for o in items]).astype(np.float32)
+        self.faces = np.concatenate([o.faces for o in items]).astype(np.int64)
+        self.obj_vfirst = np.concatenate([[0], np.cumsum(counts_v)[:-1]]).astype(np.int64)
+        self.obj_vcount = np.asarray(counts_v, dtype=np.int64)
+        self.obj_first = np.concatenate([[0], np.cumsum(counts_f)[:-1]]).astype(np.int64)
+        self.obj_count = np.asarray(counts_f, dtype=np.int64)
+        self.seg_ids = np.asarray([o.body + ((o.link + 1) << 24) for o in items], dtype=np.int32)
+        self.models = np.zeros((len(items), 4, 4), dtype=np.float32)
+        self.models[:, 3, 3] = 1.0
+        self.colors = np.asarray([o.rgba for o in items], dtype=np.float32)
+        self._boxes_of: tuple[list, np.ndarray] | None = None
+        self._bodies = np.asarray([o.body for o in items], dtype=np.int64)
+        # which render objects each pose query moves: per body, base and links
+        self._queries: list[tuple[int, list[int], list[list[int]]]] = []
+        by_body: dict[int, dict[int, list[int]]] = {}
+        for k, o in enumerate(items):
+            if o.loaded is not None:
+                by_body.setdefault(o.body, {}).setdefault(o.link, []).append(k)
+        for body, links in by_body.items():
+            order = sorted(links)
+            self._queries.append((body, order, [links[j] for j in order]))
+        self._static_posed = False
+        self._colors_at = -1
+
+    def _asset_objects(self, lo: LoadedAsset) -> list[_Object]:
+        client = self.client
+        visuals = _urdf_visuals(str(lo.entry.urdf_for(lo.lod)))
+        s = float(lo.entry.scale)
+        out = []
+        for name, j in sorted(lo.link_index.items(), key=lambda kv: kv[1]):
+            files = visuals.get(name, [])
+            if not files:
+                continue
+            pos, orn = client.getDynamicsInfo(lo.body, j)[3:5]
+            inv_pos, inv_orn = client.invertTransform(pos, orn)
+            rot, shift = _rotation(inv_orn), np.asarray(inv_pos, dtype=float)
+            for index, path in enumerate(files):
+                v, n, f = _obj(path)
+                baked = (v.astype(float) * s) @ rot.T + shift
+                normals = _unit(((n.astype(float)) @ rot.T).astype(np.float32))
+                out.append(_Object(lo.body, j, baked.astype(np.float32), normals, f, lo, (name, index)))
+        return out
+
+    def _box_objects(self, body: int) -> list[_Object]:
+        out = []
+        for shape in self.client.getVisualShapeData(body):
+            if shape[7][3] == 0:
+                continue
+            if shape[2] != p.GEOM_BOX or shape[1] != -1 or any(abs(c) > 0 for c in shape[5]) \
+                    or tuple(shape[6]) != (0.0, 0.0, 0.0, 1.0):
+                raise UnsupportedGeometry(f"body {body}: a visual other than a box at the base's origin")
+            v, n, f = _box_mesh(np.asarray(shape[3], dtype=float) * 0.5)
+            out.append(_Object(body, -1, v, n, f, rgba=tuple(shape[7])))
+        return out
+
+    def current(self) -> bool:
+        """Whether the table still describes the scene's objects (none added, removed or replaced)."""
+        objects = tuple(self._objects.values())
+        return len(objects) == len(self._loaded) and all(a is b for a, b in zip(objects, self._loaded, strict=True))
+
+    def update(self, poses_moved: bool) -> None:
+        """Model matrices for the poses of now (asked again only if `poses_moved`) and colours of now."""
+        client = self.client
+        if not self._static_posed:
+            for k, o in enumerate(self._items):
+                if o.loaded is None:
+                    pos, orn = client.getBasePositionAndOrientation(o.body)
+                    self._set_model(k, pos, orn)
+            self._static_posed = True
+            poses_moved = True
+        if poses_moved:
+            for body, links, members in self._queries:
+                states = client.getLinkStates(body, [j for j in links if j >= 0], computeForwardKinematics=1) \
+                    if any(j >= 0 for j in links) else []
+                it = iter(states)
+                for j, ks in zip(links, members, strict=True):
+                    pos, orn = client.getBasePositionAndOrientation(body) if j < 0 else next(it)[:2]
+                    for k in ks:
+                        self._set_model(k, pos, orn)
+        changes = visual_changes()
+        if changes == self._colors_at:
+            return
+        self._colors_at = changes
+        for k, o in enumerate(self._items):
+            if o.loaded is not None and o.key is not None:
+                color = o.loaded.colors.get(o.key)
+                if color is not None:
+                    self.colors[k, :3] = color[:3]
+                self.colors[k, 3] = o.loaded.alphas.get(o.key, 1.0)
+
+    def _set_model(self, k: int, pos, orn) -> None:
+        m = self.models[k]
+        m[:3, :3] = _rotation(orn)
+        m[:3, 3] = pos
+
+    def _item_boxes(self, keys: list[tuple[LoadedAsset, str]]) -> np.ndarray:
+        """Each render object's row in the culler's box list `keys` (-1: a link the culler has no box for)."""
+        if self._boxes_of is None or self._boxes_of[0] is not keys:
+            row = {(id(lo), name): k for k, (lo, name) in enumerate(keys)}
+            boxes = np.asarray([row.get((id(o.loaded), o.key[0]), -1) if o.loaded is not None and o.key else -1
+                                for o in self._items], dtype=np.int64)
+            self._boxes_of = (keys, boxes)
+        return self._boxes_of[1]
+
+    def drawn(self, keys: list[tuple[LoadedAsset, str]], outside: np.ndarray, hidden_bodies: list[int]) -> np.ndarray:
+        """Which render objects are drawn: alpha above 0, not in a link outside the view (`outside` over the
+        culler's `keys`), not in a hidden body."""
+        out = self.colors[:, 3] != 0
+        if len(keys):
+            boxes = self._item_boxes(keys)
+            out &= ~(outside[np.maximum(boxes, 0)] & (boxes >= 0))
+        if hidden_bodies:
+            out &= ~np.isin(self._bodies, np.asarray(hidden_bodies, dtype=np.int64))
+        return out
+
+    def render(self, view: list[float], proj: list[float], width: int, height: int, light,
+               poses_moved: bool, keys: list[tuple[LoadedAsset, str]], outside: np.ndarray,
+               hidden_bodies: list[int]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """RGB (h, w, 3) uint8, PyBullet's depth buffer (h, w) float32 and segmentation (h, w) int32, as
+        `getCameraImage` with TinyRenderer returns them for this view (rows top-down)."""
+        from luminous_sim.world.raster_kernel import render_objects
+
+        self.update(poses_moved)
+        v = np.asarray(view, dtype=np.float32).reshape(4, 4).T.copy()
+        pr = np.asarray(proj, dtype=np.float32).reshape(4, 4).T.copy()
+        one = np.float32(1.0)
+        near, far = np.float32(pr[2, 3] / (pr[2, 2] - one)), np.float32(pr[2, 3] / (pr[2, 2] + one))
+        v64 = np.asarray(view, dtype=float).reshape(4, 4).T
+        eye = -v64[:3, :3].T @ v64[:3, 3]
+        lt = np.asarray(light, dtype=float)
+        lt = (lt * (1.0 / np.sqrt(lt[0] * lt[0] + lt[1] * lt[1] + lt[2] * lt[2]))).astype(np.float32)
+        zbuf = np.full(width * height, -far, dtype=np.float32)
+        rgb = np.full((width * height, 3), 255, dtype=np.uint8)
+        seg = np.full(width * height, -1, dtype=np.int32)
+        render_objects(self.vertices, self.normals, self.faces, self.obj_first, self.obj_count, self.obj_vfirst,
+                       self.obj_vcount, self.models, self.colors, self.seg_ids,
+                       self.drawn(keys, outside, hidden_bodies), v, pr, eye, lt, width, height, near, far,
+                       zbuf, rgb, seg)
+        depth = gl_depth(zbuf, near, far).reshape(height, width)
+        return (rgb.reshape(height, width, 3)[::-1].copy(), depth[::-1].copy(), seg.reshape(height, width)[::-1].copy())
+
+
+def gl_depth(zbuf: np.ndarray, near: np.float32, far: np.float32) -> np.ndarray:
+    """TinyRenderer's depth buffer (-clip z) as PyBullet hands it out (copyCameraImageData), float32."""
+    z_c = -zbuf.astype(np.float32)
+    num = (far * (near + z_c)).astype(np.float64)
+    den = 2.0 * np.float64(far) * np.float64(near) + (far * z_c).astype(np.float64) - (near * z_c).astype(np.float64)
+    return (num / den).astype(np.float32)
+
+
+class CompiledRenderer:
+    """A World's frames drawn by the compiled rasteriser: the render objects made again when the scene's
+    objects change, poses read again when the culler heard of a move, links outside the view and outdoor boxes
+    no opening shows left out (`culler`'s tests), as the culled TinyRenderer frame leaves them out."""
+
+    def __init__(self, client: BulletClient, objects: dict[str, LoadedAsset], culler: FrustumCuller, cull: bool):
+        self.client = client
+        """The client itself (not the `CullingClient` around it)."""
+        self._objects = objects
+        self._culler = culler
+        self._cull = cull
+        self._scene: RasterScene | None = None
+        self._epoch = -1
+        self.scene()  # an unsupported visual is named now, not at the first frame
+
+    def scene(self) -> RasterScene:
+        """The render objects for the scene of now."""
+        if self._scene is None or not self._scene.current():
+            self._culler.reveal()  # a hidden link would be taken for one drawn at alpha 0
+            self._scene = RasterScene(self.client, self._objects, self._culler)
+            self._epoch = -1
+        return self._scene
+
+    def render(self, view: list[float], proj: list[float], width: int, height: int, light
+               ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """RGB, PyBullet's depth buffer and segmentation for this view (`RasterScene.render`)."""
+        scene = self.scene()
+        moved = self._culler.pose_epoch != self._epoch
+        self._epoch = self._culler.pose_epoch
+        keys: list[tuple[LoadedAsset, str]] = []
+        outside = np.zeros(0, dtype=bool)
+        bodies: list[int] = []
+        if self._cull:
+            keys, outside = self._culler.outside_mask(view, proj, width, height)
+            bodies = self._culler.outdoors_hidden(view, proj, width, height)
+        return scene.render(view, proj, width, height, light, moved, keys, outside, bodies)
