@@ -10,10 +10,10 @@ from pybullet_utils.bullet_client import BulletClient
 
 pytest.importorskip("numba")
 
-from luminous_sim.world.config import WorldConfig  # noqa: E402
-from luminous_sim.world.raster_scene import RasterScene, UnsupportedGeometry, _urdf_visuals  # noqa: E402
-from luminous_sim.world.world import World  # noqa: E402
-from tests.world.conftest import obj  # noqa: E402
+from luminous_sim.world.config import WorldConfig
+from luminous_sim.world.raster_scene import RasterScene, UnsupportedGeometry, _urdf_visuals
+from luminous_sim.world.world import World
+from tests.world.conftest import obj
 
 NAV = ["MoveAhead", "RotateRight", "MoveAhead", "LookDown", "RotateLeft", "MoveAhead", "LookUp", "RotateLeft"]
 MAX_DIFFERENT = 0.001
