@@ -9,7 +9,7 @@ OUT ?= out/demo
 $(BIN)/luminous: pyproject.toml
 	$(PY) -m venv $(VENV) || python3 -m venv $(VENV)
 	$(BIN)/pip install --quiet --upgrade pip
-	$(BIN)/pip install --quiet -e '.[test,export,view,fast]'
+	$(BIN)/pip install --quiet -e '.[test,export,view]'
 	# the learned speaker's tests need torch; the CPU build is installed by exact version (never a CUDA one)
 	$(BIN)/pip install --quiet torch==2.13.0 || echo "torch==2.13.0 unavailable: the speaker tests will skip"
 	# RL and offline RL (the `learn` and `minari` extras), after torch so that pip keeps that torch

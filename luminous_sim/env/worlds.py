@@ -33,7 +33,7 @@ class WorldSource(Protocol):
 def world_config(config: EnvConfig) -> WorldConfig:
     """The simulator settings of an environment."""
     return WorldConfig(width=config.width, height=config.height, min_visible_pixels=config.visible_pixels,
-                       rasteriser=cast(Literal["tinyrenderer", "compiled"], config.rasteriser))
+                       rasteriser=cast(Literal["compiled", "tinyrenderer"], config.rasteriser))
 
 
 class WorldPool:

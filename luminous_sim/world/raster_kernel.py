@@ -3,7 +3,9 @@
 Each step follows PyBullet's TinyRenderer (bullet3 `examples/TinyRenderer`: `TinyRenderer::renderObject`,
 `our_gl.cpp`'s `triangle` / `triangleClipped` / `barycentric`, `Shader::vertex` / `Shader::fragment`, and
 `TinyRendererVisualShapeConverter::render` / `copyCameraImageData`) in float32, in the order TinyRenderer does
-it (its small-vector dot products add from the last component down), so that a frame comes out as
+it (its small-vector dot products add from the last component down), but for what PyBullet 3.2.7's build does
+in float64 (read from its machine code: barycentric weights, their perspective correction, the depth and the
+depth test; the back-face test), so that a frame comes out as
 TinyRenderer draws it but for rounding in the few places that are not copied exactly (each link's model
 matrix is made from its pose quaternion, the camera position for the back-face test in float64); see
 `raster_scene` for what is drawn and `tests/world/test_raster.py` for the measured agreement.
@@ -46,6 +48,9 @@ def matmul4(a, b):
 
 @njit(cache=True, inline="always", error_model="numpy")
 def _barycentric(ax, ay, bx, by, cx, cy, px, py):
+    """our_gl's barycentric as PyBullet 3.2.7 compiles it: float32 corners, every operation in float64."""
+    ax, ay, bx, by = np.float64(ax), np.float64(ay), np.float64(bx), np.float64(by)
+    cx, cy, px, py = np.float64(cx), np.float64(cy), np.float64(px), np.float64(py)
     s0x = cx - ax
     s0y = bx - ax
     s0z = ax - px
@@ -55,9 +60,19 @@ def _barycentric(ax, ay, bx, by, cx, cy, px, py):
     ux = s0y * s1z - s0z * s1y
     uy = s0z * s1x - s0x * s1z
     uz = s0x * s1y - s0y * s1x
-    if abs(uz) > F(1e-2):
-        return F(1.0) - (ux + uy) / uz, uy / uz, ux / uz
-    return F(-1.0), F(1.0), F(1.0)
+    if abs(uz) > 1e-2:
+        return 1.0 - (ux + uy) / uz, uy / uz, ux / uz
+    return -1.0, 1.0, 1.0
+
+
+@njit(cache=True, inline="always", error_model="numpy")
+def _perspective(b0, b1, b2, w0, w1, w2):
+    """Screen barycentrics to clip-space ones (over each corner's w, normalised), in float64."""
+    c0 = b0 / np.float64(w0)
+    c1 = b1 / np.float64(w1)
+    c2 = b2 / np.float64(w2)
+    s = c0 + c1 + c2
+    return c0 / s, c1 / s, c2 / s
 
 
 @njit(cache=True, inline="always", error_model="numpy")
@@ -154,34 +169,24 @@ def _raster(tri_clip, org_clip, clipped, normals, light, color, seg_id, width, h
             if F(iy) > bmaxy:
                 break
             b0, b1, b2 = _barycentric(s0x, s0y, s1x, s1y, s2x, s2y, F(ix), F(iy))
-            c0 = b0 / w0
-            c1 = b1 / w1
-            c2 = b2 / w2
-            s = c0 + c1 + c2
-            c0 /= s
-            c1 /= s
-            c2 /= s
-            d = F(0.0)
-            d += tri_clip[2, 2] * c2
-            d += tri_clip[1, 2] * c1
-            d += tri_clip[0, 2] * c0
-            depth = F(-1.0) * d
+            if b0 < 0 or b1 < 0 or b2 < 0:
+                continue
+            c0, c1, c2 = _perspective(b0, b1, b2, w0, w1, w2)
+            d = 0.0
+            d += np.float64(tri_clip[2, 2]) * c2
+            d += np.float64(tri_clip[1, 2]) * c1
+            d += np.float64(tri_clip[0, 2]) * c0
+            depth = -d
             k = ix + iy * width
-            if b0 < 0 or b1 < 0 or b2 < 0 or zbuf[k] > depth:
+            if np.float64(zbuf[k]) > depth:
                 continue
             if clipped:
                 e0, e1, e2 = _barycentric(o0x, o0y, o1x, o1y, o2x, o2y, F(ix), F(iy))
-                c0 = e0 / v0
-                c1 = e1 / v1
-                c2 = e2 / v2
-                s = c0 + c1 + c2
-                c0 /= s
-                c1 /= s
-                c2 /= s
-            elif depth < -far or depth > near:
+                c0, c1, c2 = _perspective(e0, e1, e2, v0, v1, v2)
+            elif depth < -np.float64(far) or depth > np.float64(near):
                 continue
-            _shade(normals, c0, c1, c2, light, color, rgb, k)
-            zbuf[k] = depth
+            _shade(normals, F(c0), F(c1), F(c2), light, color, rgb, k)
+            zbuf[k] = np.float32(depth)
             seg[k] = seg_id
 
 

@@ -57,8 +57,9 @@ def _obj(path: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
             norms.append(line.split()[1:4])
         elif line.startswith("f "):
             faces.append([int(f.split("/")[0]) - 1 for f in line.split()[1:4]])
-    v = np.asarray(verts, dtype=np.float32)
-    n = np.asarray(norms, dtype=np.float32) if len(norms) == len(verts) else None
+    # parsed to float64 then rounded to float32, as tinyobjloader does
+    v = np.asarray(verts, dtype=np.float64).astype(np.float32)
+    n = np.asarray(norms, dtype=np.float64).astype(np.float32) if len(norms) == len(verts) else None
     f = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
     if n is None:
         raise UnsupportedGeometry(f"{path}: no per-vertex normals")
@@ -186,7 +187,8 @@ class RasterScene:
             rot, shift = _rotation(inv_orn), np.asarray(inv_pos, dtype=float)
             for index, path in enumerate(files):
                 v, n, f = _obj(path)
-                baked = (v.astype(float) * s) @ rot.T + shift
+                scaled = (v.astype(float) * s).astype(np.float32)  # the mesh scale, kept in float32
+                baked = scaled.astype(float) @ rot.T + shift
                 normals = _unit(((n.astype(float)) @ rot.T).astype(np.float32))
                 out.append(_Object(lo.body, j, baked.astype(np.float32), normals, f, lo, (name, index)))
         return out
