@@ -339,7 +339,8 @@ class LuminousEnv(gymnasium.Env):
         world = self._world()
         frame = world.frame()
         c = self.config
-        obs: dict[str, Any] = {"rgb": np.ascontiguousarray(frame.rgb[..., :3], dtype=np.uint8),
+        # a copy: the World keeps the frame, and a caller may write into what it is given
+        obs: dict[str, Any] = {"rgb": np.array(frame.rgb[..., :3], dtype=np.uint8, order="C"),
                                "instruction": self._texts[0]}
         if c.high_descs:
             obs["high_descs"] = self._texts[1]

@@ -19,7 +19,7 @@ from luminous_sim.vocab import ALFRED_TASK_TYPES, ROOM_TYPES
 
 REWARD_MODES: tuple[str, ...] = ("dense", "sparse")
 TARGET_KINDS: tuple[str, ...] = ("points", "objects")
-RASTERISERS: tuple[str, ...] = ("compiled", "tinyrenderer")
+RASTERISERS: tuple[str, ...] = ("tinyrenderer", "compiled")
 
 IMAGE_SIZE: tuple[int, int] = (16, 1024)
 """Least and most pixels a side (`width`, `height`). Rendering cost grows with the pixel count (TinyRenderer:
@@ -94,9 +94,10 @@ class EnvConfig:
         scene_attempts: scenes tried before `reset` gives up on finding a task that fits.
         min_visible_pixels: pixels an object needs to count as visible; 0 scales ALFRED's 10 at 300x300
             to the image size.
-        rasteriser: who draws the frames: `compiled` (TinyRenderer's rasteriser compiled with numba: the same
-            RGB and segmentation, depth within float rounding, a 64 px step 2.5x cheaper) or `tinyrenderer`
-            (PyBullet's own, about 66 MB less memory per process); `WorldConfig.rasteriser`.
+        rasteriser: who draws the frames: `tinyrenderer` (PyBullet's own) or `compiled` (TinyRenderer's
+            rasteriser compiled with numba: the same RGB and segmentation, depth within float rounding, a 64 px
+            step about 2.5x cheaper, about 150 MB more memory per process); `WorldConfig.rasteriser`. The RL ids
+            of `envs/small.toml` use `compiled`.
         split: play the episodes of an evaluation split (`S+`, `U+`, `U+test`; see `luminous_sim.splits`)
             instead of generating scenes on the fly: `reset(options={"index": i})` plays entry i, a plain
             `reset` an entry drawn over one round of the split; "" (the default) generates on the fly.
@@ -133,7 +134,7 @@ class EnvConfig:
     verify_expert: bool = True
     scene_attempts: int = 8
     min_visible_pixels: int = 0
-    rasteriser: str = "compiled"
+    rasteriser: str = "tinyrenderer"
     split: str = ""
     cdf: tuple[str, ...] = ()
     task_options: dict[str, float] = field(default_factory=dict)

@@ -29,11 +29,12 @@ class WorldConfig:
     cull_outdoors: bool = True
     """With `cull`, also leave the outdoors (ground, sky) out of each render where no doorway or window of the
     room shows it (see `world.portals`)."""
-    rasteriser: Literal["compiled", "tinyrenderer"] = "compiled"
-    """Who draws the frames: "compiled", TinyRenderer's rasteriser compiled with numba (`world.raster_kernel`:
-    the same RGB and segmentation pixel for pixel, depth within float rounding; a 64 px step 2.5x and a 300 px
-    step 3.8x cheaper; about 66 MB more private memory per process, for numba), or "tinyrenderer", PyBullet's
-    own. A scene with a visual the compiled one cannot draw is drawn by TinyRenderer (with a warning)."""
+    rasteriser: Literal["tinyrenderer", "compiled"] = "tinyrenderer"
+    """Who draws the frames: "tinyrenderer", PyBullet's own, or "compiled", TinyRenderer's rasteriser compiled
+    with numba (`world.raster_kernel`): the same RGB and segmentation pixel for pixel, depth within float
+    rounding, a 64 px step about 2.5x and a 300 px step about 3.8x cheaper, for about 150 MB more memory per
+    process (numba and LLVM; most of it shared libraries). A scene with a visual the compiled one cannot draw is
+    drawn by TinyRenderer (with a warning)."""
     structure_last: bool = True
     """Paint the floor, walls, ceiling and outdoors after the objects (the same frame, less shading; see
     `scene_builder.paint_structure_last`)."""

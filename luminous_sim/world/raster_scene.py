@@ -86,10 +86,11 @@ def _urdf_visuals(urdf: str) -> dict[str, list[str]]:
 
 
 def _unit(n: np.ndarray) -> np.ndarray:
-    """Model::normal: each normal times one over its float32 length."""
+    """Model::normal: each normal times one over its float32 length (a zero normal gives nan, as there)."""
     n = n.astype(np.float32)
     length = np.sqrt(n[:, 0] * n[:, 0] + n[:, 1] * n[:, 1] + n[:, 2] * n[:, 2])
-    return (n * (np.float32(1.0) / length)[:, None]).astype(np.float32)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        return (n * (np.float32(1.0) / length)[:, None]).astype(np.float32)
 
 
 def _rotation(q) -> np.ndarray:
@@ -146,6 +147,7 @@ class RasterScene:
             items += self._asset_objects(lo) if lo is not None else self._box_objects(body)
         self._items = items
         self._loaded = tuple(self._objects.values())
+        self._num_bodies = client.getNumBodies()
         counts_v = [len(o.vertices) for o in items]
         counts_f = [len(o.faces) for o in items]
         self.vertices = np.concatenate([o.vertices for o in items]).astype(np.float32)
@@ -206,9 +208,11 @@ class RasterScene:
         return out
 
     def current(self) -> bool:
-        """Whether the table still describes the scene's objects (none added, removed or replaced)."""
+        """Whether the table still describes the scene (no object added, removed or replaced, no body added or
+        removed)."""
         objects = tuple(self._objects.values())
-        return len(objects) == len(self._loaded) and all(a is b for a, b in zip(objects, self._loaded, strict=True))
+        return len(objects) == len(self._loaded) and all(a is b for a, b in zip(objects, self._loaded, strict=True)) \
+            and self.client.getNumBodies() == self._num_bodies
 
     def update(self, poses_moved: bool) -> None:
         """Model matrices for the poses of now (asked again only if `poses_moved`) and colours of now."""

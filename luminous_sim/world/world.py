@@ -26,6 +26,7 @@ from luminous_sim.world.config import WorldConfig
 from luminous_sim.world.frame_facts import FrameFacts, body_ids
 from luminous_sim.world.interaction import Interactions
 from luminous_sim.world.navigation import NavGrid
+from luminous_sim.world.raster_scene import UnsupportedGeometry
 from luminous_sim.world.results import StepResult
 from luminous_sim.world.scene_builder import BuiltScene, build_scene
 from luminous_sim.world.view import LiveView, WorldView
@@ -271,7 +272,7 @@ class World:
         """The compiled rasteriser where the config asks for it (None: PyBullet's TinyRenderer draws)."""
         if self.config.rasteriser != "compiled":
             return None
-        from luminous_sim.world.raster_scene import CompiledRenderer, UnsupportedGeometry
+        from luminous_sim.world.raster_scene import CompiledRenderer
 
         try:
             return CompiledRenderer(self.client, self.built.objects, self.eye_guard, self.config.cull)
@@ -289,9 +290,16 @@ class World:
             eye = np.array(pose.eye())
             target = eye + np.array(pose.view_direction())
             c = self.config
-            self._facts = FrameFacts(render(self.client, eye, target, width=c.width, height=c.height, fov=c.fov,
-                                            near=0.05, far=20.0, culler=self._culler, guard=self.eye_guard,
-                                            compiled=self._compiled))
+            try:
+                frame = render(self.client, eye, target, width=c.width, height=c.height, fov=c.fov, near=0.05,
+                               far=20.0, culler=self._culler, guard=self.eye_guard, compiled=self._compiled)
+            except UnsupportedGeometry as exc:  # a body added since that the compiled rasteriser cannot draw
+                warnings.warn(f"rasteriser='compiled' cannot draw this scene ({exc}); TinyRenderer draws it",
+                              stacklevel=2)
+                self._compiled = None
+                frame = render(self.client, eye, target, width=c.width, height=c.height, fov=c.fov, near=0.05,
+                               far=20.0, culler=self._culler, guard=self.eye_guard)
+            self._facts = FrameFacts(frame)
         return self._facts
 
     def frame(self) -> Frame:

@@ -1,4 +1,4 @@
-"""The compiled rasteriser (`rasteriser="compiled"`, the default) draws TinyRenderer's frames: the same RGB and
+"""The compiled rasteriser (`rasteriser="compiled"`) draws TinyRenderer's frames: the same RGB and
 segmentation pixel for pixel and depth within float rounding, against PyBullet's own TinyRenderer on the same
 views, through walking and interactions."""
 
@@ -125,7 +125,30 @@ def test_the_env_passes_the_rasteriser_on():
     from luminous_sim.env.worlds import world_config
     from luminous_sim.errors import LuminousError
 
-    assert world_config(EnvConfig(rasteriser="tinyrenderer")).rasteriser == "tinyrenderer"
-    assert world_config(EnvConfig()).rasteriser == "compiled"
+    assert world_config(EnvConfig(rasteriser="compiled")).rasteriser == "compiled"
+    assert world_config(EnvConfig()).rasteriser == "tinyrenderer"
     with pytest.raises(LuminousError, match="rasteriser"):
         EnvConfig(rasteriser="opengl")
+
+
+def test_bodies_added_later_are_drawn_or_handed_to_tinyrenderer(kitchen_scene):
+    """A box added after the World was made is drawn like TinyRenderer draws it; a sphere, which the compiled
+    rasteriser cannot draw, hands the frames to TinyRenderer with a warning."""
+    with World(kitchen_scene, WorldConfig(width=64, height=64, settle_steps=120, rasteriser="tinyrenderer")) as ref, \
+            World(kitchen_scene, WorldConfig(width=64, height=64, settle_steps=120, rasteriser="compiled")) as w:
+        eye = np.array(w.agent.eye()) + 0.8 * np.array(w.agent.view_direction())
+        added = []
+        for world in (w, ref):
+            vis = world.client.createVisualShape(pb.GEOM_BOX, halfExtents=[0.1, 0.1, 0.1], rgbaColor=[1, 0, 0, 1])
+            added.append(world.client.createMultiBody(0, -1, vis, eye.tolist()))
+            world.invalidate_frame()
+        a, b = w.frame(), ref.frame()
+        assert added[0] == added[1] and ((b.seg & 0xFFFFFF) == added[0]).sum() > 20, "the box is not in view"
+        _assert_same(a, b, "box added")
+        assert w._compiled is not None
+        vis = w.client.createVisualShape(pb.GEOM_SPHERE, radius=0.05)
+        w.client.createMultiBody(0, -1, vis, (eye + [0, 0, 0.3]).tolist())
+        w.invalidate_frame()
+        with pytest.warns(UserWarning, match="TinyRenderer draws it"):
+            frame = w.frame()
+        assert w._compiled is None and frame.rgb.shape == (64, 64, 3)
