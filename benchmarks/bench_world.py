@@ -217,18 +217,19 @@ def size_ratio(seed: int, big: int, small: int, steps: int, repeats: int) -> Non
     from luminous_sim.world.world import World
 
     scene = _scene(seed)
-    compiled = f"{small}x{small}, compiled rasteriser"
+    compiled, compiled_big = f"{small}x{small}, compiled rasteriser", f"{big}x{big}, compiled rasteriser"
     with World(scene, WorldConfig(width=big, height=big)) as large, \
             World(scene, WorldConfig(width=small, height=small)) as little, \
-            World(scene, WorldConfig(width=small, height=small, rasteriser="compiled")) as fast:
+            World(scene, WorldConfig(width=small, height=small, rasteriser="compiled")) as fast, \
+            World(scene, WorldConfig(width=big, height=big, rasteriser="compiled")) as fast_large:
         views, failed = record_views(large, steps)
-        assert record_views(little, steps)[0] == views, "the two Worlds took different views"
-        assert record_views(fast, steps)[0] == views, "the compiled rasteriser's World took different views"
-        for world in (large, little, fast):
+        for world in (little, fast, fast_large):
+            assert record_views(world, steps)[0] == views, "the Worlds took different views"
+        for world in (large, little, fast, fast_large):
             env_steps_per_s(world, steps)  # warm them (caches, first renders, numba's compilation)
         runs = {f"{big}x{big}": (large, None), f"{small}x{small}": (little, None),
                 f"{small}x{small}, culled links shown after each frame": (little, _show_culled),
-                compiled: (fast, None)}
+                compiled: (fast, None), compiled_big: (fast_large, None)}
         ms: dict[str, tuple[list[float], list[float]]] = {name: ([], []) for name in runs}
         for _ in range(repeats):
             for name, (world, after) in runs.items():
@@ -246,9 +247,12 @@ def size_ratio(seed: int, big: int, small: int, steps: int, repeats: int) -> Non
         kept = [a / s for a, s in zip(ms[f"{small}x{small}, culled links shown after each frame"][0], small_ms,
                                       strict=True)]
         print(f"  {small} px, shown after each frame / kept hidden, CPU time per repeat: {spread(kept, '.2f')}x")
-        faster = [f / s for f, s in zip(ms[compiled][0], small_ms, strict=True)]
-        print(f"  {small} px, compiled rasteriser / TinyRenderer, CPU time per repeat: {spread(faster, '.2f')}x; "
-              f"{big}/{small} with it: {spread([b / f for b, f in zip(big_ms, ms[compiled][0], strict=True)], '.2f')}x")
+        for size, name, tiny in ((small, compiled, small_ms), (big, compiled_big, big_ms)):
+            faster = [f / t for f, t in zip(ms[name][0], tiny, strict=True)]
+            print(f"  {size} px, compiled rasteriser / TinyRenderer, CPU time per repeat: {spread(faster, '.2f')}x")
+        both = [b / f for b, f in zip(ms[compiled_big][0], ms[compiled][0], strict=True)]
+        print(f"  {big}/{small} CPU time per step with the compiled rasteriser at both, per repeat: "
+              f"{spread(both, '.2f')}x")
 
 
 def nav_unrendered(world, seconds: float) -> float:

@@ -35,17 +35,22 @@ def render(
     until the client is used otherwise (`culling.CullingClient`): the same frame, faster. With `guard` (or
     `culler`), where a triangle of the scene lies in the plane through the eye, the camera moves a tenth of a
     millimetre forward, since TinyRenderer would never return (`world.eye_plane`). With `compiled` (TinyRenderer
-only), the compiled rasteriser draws the frame instead (`world.raster_scene`)."""
+    only, no shadows), the compiled rasteriser draws the frame instead (`world.raster_scene`)."""
     if renderer is None:
         renderer = getattr(client, "luminous_renderer", p.ER_TINY_RENDERER)
     view = client.computeViewMatrix(list(eye), list(target), list(up))
     proj = client.computeProjectionMatrixFOV(fov, width / height, near, far)
     guard = guard or culler
-    if guard is not None and renderer == p.ER_TINY_RENDERER and guard.touches_eye_plane(view):
+    drawn_by = compiled if compiled is not None and renderer == p.ER_TINY_RENDERER and not shadows else None
+    if drawn_by is not None:
+        touches = drawn_by.touches_eye_plane(view)  # the guard's test, compiled
+    else:
+        touches = guard is not None and renderer == p.ER_TINY_RENDERER and guard.touches_eye_plane(view)
+    if touches:
         eye, target = nudged(eye, target)
         view = client.computeViewMatrix(list(eye), list(target), list(up))
-    if compiled is not None and renderer == p.ER_TINY_RENDERER and not shadows:
-        rgb, zbuf, seg = compiled.render(view, proj, width, height, light_direction)
+    if drawn_by is not None:
+        rgb, zbuf, seg = drawn_by.render(view, proj, width, height, light_direction)
     else:
         if culler is not None and renderer == p.ER_TINY_RENDERER:
             culler.cull(view, proj, width, height)

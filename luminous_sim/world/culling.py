@@ -263,6 +263,12 @@ class FrustumCuller:
         near = near_eye_plane(view, table.world_vertices)
         return bool(near.any()) and bool(near[table.triangles].all(axis=1).any())
 
+    def eye_plane_geometry(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
+        """What `touches_eye_plane` tests, for the poses of now: structure box corners (n, 8, 3), each box face's
+        corner indices (6, 4), object link vertices (m, 3) and their triangles (k, 3)."""
+        table = self._posed()
+        return self._structure, _BOX_FACES, table.world_vertices, table.triangles
+
     def poses_moved(self) -> None:
         """A body or link may have moved: ask every pose again at the next cull."""
         self._stale = True
@@ -294,11 +300,13 @@ class FrustumCuller:
             return table, np.zeros(0, dtype=bool)
         return table, outside_view(table.world, view_proj, margin)
 
-    def _away_from(self, view: list[float], view_proj: np.ndarray, margin: tuple[float, float]) -> list[int]:
+    def _away_from(self, view: list[float], view_proj: np.ndarray, margin: tuple[float, float],
+                   compiled: bool = False) -> list[int]:
         if self._outdoors is None:
             return []
         v = np.asarray(view, dtype=float).reshape(4, 4).T
-        hidden = self._outdoors.hidden(-v[:3, :3].T @ v[:3, 3], view_proj, margin)
+        test = self._outdoors.hidden_compiled if compiled else self._outdoors.hidden
+        hidden = test(-v[:3, :3].T @ v[:3, 3], view_proj, margin)
         return [body for (body, _), h in zip(self._outdoor_bodies, hidden.tolist(), strict=True) if h]
 
     def outside(self, view: list[float], proj: list[float], width: int, height: int) -> list[tuple[LoadedAsset, str]]:
@@ -313,9 +321,11 @@ class FrustumCuller:
         table, out = self._outside(_view_proj(view, proj), _margin(width, height))
         return table.keys, out
 
-    def outdoors_hidden(self, view: list[float], proj: list[float], width: int, height: int) -> list[int]:
-        """The outdoor bodies that no doorway or window shows to this camera."""
-        return self._away_from(view, _view_proj(view, proj), _margin(width, height))
+    def outdoors_hidden(self, view: list[float], proj: list[float], width: int, height: int,
+                        compiled: bool = False) -> list[int]:
+        """The outdoor bodies that no doorway or window shows to this camera (`compiled`: with the compiled
+        rasteriser's copy of the test)."""
+        return self._away_from(view, _view_proj(view, proj), _margin(width, height), compiled)
 
     def cull(self, view: list[float], proj: list[float], width: int, height: int) -> int:
         """Hide exactly the links outside this view and the outdoor bodies no opening shows (each with one

@@ -37,6 +37,14 @@ def box_corners(lo: Point3, hi: Point3) -> np.ndarray:
     return np.array([[x, y, z] for x in (lo[0], hi[0]) for y in (lo[1], hi[1]) for z in (lo[2], hi[2])])
 
 
+def view_planes(view_proj: np.ndarray, margin: tuple[float, float]) -> np.ndarray:
+    """The view frustum's 7 planes (the side planes moved out by `margin`) in world coordinates, (7, 4): a point
+    p is beyond plane k where (p, 1) . plane < 0 (at or below 0 for the last, w)."""
+    mx, my = margin
+    return np.array([[1.0, 0.0, 0.0, mx], [-1.0, 0.0, 0.0, mx], [0.0, 1.0, 0.0, my], [0.0, -1.0, 0.0, my],
+                     [0.0, 0.0, 1.0, 1.0], [0.0, 0.0, -1.0, 1.0], [0.0, 0.0, 0.0, 1.0]]) @ view_proj
+
+
 def outside_view(corners: np.ndarray, view_proj: np.ndarray, margin: tuple[float, float]) -> np.ndarray:
     """For boxes given by their corners (n, 8, 3): whether each lies wholly beyond one plane of the view
     frustum (`view_proj` the 4x4 projection @ view matrix; the side planes moved out by `margin`, in
@@ -46,9 +54,7 @@ def outside_view(corners: np.ndarray, view_proj: np.ndarray, margin: tuple[float
     likewise), z < -w, z > w, or w <= 0; each of these is one linear function of the corner below 0 (at or
     below, for w), so the seven functions are taken back to world coordinates once and applied to every
     corner in one product."""
-    mx, my = margin
-    planes = np.array([[1.0, 0.0, 0.0, mx], [-1.0, 0.0, 0.0, mx], [0.0, 1.0, 0.0, my], [0.0, -1.0, 0.0, my],
-                       [0.0, 0.0, 1.0, 1.0], [0.0, 0.0, -1.0, 1.0], [0.0, 0.0, 0.0, 1.0]]) @ view_proj
+    planes = view_planes(view_proj, margin)
     d = corners.reshape(-1, 3) @ planes[:, :3].T + planes[:, 3]  # one 2-D product: a stack of small ones is slower
     beyond = d < 0
     beyond[:, 6] = d[:, 6] <= 0
@@ -134,3 +140,13 @@ class OutdoorCuller:
         d = (self._corners - eye) @ planes.reshape(-1, 3).T  # (n, 8, m * 8)
         beyond = (d < 0).all(axis=1).reshape(n, -1, 8).any(axis=2)  # (n, m): beyond a side of a cone of each
         return beyond.all(axis=1) | seen
+
+    def hidden_compiled(self, eye: np.ndarray, view_proj: np.ndarray, margin: tuple[float, float]) -> np.ndarray:
+        """`hidden`, with the compiled rasteriser's copy of the test (`raster_kernel.outdoors_hidden`)."""
+        from luminous_sim.world.raster_kernel import outdoors_hidden
+
+        n = len(self._corners)
+        if n == 0 or not contains_xy(self._room, float(eye[0]), float(eye[1])):
+            return np.zeros(n, dtype=bool)
+        return outdoors_hidden(np.asarray(eye, dtype=float), view_planes(view_proj, margin), self._corners,
+                               self._opening_corners, self._faces, self._origins, self._normals, MIN_EYE_DEPTH)

@@ -127,7 +127,7 @@ def _screen(clip, i, hw, hh):
     return px / w, py / w, w
 
 
-@njit(cache=True, error_model="numpy")
+@njit(cache=True, error_model="numpy", inline="always")
 def _raster(tri_clip, org_clip, clipped, normals, light, color, seg_id, width, height, near, far,
             zbuf, rgb, seg):
     """our_gl's `triangle` (clipped False) or `triangleClipped` for one triangle given in clip coordinates."""
@@ -276,3 +276,112 @@ def render_objects(vertices, normals, faces, obj_first, obj_count, obj_vfirst, o
                 sub[1] = poly[i]
                 sub[2] = poly[i + 1]
                 _raster(sub, tri, True, tn, light, colors[o], seg_ids[o], width, height, near, far, zbuf, rgb, seg)
+
+
+@njit(cache=True, error_model="numpy")
+def touches_eye_plane(row, structure, box_faces, vertices, triangles, eps):
+    """`culling.FrustumCuller.touches_eye_plane` compiled: whether a face of a structure box (corners (n, 8, 3),
+    faces as corner indices (6, 4)) or a triangle of `vertices` lies within `eps` of the plane through the eye
+    (`row`: the view matrix's third row: a point's eye depth is -(row[:3] . p + row[3]))."""
+    for b in range(structure.shape[0]):
+        near = np.empty(8, np.bool_)
+        for c in range(8):
+            d = -(structure[b, c, 0] * row[0] + structure[b, c, 1] * row[1] + structure[b, c, 2] * row[2] + row[3])
+            near[c] = abs(d) < eps
+        for f in range(box_faces.shape[0]):
+            if near[box_faces[f, 0]] and near[box_faces[f, 1]] and near[box_faces[f, 2]] and near[box_faces[f, 3]]:
+                return True
+    n = vertices.shape[0]
+    near_v = np.empty(n, np.bool_)
+    anyv = False
+    for v in range(n):
+        d = -(vertices[v, 0] * row[0] + vertices[v, 1] * row[1] + vertices[v, 2] * row[2] + row[3])
+        near_v[v] = abs(d) < eps
+        anyv = anyv or near_v[v]
+    if not anyv:
+        return False
+    for t in range(triangles.shape[0]):
+        if near_v[triangles[t, 0]] and near_v[triangles[t, 1]] and near_v[triangles[t, 2]]:
+            return True
+    return False
+
+
+@njit(cache=True, error_model="numpy", inline="always")
+def _box_outside(corners, b, planes):
+    """`portals.outside_view` for box b of corners (n, 8, 3): beyond one of the 7 planes (the last: w <= 0)."""
+    for k in range(7):
+        beyond = True
+        for c in range(8):
+            d = corners[b, c, 0] * planes[k, 0] + corners[b, c, 1] * planes[k, 1] \
+                + corners[b, c, 2] * planes[k, 2] + planes[k, 3]
+            if (d > 0) if k == 6 else (d >= 0):
+                beyond = False
+                break
+        if beyond:
+            return True
+    return False
+
+
+@njit(cache=True, error_model="numpy")
+def outdoors_hidden(eye, planes, corners, opening_corners, faces, origins, normals, min_eye_depth):
+    """`portals.OutdoorCuller.hidden` compiled, for an eye inside the room: whether each outdoor box (corners
+    (n, 8, 3)) is out of sight: out of the view (`planes`: the view's 7 planes in world coordinates, as
+    `outside_view` makes them), or beyond one side of a cone from the eye through each opening in view (openings:
+    corners (m, 8, 3), inner and outer faces (m, 2, 4, 3), wall origins and inward normals (m, 3))."""
+    n, m = corners.shape[0], opening_corners.shape[0]
+    seen = np.empty(n, np.bool_)
+    for b in range(n):
+        seen[b] = _box_outside(corners, b, planes)
+    shown = np.empty(m, np.bool_)
+    any_shown = False
+    for o in range(m):
+        shown[o] = not _box_outside(opening_corners, o, planes)
+        any_shown = any_shown or shown[o]
+    if not any_shown:
+        return np.ones(n, np.bool_)
+    for o in range(m):
+        if shown[o]:
+            depth = (eye[0] - origins[o, 0]) * normals[o, 0] + (eye[1] - origins[o, 1]) * normals[o, 1] \
+                + (eye[2] - origins[o, 2]) * normals[o, 2]
+            if depth < min_eye_depth:
+                return seen
+    hidden = seen.copy()
+    cone = np.empty((8, 3))
+    edges = np.empty((4, 3))
+    for b in range(n):
+        if seen[b]:
+            continue
+        every = True  # beyond a side of a cone of every shown opening
+        for o in range(m):
+            if not shown[o]:
+                continue
+            for f in range(2):
+                mean = np.zeros(3)
+                for p in range(4):
+                    for a in range(3):
+                        edges[p, a] = faces[o, f, p, a] - eye[a]
+                        mean[a] += edges[p, a] / 4.0
+                for p in range(4):
+                    q = (p + 1) % 4
+                    x = edges[p, 1] * edges[q, 2] - edges[p, 2] * edges[q, 1]
+                    y = edges[p, 2] * edges[q, 0] - edges[p, 0] * edges[q, 2]
+                    z = edges[p, 0] * edges[q, 1] - edges[p, 1] * edges[q, 0]
+                    sign = -1.0 if x * mean[0] + y * mean[1] + z * mean[2] < 0 else 1.0
+                    cone[4 * f + p, 0], cone[4 * f + p, 1], cone[4 * f + p, 2] = sign * x, sign * y, sign * z
+            beyond = False
+            for k in range(8):
+                out = True
+                for c in range(8):
+                    d = (corners[b, c, 0] - eye[0]) * cone[k, 0] + (corners[b, c, 1] - eye[1]) * cone[k, 1] \
+                        + (corners[b, c, 2] - eye[2]) * cone[k, 2]
+                    if d >= 0:
+                        out = False
+                        break
+                if out:
+                    beyond = True
+                    break
+            if not beyond:
+                every = False
+                break
+        hidden[b] = every
+    return hidden

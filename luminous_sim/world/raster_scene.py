@@ -162,7 +162,10 @@ class RasterScene:
         self.models[:, 3, 3] = 1.0
         self.colors = np.asarray([o.rgba for o in items], dtype=np.float32)
         self._boxes_of: tuple[list, np.ndarray] | None = None
-        self._bodies = np.asarray([o.body for o in items], dtype=np.int64)
+        self._of_body: dict[int, list[int]] = {}
+        """Each body's render objects."""
+        for k, o in enumerate(items):
+            self._of_body.setdefault(o.body, []).append(k)
         # which render objects each pose query moves: per body, base and links
         self._queries: list[tuple[int, list[int], list[list[int]]]] = []
         by_body: dict[int, dict[int, list[int]]] = {}
@@ -265,8 +268,8 @@ class RasterScene:
         if len(keys):
             boxes = self._item_boxes(keys)
             out &= ~(outside[np.maximum(boxes, 0)] & (boxes >= 0))
-        if hidden_bodies:
-            out &= ~np.isin(self._bodies, np.asarray(hidden_bodies, dtype=np.int64))
+        for body in hidden_bodies:
+            out[self._of_body.get(body, [])] = False
         return out
 
     def render(self, view: list[float], proj: list[float], width: int, height: int, light,
@@ -327,6 +330,15 @@ class CompiledRenderer:
             self._epoch = -1
         return self._scene
 
+    def touches_eye_plane(self, view: list[float]) -> bool:
+        """`FrustumCuller.touches_eye_plane`, compiled (the same test, about a tenth of its cost)."""
+        from luminous_sim.world.eye_plane import EYE_PLANE_EPS
+        from luminous_sim.world.raster_kernel import touches_eye_plane
+
+        structure, faces, vertices, triangles = self._culler.eye_plane_geometry()
+        row = np.asarray(view, dtype=float).reshape(4, 4).T[2].copy()
+        return bool(touches_eye_plane(row, structure, faces, vertices, triangles, EYE_PLANE_EPS))
+
     def render(self, view: list[float], proj: list[float], width: int, height: int, light
                ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """RGB, PyBullet's depth buffer and segmentation for this view (`RasterScene.render`)."""
@@ -338,5 +350,5 @@ class CompiledRenderer:
         bodies: list[int] = []
         if self._cull:
             keys, outside = self._culler.outside_mask(view, proj, width, height)
-            bodies = self._culler.outdoors_hidden(view, proj, width, height)
+            bodies = self._culler.outdoors_hidden(view, proj, width, height, compiled=True)
         return scene.render(view, proj, width, height, light, moved, keys, outside, bodies)

@@ -19,7 +19,8 @@ def test_size_ratio_prints_both_sizes_and_the_culling_ablation(bench, capsys):
     out = capsys.readouterr().out
     for row in ("64x64:", "32x32:", "32x32, culled links shown after each frame:", "64/32 CPU time per step",
                 "32 px, shown after each frame / kept hidden", "32x32, compiled rasteriser:",
-                "32 px, compiled rasteriser / TinyRenderer"):
+                "64x64, compiled rasteriser:", "32 px, compiled rasteriser / TinyRenderer",
+                "64 px, compiled rasteriser / TinyRenderer", "64/32 CPU time per step with the compiled"):
         assert row in out, row
     ms = [float(x) for x in re.findall(r": ([0-9.]+) \(", out)]
     assert len(ms) >= 4 and all(x > 0 for x in ms)

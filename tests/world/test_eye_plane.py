@@ -34,7 +34,8 @@ def test_eye_depth_is_the_distance_along_the_view(world):
 
 
 def test_the_culler_sees_structure_corners_and_object_vertices_in_the_eye_plane(kitchen_scene):
-    with World(kitchen_scene, WorldConfig(width=64, height=64, settle_steps=120)) as w:
+    """And the compiled rasteriser's copy of the test (`CompiledRenderer.touches_eye_plane`) answers the same."""
+    with World(kitchen_scene, WorldConfig(width=64, height=64, settle_steps=120, rasteriser="compiled")) as w:
         fridge = obj(kitchen_scene, "fridge")
         move_joint(w, w.interactions.state, fridge, True)  # a link away from its loaded pose
         culler = w._culler
@@ -61,16 +62,24 @@ def test_the_culler_sees_structure_corners_and_object_vertices_in_the_eye_plane(
         normal = np.cross(b - a, c3 - a)
         normal /= np.linalg.norm(normal)
         along = (b - a) / np.linalg.norm(b - a)
+        compiled = w._compiled
+        assert compiled is not None
+
+        def touches(view: list[float]) -> bool:
+            answer = culler.touches_eye_plane(view)
+            assert compiled.touches_eye_plane(view) == answer
+            return answer
+
         eye = (a + b + c3) / 3 + 0.4 * along
-        assert culler.touches_eye_plane(_view(w, eye, eye + normal))
+        assert touches(_view(w, eye, eye + normal))
         beside = a + 0.4 * np.cross(normal, along)  # in the triangle's plane; the view tilted: only `a` in its plane
-        assert not culler.touches_eye_plane(_view(w, beside, beside + normal + 0.3 * along))
+        assert not touches(_view(w, beside, beside + normal + 0.3 * along))
         face = culler._structure[0][[0, 1, 2, 3]]  # a face of a wall or floor box
         up, across = face[1] - face[0], face[2] - face[0]
         facing = np.cross(up, across) / np.linalg.norm(np.cross(up, across))
         eye = face.mean(axis=0) + 0.2 * up + 0.3 * across
-        assert culler.touches_eye_plane(_view(w, eye, eye + facing))
-        assert not culler.touches_eye_plane(_view(w, eye + 0.0123 * facing, eye + 1.0123 * facing))
+        assert touches(_view(w, eye, eye + facing))
+        assert not touches(_view(w, eye + 0.0123 * facing, eye + 1.0123 * facing))
 
 
 def test_the_view_that_hung_the_render_now_renders():

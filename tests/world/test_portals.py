@@ -107,3 +107,21 @@ def test_cull_outdoors_off_draws_the_outdoors_in_every_view():
         view = w.client.computeViewMatrix(list(eye), list(eye + np.array(pose.view_direction())), [0, 0, 1])
         proj = w.client.computeProjectionMatrixFOV(60.0, 1.0, 0.05, 20.0)
         assert w._culler is not None and w._culler.outdoors_hidden(view, proj, 64, 64) == []
+
+
+@pytest.mark.parametrize(("room", "seed"), [("Kitchen", 0), ("LivingRoom", 1), ("Bathroom", 3)])
+def test_the_compiled_outdoor_test_answers_as_numpy_does(room, seed):
+    """The compiled rasteriser's copy of the portal test (`OutdoorCuller.hidden_compiled`) hides the same outdoor
+    boxes as `hidden` in every view at every reachable point, and both hide and show some."""
+    scene = generate(empty_cdf(room), seed=seed).scene
+    with World(scene, WorldConfig(width=64, height=64, settle_steps=0)) as w:
+        hidden = shown = 0
+        for pose in _views(w, 1):
+            eye = np.array(pose.eye())
+            view = w.client.computeViewMatrix(list(eye), list(eye + np.array(pose.view_direction())), [0, 0, 1])
+            proj = w.client.computeProjectionMatrixFOV(60.0, 1.0, 0.05, 20.0)
+            away = w._culler.outdoors_hidden(view, proj, 64, 64)
+            assert w._culler.outdoors_hidden(view, proj, 64, 64, compiled=True) == away, pose
+            hidden += len(away)
+            shown += len(w.built.outdoors) - len(away)
+        assert hidden and shown
