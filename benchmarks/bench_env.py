@@ -189,14 +189,19 @@ def env_process_memory(job: tuple[str, dict, int]) -> tuple[float, float, int]:
 
 
 def _options(spec_id: str) -> tuple[str, dict]:
-    """'ID' or 'ID@SIZE' (square frames of SIZE px instead of the id's own): the id and its env options."""
-    env_id, _, size = spec_id.partition("@")
-    return env_id, ({"width": int(size), "height": int(size)} if size else {})
+    """'ID', 'ID@SIZE' (square frames of SIZE px instead of the id's own) or 'ID@SIZE/RASTERISER' (and drawn by
+    that rasteriser: compiled or tinyrenderer): the id and its env options."""
+    env_id, _, rest = spec_id.partition("@")
+    size, _, rasteriser = rest.partition("/")
+    options: dict = {"width": int(size), "height": int(size)} if size else {}
+    if rasteriser:
+        options["rasteriser"] = rasteriser
+    return env_id, options
 
 
 def _size(env_id: str, options: dict) -> str:
     kwargs = {**gymnasium.spec(env_id).kwargs, **options}
-    return f"{kwargs.get('width', 300)}x{kwargs.get('height', 300)}"
+    return f"{kwargs.get('width', 300)}x{kwargs.get('height', 300)}, {kwargs.get('rasteriser', 'tinyrenderer')}"
 
 
 def bench(spec_id: str, args: argparse.Namespace) -> None:
@@ -234,7 +239,8 @@ def resets(spec_id: str, args: argparse.Namespace) -> None:
 def main(argv: list[str] | None = None) -> None:
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--ids", nargs="+", default=["Luminous-ObjectNav-64-v2", "Luminous-ObjectNav-64-v2@300"],
-                    help="ids to measure, each ID or ID@SIZE (square frames of SIZE px)")
+                    help="ids to measure, each ID, ID@SIZE (square frames of SIZE px) or ID@SIZE/RASTERISER "
+                         "(compiled or tinyrenderer)")
     ap.add_argument("--reset-ids", nargs="*", default=["Luminous-HouseNav-64-v2"],
                     help="ids whose reset times alone are measured (houses)")
     ap.add_argument("--mixes", nargs="+", choices=MIXES, default=list(MIXES), help="action mixes to time")
