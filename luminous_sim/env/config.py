@@ -96,7 +96,7 @@ class EnvConfig:
             to the image size.
         rasteriser: who draws the frames: `tinyrenderer` (PyBullet's own) or `compiled` (TinyRenderer's
             rasteriser compiled with numba: the same RGB and segmentation, depth within float rounding, a 64 px
-            step about 2.5x cheaper, about 150 MB more memory per process); `WorldConfig.rasteriser`. The RL ids
+            step about 3.2x cheaper, about 150 MB more memory per process); `WorldConfig.rasteriser`. The RL ids
             of `envs/small.toml` use `compiled`.
         split: play the episodes of an evaluation split (`S+`, `U+`, `U+test`; see `luminous_sim.splits`)
             instead of generating scenes on the fly: `reset(options={"index": i})` plays entry i, a plain

@@ -32,7 +32,7 @@ class WorldConfig:
     rasteriser: Literal["tinyrenderer", "compiled"] = "tinyrenderer"
     """Who draws the frames: "tinyrenderer", PyBullet's own, or "compiled", TinyRenderer's rasteriser compiled
     with numba (`world.raster_kernel`): the same RGB and segmentation pixel for pixel, depth within float
-    rounding, a 64 px step about 2.5x and a 300 px step about 3.8x cheaper, for about 150 MB more memory per
+    rounding, a 64 px step about 3.2x and a 300 px step about 4.1x cheaper, for about 150 MB more memory per
     process (numba and LLVM; most of it shared libraries). A scene with a visual the compiled one cannot draw is
     drawn by TinyRenderer (with a warning)."""
     structure_last: bool = True
