@@ -95,9 +95,9 @@ class EnvConfig:
         min_visible_pixels: pixels an object needs to count as visible; 0 scales ALFRED's 10 at 300x300
             to the image size.
         rasteriser: who draws the frames: `tinyrenderer` (PyBullet's own) or `compiled` (TinyRenderer's
-            rasteriser compiled with numba: the same RGB and segmentation, depth within float rounding, a 64 px
-            step about 3.2x cheaper, about 150 MB more memory per process); `WorldConfig.rasteriser`. The RL ids
-            of `envs/small.toml` use `compiled`.
+            rasteriser compiled with numba: the same RGB and segmentation but for a few pixels in a million,
+            depth within 1e-4 m, a 64 px step about 3.2x cheaper, about 150 MB more memory per process);
+            `WorldConfig.rasteriser`. The RL ids of `envs/small.toml` and the HouseNav ids use `compiled`.
         split: play the episodes of an evaluation split (`S+`, `U+`, `U+test`; see `luminous_sim.splits`)
             instead of generating scenes on the fly: `reset(options={"index": i})` plays entry i, a plain
             `reset` an entry drawn over one round of the split; "" (the default) generates on the fly.

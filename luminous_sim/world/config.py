@@ -31,10 +31,11 @@ class WorldConfig:
     room shows it (see `world.portals`)."""
     rasteriser: Literal["tinyrenderer", "compiled"] = "tinyrenderer"
     """Who draws the frames: "tinyrenderer", PyBullet's own, or "compiled", TinyRenderer's rasteriser compiled
-    with numba (`world.raster_kernel`): the same RGB and segmentation pixel for pixel, depth within float
-    rounding, a 64 px step about 3.2x and a 300 px step about 4.1x cheaper, for about 150 MB more memory per
-    process (numba and LLVM; most of it shared libraries). A scene with a visual the compiled one cannot draw is
-    drawn by TinyRenderer (with a warning)."""
+    with numba (`world.raster_kernel`): the same RGB and segmentation but for rare pixels where two surfaces
+    lie within float rounding of each other (about 6 in a million), depth within 1e-4 m, a 64 px step about
+    3.2x and a 300 px step about 4.1x cheaper, for about 150 MB more memory per process (numba and LLVM; most
+    of it shared libraries). A scene with a visual the compiled one cannot draw is drawn by TinyRenderer (with
+    a warning)."""
     structure_last: bool = True
     """Paint the floor, walls, ceiling and outdoors after the objects (the same frame, less shading; see
     `scene_builder.paint_structure_last`)."""

@@ -5,10 +5,11 @@ Each step follows PyBullet's TinyRenderer (bullet3 `examples/TinyRenderer`: `Tin
 `TinyRendererVisualShapeConverter::render` / `copyCameraImageData`) in float32, in the order TinyRenderer does
 it (its small-vector dot products add from the last component down), but for what PyBullet 3.2.7's build does
 in float64 (read from its machine code: barycentric weights, their perspective correction, the depth and the
-depth test; the back-face test), so that a frame comes out as
-TinyRenderer draws it but for rounding in the few places that are not copied exactly (each link's model
-matrix is made from its pose quaternion, the camera position for the back-face test in float64); see
-`raster_scene` for what is drawn and `tests/world/test_raster.py` for the measured agreement.
+depth test; the back-face test), so that a frame comes out as TinyRenderer draws it but for rounding in the
+few places that are not copied exactly (each link's model matrix is made from its pose quaternion, the camera
+position for the back-face test in float64): depth's last bits, and so the rare pixel where two surfaces lie
+within that rounding of each other (about 6 in a million); see `raster_scene` for what is drawn and
+`tests/world/test_raster.py` and docs/benchmarks.md ("Performance") for the measured agreement.
 
 What makes it cheaper: one compiled loop over every object (no call, matrix set-up or virtual shader per
 object and face), each vertex transformed once, not once per face corner; the light-view transform that only

@@ -1,5 +1,6 @@
 """The compiled rasteriser (`rasteriser="compiled"`) draws TinyRenderer's frames: the same RGB and
-segmentation pixel for pixel and depth within float rounding, against PyBullet's own TinyRenderer on the same
+segmentation (equal in these views; elsewhere about 6 pixels in a million differ, where two surfaces lie within
+float rounding of each other) and depth within float rounding, against PyBullet's own TinyRenderer on the same
 views, through walking and interactions."""
 
 from __future__ import annotations
@@ -16,7 +17,7 @@ from tests.world.conftest import obj
 
 NAV = ["MoveAhead", "RotateRight", "MoveAhead", "LookDown", "RotateLeft", "MoveAhead", "LookUp", "RotateLeft"]
 DEPTH_TOLERANCE = 1e-4
-"""Metres depth may differ (measured at most 2.4e-5 m, on 1-2% of pixels: where PyBullet's float32 rounding of
+"""Metres depth may differ (measured at most 5.2e-5 m, on 1-2% of pixels: where PyBullet's float32 rounding of
 a link's pose or a mesh vertex differs in the last bit from ours); RGB and segmentation must be equal."""
 
 
