@@ -48,17 +48,44 @@ _VISUAL = re.compile(r'<visual [^>]*><origin xyz="0 0 0" rpy="0 0 0"/><geometry>
 
 
 @lru_cache(maxsize=4096)
-def _obj_mesh(path: str) -> tuple[np.ndarray, np.ndarray] | None:
-    """An OBJ file's vertices (n, 3) and triangles (m, 3; 0-based), or None for one without vertices."""
-    verts, faces = [], []
+def visual_obj_arrays(path: str) -> tuple[np.ndarray, np.ndarray | None, np.ndarray]:
+    """A visual OBJ file's vertices (n, 3, float64), its per-vertex normals (n, 3; None where the file has not
+    one per vertex: `objio.visual_obj` writes `f a//a`) and triangles (m, 3; 0-based)."""
+    verts, norms, faces = [], [], []
     for line in Path(path).read_text().splitlines():
         if line.startswith("v "):
             verts.append(line.split()[1:4])
+        elif line.startswith("vn "):
+            norms.append(line.split()[1:4])
         elif line.startswith("f "):
             faces.append([int(f.split("/")[0]) - 1 for f in line.split()[1:4]])
-    if not verts:
-        return None
-    return np.asarray(verts, dtype=float), np.asarray(faces, dtype=np.int64).reshape(-1, 3)
+    normals = np.asarray(norms, dtype=float) if norms and len(norms) == len(verts) else None
+    return np.asarray(verts, dtype=float).reshape(-1, 3), normals, np.asarray(faces, dtype=np.int64).reshape(-1, 3)
+
+
+def link_visual_files(urdf: str) -> dict[str, list[str] | None]:
+    """Each link's visual mesh files in URDF order, for the links that have visuals; None for a link with a
+    visual other than an unscaled mesh at the link's origin (one its mesh file alone does not describe)."""
+    return _link_visual_files(urdf, Path(urdf).stat().st_mtime_ns)
+
+
+@lru_cache(maxsize=1024)
+def _link_visual_files(urdf: str, _mtime: int) -> dict[str, list[str] | None]:
+    out: dict[str, list[str] | None] = {}
+    link = None
+    for line in Path(urdf).read_text().splitlines():
+        m = _LINK.search(line)
+        if m:
+            link = m.group(1)
+        if "<visual" not in line or link is None:
+            continue
+        mesh = _VISUAL.search(line)
+        files = out.setdefault(link, [])
+        if mesh is None or "scale=" in line or files is None:
+            out[link] = None
+        else:
+            files.append(str(Path(urdf).parent / mesh.group(1)))
+    return out
 
 
 def link_visual_meshes(urdf: str) -> dict[str, tuple[np.ndarray, np.ndarray]]:
@@ -75,22 +102,12 @@ def link_visual_bounds(urdf: str) -> dict[str, tuple[np.ndarray, np.ndarray]]:
 
 @lru_cache(maxsize=1024)
 def _link_visual_meshes(urdf: str, _mtime: int) -> dict[str, tuple[np.ndarray, np.ndarray]]:
-    out: dict[str, list[tuple[np.ndarray, np.ndarray]]] = {}
-    unreadable: set[str] = set()
-    link = None
-    for line in Path(urdf).read_text().splitlines():
-        m = _LINK.search(line)
-        if m:
-            link = m.group(1)
-        if "<visual" not in line or link is None:
-            continue
-        mesh = _VISUAL.search(line)
-        vf = _obj_mesh(str(Path(urdf).parent / mesh.group(1))) if mesh and "scale=" not in line else None
-        if vf is None:
-            unreadable.add(link)
-            continue
-        out.setdefault(link, []).append(vf)
-    return {k: _joined(parts) for k, parts in out.items() if k not in unreadable}
+    out = {}
+    for link, files in link_visual_files(urdf).items():
+        parts = [visual_obj_arrays(f) for f in files or []]
+        if parts and all(len(v) for v, _, _ in parts):  # a visual with no vertices: left out, never culled
+            out[link] = _joined([(v, f) for v, _, f in parts])
+    return out
 
 
 def _joined(parts: list[tuple[np.ndarray, np.ndarray]]) -> tuple[np.ndarray, np.ndarray]:
@@ -164,6 +181,11 @@ class _Boxes:
         self.local = np.array(local, dtype=float).reshape(-1, 8, 3)
         self.poses = np.full((len(self.keys), 7), np.nan)
         """The pose (position, quaternion) each box's world corners were computed for."""
+        self.inertial_poses = np.full((len(self.keys), 7), np.nan)
+        """The pose of each box's link's inertial frame (PyBullet's collision frame, which TinyRenderer draws a
+        link's visuals in), for the same poses."""
+        self.version = 0
+        """Counts the updates that found a pose changed."""
         self.world = np.zeros_like(self.local)
         self.vertex_box = np.concatenate([np.full(len(v), k) for k, v in enumerate(vertices_of)]) \
             if vertices_of else np.zeros(0, dtype=int)
@@ -184,18 +206,25 @@ class _Boxes:
         tells no one when a body moves), and only the boxes whose pose changed are transformed again."""
         base_pose, link_states = client.getBasePositionAndOrientation, client.getLinkStates  # lookup is slow
         flat: list[float] = []
+        com: list[float] = []
         for body, has_base, ids in self.queries:
             if has_base:
                 pos, orn = base_pose(body)
                 flat += pos
                 flat += orn
+                com += pos
+                com += orn
             if ids:
                 for st in link_states(body, ids, computeForwardKinematics=1):
                     flat += st[4]
                     flat += st[5]
+                    com += st[0]
+                    com += st[1]
         poses = np.array(flat, dtype=float).reshape(-1, 7)
         moved = (poses != self.poses).any(axis=1)
         if moved.any():
+            self.inertial_poses = np.array(com, dtype=float).reshape(-1, 7)
+            self.version += 1
             rot = _rotations(poses[moved, 3:])
             self.world[moved] = np.einsum("nij,nkj->nki", rot, self.local[moved]) + poses[moved, None, :3]
             which = np.cumsum(moved) - 1  # box index -> row of `rot`
@@ -234,8 +263,6 @@ class FrustumCuller:
         self._objects = objects
         self._table: _Boxes | None = None
         self._stale = True
-        self.pose_epoch = 0
-        """Counts `poses_moved` calls: another user of poses (the compiled rasteriser) compares it."""
         self._hidden: dict[int, tuple[LoadedAsset, str, int, list[int]]] = {}
         """Links kept hidden, by box index: asset, link name, link index, the visuals to show again."""
         self._away: set[int] = set()
@@ -263,6 +290,10 @@ class FrustumCuller:
         near = near_eye_plane(view, table.world_vertices)
         return bool(near.any()) and bool(near[table.triangles].all(axis=1).any())
 
+    def posed_boxes(self) -> _Boxes:
+        """The box table with the poses of now (asked of PyBullet again only after a call that can move a body)."""
+        return self._posed()
+
     def eye_plane_geometry(self) -> tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]:
         """What `touches_eye_plane` tests, for the poses of now: structure box corners (n, 8, 3), each box face's
         corner indices (6, 4), object link vertices (m, 3) and their triangles (k, 3)."""
@@ -272,7 +303,6 @@ class FrustumCuller:
     def poses_moved(self) -> None:
         """A body or link may have moved: ask every pose again at the next cull."""
         self._stale = True
-        self.pose_epoch += 1
 
     def _boxes(self) -> _Boxes:
         """The box table for the objects now (made again when an object was added, removed or replaced: a body

@@ -198,9 +198,9 @@ def _clip_edge(t, a, b, out, n):
     v1 = t[b].copy()
     in0 = v0[3] > F(0.0) and v0[2] > -v0[3]
     in1 = v1[3] > F(0.0) and v1[2] > -v1[3]
-    if in0 and in1:
-        pass
-    elif in0 or in1:
+    if not (in0 or in1):
+        return n
+    if in0 != in1:  # the edge crosses the near plane: the outside end moves onto it
         d0 = v0[2] + v0[3]
         d1 = v1[2] + v1[3]
         factor = np.float32(1.0 / np.float64(d1 - d0))
@@ -211,8 +211,6 @@ def _clip_edge(t, a, b, out, n):
             v1 = new
         else:
             v0 = new
-    else:
-        return n
     out[n] = v0
     out[n + 1] = v1
     return n + 2

@@ -1,34 +1,29 @@
 """What the compiled rasteriser draws for one built scene, and the frame it makes (`raster_kernel`).
 
 The scene's drawable geometry is gathered once, as TinyRenderer holds it: one render object per visual of
-every link (objects: their URDF's OBJ meshes, scaled by the asset's scale and moved into the link's inertial
-frame, as PyBullet bakes them; everything else: its box visuals), each with its own vertices, unit normals
-and triangles. Per frame only poses and colours are read: the poses of object links after a call that can
-move a body (`FrustumCuller`'s box table knows when), colours and alphas from each `LoadedAsset` (every
-visual change goes through `asset_loader.set_visual_alpha`), and the structure's as they were built. Links
-outside the view and outdoor boxes no opening shows are skipped, as the culled TinyRenderer frame leaves them
-out. Bodies added or removed (slicing) make the table again.
-"""
+every link (objects: their URDF's OBJ meshes, read as `culling` reads them, scaled by the asset's scale and
+moved into the link's inertial frame, as PyBullet bakes them; everything else: its box visuals), each with its
+own vertices, unit normals and triangles. Per frame only poses and colours are read: the assets' poses from
+the `FrustumCuller`'s box table (which asks PyBullet again only after a call that can move a body; its inertial
+poses are the frames TinyRenderer draws links in), colours and alphas from each `LoadedAsset` (every visual
+change goes through `asset_loader.set_visual_alpha`, which counts them), and the structure's as they were
+built. Links outside the view and outdoor boxes no opening shows are skipped, as the culled TinyRenderer frame
+leaves them out. Objects or bodies added or removed (slicing) make the table again."""
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass
-from functools import lru_cache
-from pathlib import Path
 from typing import TYPE_CHECKING
 
 import numpy as np
 
 from luminous_sim.world.asset_loader import visual_changes
 from luminous_sim.world.client import BulletClient, p
+from luminous_sim.world.culling import link_visual_files, visual_obj_arrays
 
 if TYPE_CHECKING:
     from luminous_sim.world.asset_loader import LoadedAsset
-    from luminous_sim.world.culling import FrustumCuller
-
-_LINK = re.compile(r'<link name="([^"]+)"')
-_MESH = re.compile(r'<visual [^>]*><origin xyz="0 0 0" rpy="0 0 0"/><geometry><mesh filename="([^"]+)"/>')
+    from luminous_sim.world.culling import FrustumCuller, _Boxes
 
 # PyBullet's box visual (bullet3 examples/OpenGLWindow/ShapeData.h: cube_vertices_textured, cube_indices): each
 # corner's signs and normal, and the triangles, in PyBullet's order (the order sets the rounding of depth)
@@ -46,43 +41,22 @@ class UnsupportedGeometry(ValueError):
     """A body has a visual the compiled rasteriser cannot draw (it then renders with TinyRenderer)."""
 
 
-@lru_cache(maxsize=4096)
-def _obj(path: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """An OBJ file's vertices, per-vertex normals (as `objio.visual_obj` writes them: f a//a) and triangles."""
-    verts, norms, faces = [], [], []
-    for line in Path(path).read_text().splitlines():
-        if line.startswith("v "):
-            verts.append(line.split()[1:4])
-        elif line.startswith("vn "):
-            norms.append(line.split()[1:4])
-        elif line.startswith("f "):
-            faces.append([int(f.split("/")[0]) - 1 for f in line.split()[1:4]])
-    # parsed to float64 then rounded to float32, as tinyobjloader does
-    v = np.asarray(verts, dtype=np.float64).astype(np.float32)
-    n = np.asarray(norms, dtype=np.float64).astype(np.float32) if len(norms) == len(verts) else None
-    f = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
+def _visual_files(urdf: str) -> dict[str, list[str]]:
+    """`culling.link_visual_files`, an unreadable visual named (the compiled rasteriser cannot draw it)."""
+    files = link_visual_files(urdf)
+    bad = [link for link, f in files.items() if f is None]
+    if bad:
+        raise UnsupportedGeometry(f"{urdf}: link {bad[0]} has a visual other than an unscaled mesh at its origin")
+    return {link: f for link, f in files.items() if f is not None}
+
+
+def _mesh(path: str) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A visual OBJ's vertices rounded to float32 (tinyobjloader parses to double, then stores float), its
+    per-vertex normals and triangles."""
+    v, n, f = visual_obj_arrays(path)
     if n is None:
         raise UnsupportedGeometry(f"{path}: no per-vertex normals")
-    return v, n, f
-
-
-@lru_cache(maxsize=1024)
-def _urdf_visuals(urdf: str) -> dict[str, list[str]]:
-    """Each link's visual mesh files in URDF order (an offset, scaled or non-mesh visual is unsupported)."""
-    out: dict[str, list[str]] = {}
-    link = None
-    for line in Path(urdf).read_text().splitlines():
-        m = _LINK.search(line)
-        if m:
-            link = m.group(1)
-            out.setdefault(link, [])
-        if "<visual" not in line or link is None:
-            continue
-        mesh = _MESH.search(line)
-        if mesh is None or "scale=" in line:
-            raise UnsupportedGeometry(f"{urdf}: link {link} has a visual other than an unscaled mesh at its origin")
-        out[link].append(str(Path(urdf).parent / mesh.group(1)))
-    return out
+    return v.astype(np.float32), n.astype(np.float32), f
 
 
 def _unit(n: np.ndarray) -> np.ndarray:
@@ -93,17 +67,18 @@ def _unit(n: np.ndarray) -> np.ndarray:
         return (n * (np.float32(1.0) / length)[:, None]).astype(np.float32)
 
 
-def _rotation(q) -> np.ndarray:
-    """btMatrix3x3::setRotation of a quaternion (x, y, z, w), in float64."""
-    x, y, z, w = (float(c) for c in q)
+def _rotations(quats: np.ndarray) -> np.ndarray:
+    """btMatrix3x3::setRotation of quaternions (n, 4) (x, y, z, w), in float64, its operations in its order
+    (`culling._rotations` assumes unit quaternions and rounds differently), shape (n, 3, 3)."""
+    x, y, z, w = np.asarray(quats, dtype=float).T
     s = 2.0 / (x * x + y * y + z * z + w * w)
     xs, ys, zs = x * s, y * s, z * s
     wx, wy, wz = w * xs, w * ys, w * zs
     xx, xy, xz = x * xs, x * ys, x * zs
     yy, yz, zz = y * ys, y * zs, z * zs
-    return np.array([[1.0 - (yy + zz), xy - wz, xz + wy],
-                     [xy + wz, 1.0 - (xx + zz), yz - wx],
-                     [xz - wy, yz + wx, 1.0 - (xx + yy)]])
+    return np.stack([np.stack([1.0 - (yy + zz), xy - wz, xz + wy], axis=-1),
+                     np.stack([xy + wz, 1.0 - (xx + zz), yz - wx], axis=-1),
+                     np.stack([xz - wy, yz + wx, 1.0 - (xx + yy)], axis=-1)], axis=1)
 
 
 def _box_mesh(half: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -130,23 +105,17 @@ class _Object:
 class RasterScene:
     """The render objects of one built scene, kept as flat arrays for `raster_kernel.render_objects`."""
 
-    def __init__(self, client: BulletClient, objects: dict[str, LoadedAsset], culler: FrustumCuller):
+    def __init__(self, client: BulletClient, objects: dict[str, LoadedAsset]):
         self.client = client
         self._objects = objects
-        self._culler = culler
-        self._loaded: tuple[LoadedAsset, ...] = ()
-        self._build()
-
-    def _build(self) -> None:
-        client = self.client
-        loaded_by_body = {lo.body: lo for lo in self._objects.values()}
+        self._loaded = tuple(objects.values())
+        loaded_by_body = {lo.body: lo for lo in self._loaded}
         items: list[_Object] = []
         for i in range(client.getNumBodies()):
             body = client.getBodyUniqueId(i)
             lo = loaded_by_body.get(body)
             items += self._asset_objects(lo) if lo is not None else self._box_objects(body)
         self._items = items
-        self._loaded = tuple(self._objects.values())
         self._num_bodies = client.getNumBodies()
         counts_v = [len(o.vertices) for o in items]
         counts_f = [len(o.faces) for o in items]
@@ -158,40 +127,38 @@ class RasterScene:
         self.obj_first = np.concatenate([[0], np.cumsum(counts_f)[:-1]]).astype(np.int64)
         self.obj_count = np.asarray(counts_f, dtype=np.int64)
         self.seg_ids = np.asarray([o.body + ((o.link + 1) << 24) for o in items], dtype=np.int32)
+        self.colors = np.asarray([o.rgba for o in items], dtype=np.float32)
         self.models = np.zeros((len(items), 4, 4), dtype=np.float32)
         self.models[:, 3, 3] = 1.0
-        self.colors = np.asarray([o.rgba for o in items], dtype=np.float32)
-        self._boxes_of: tuple[list, np.ndarray] | None = None
+        self._assets = np.flatnonzero([o.loaded is not None for o in items])
+        """The render objects of assets (posed from the culler's table); the rest, structure boxes, never move."""
+        structure = [k for k, o in enumerate(items) if o.loaded is None]
+        if structure:
+            poses = np.array([[*pos, *orn] for pos, orn in
+                              (client.getBasePositionAndOrientation(items[k].body) for k in structure)])
+            self._set_models(np.asarray(structure), poses)
         self._of_body: dict[int, list[int]] = {}
         """Each body's render objects."""
         for k, o in enumerate(items):
             self._of_body.setdefault(o.body, []).append(k)
-        # which render objects each pose query moves: per body, base and links
-        self._queries: list[tuple[int, list[int], list[list[int]]]] = []
-        by_body: dict[int, dict[int, list[int]]] = {}
-        for k, o in enumerate(items):
-            if o.loaded is not None:
-                by_body.setdefault(o.body, {}).setdefault(o.link, []).append(k)
-        for body, links in by_body.items():
-            order = sorted(links)
-            self._queries.append((body, order, [links[j] for j in order]))
-        self._static_posed = False
+        self._boxes_of: tuple[list, np.ndarray] | None = None
+        self._posed: tuple[object, int] | None = None
+        """The culler's table and version the asset models were set from."""
         self._colors_at = -1
 
     def _asset_objects(self, lo: LoadedAsset) -> list[_Object]:
-        client = self.client
-        visuals = _urdf_visuals(str(lo.entry.urdf_for(lo.lod)))
+        visuals = _visual_files(str(lo.entry.urdf_for(lo.lod)))
         s = float(lo.entry.scale)
         out = []
         for name, j in sorted(lo.link_index.items(), key=lambda kv: kv[1]):
             files = visuals.get(name, [])
             if not files:
                 continue
-            pos, orn = client.getDynamicsInfo(lo.body, j)[3:5]
-            inv_pos, inv_orn = client.invertTransform(pos, orn)
-            rot, shift = _rotation(inv_orn), np.asarray(inv_pos, dtype=float)
+            pos, orn = self.client.getDynamicsInfo(lo.body, j)[3:5]
+            inv_pos, inv_orn = self.client.invertTransform(pos, orn)
+            rot, shift = _rotations(np.array([inv_orn]))[0], np.asarray(inv_pos, dtype=float)
             for index, path in enumerate(files):
-                v, n, f = _obj(path)
+                v, n, f = _mesh(path)
                 scaled = (v.astype(float) * s).astype(np.float32)  # the mesh scale, kept in float32
                 baked = scaled.astype(float) @ rot.T + shift
                 normals = _unit(((n.astype(float)) @ rot.T).astype(np.float32))
@@ -217,43 +184,35 @@ class RasterScene:
         return len(objects) == len(self._loaded) and all(a is b for a, b in zip(objects, self._loaded, strict=True)) \
             and self.client.getNumBodies() == self._num_bodies
 
-    def update(self, poses_moved: bool) -> None:
-        """Model matrices for the poses of now (asked again only if `poses_moved`) and colours of now."""
-        client = self.client
-        if not self._static_posed:
-            for k, o in enumerate(self._items):
-                if o.loaded is None:
-                    pos, orn = client.getBasePositionAndOrientation(o.body)
-                    self._set_model(k, pos, orn)
-            self._static_posed = True
-            poses_moved = True
-        if poses_moved:
-            for body, links, members in self._queries:
-                states = client.getLinkStates(body, [j for j in links if j >= 0], computeForwardKinematics=1) \
-                    if any(j >= 0 for j in links) else []
-                it = iter(states)
-                for j, ks in zip(links, members, strict=True):
-                    pos, orn = client.getBasePositionAndOrientation(body) if j < 0 else next(it)[:2]
-                    for k in ks:
-                        self._set_model(k, pos, orn)
+    def _set_models(self, items: np.ndarray, poses: np.ndarray) -> None:
+        """Model matrices from poses (n, 7: position, quaternion), as btTransform::getOpenGLMatrix gives them."""
+        self.models[items, :3, :3] = _rotations(poses[:, 3:])
+        self.models[items, :3, 3] = poses[:, :3]
+
+    def update(self, table: _Boxes) -> None:
+        """The assets' model matrices for the culler's poses (set again only when its table or a pose changed)
+        and their colours of now (read again only after `set_visual_alpha` changed one)."""
+        if self._posed is None or self._posed[0] is not table or self._posed[1] != table.version:
+            boxes = self._item_boxes(table.keys)[self._assets]
+            if (boxes < 0).any():
+                raise UnsupportedGeometry("an asset link the culler has no box for")
+            self._set_models(self._assets, table.inertial_poses[boxes])
+            self._posed = (table, table.version)
         changes = visual_changes()
         if changes == self._colors_at:
             return
         self._colors_at = changes
-        for k, o in enumerate(self._items):
-            if o.loaded is not None and o.key is not None:
-                color = o.loaded.colors.get(o.key)
-                if color is not None:
-                    self.colors[k, :3] = color[:3]
-                self.colors[k, 3] = o.loaded.alphas.get(o.key, 1.0)
-
-    def _set_model(self, k: int, pos, orn) -> None:
-        m = self.models[k]
-        m[:3, :3] = _rotation(orn)
-        m[:3, 3] = pos
+        for k in self._assets:
+            o = self._items[k]
+            assert o.loaded is not None and o.key is not None
+            color = o.loaded.colors.get(o.key)
+            if color is not None:
+                self.colors[k, :3] = color[:3]
+            self.colors[k, 3] = o.loaded.alphas.get(o.key, 1.0)
 
     def _item_boxes(self, keys: list[tuple[LoadedAsset, str]]) -> np.ndarray:
-        """Each render object's row in the culler's box list `keys` (-1: a link the culler has no box for)."""
+        """Each render object's row in the culler's box list `keys` (-1: a structure box, or a link the culler
+        has no box for)."""
         if self._boxes_of is None or self._boxes_of[0] is not keys:
             row = {(id(lo), name): k for k, (lo, name) in enumerate(keys)}
             boxes = np.asarray([row.get((id(o.loaded), o.key[0]), -1) if o.loaded is not None and o.key else -1
@@ -265,21 +224,21 @@ class RasterScene:
         """Which render objects are drawn: alpha above 0, not in a link outside the view (`outside` over the
         culler's `keys`), not in a hidden body."""
         out = self.colors[:, 3] != 0
-        if len(keys):
+        if len(outside):
             boxes = self._item_boxes(keys)
             out &= ~(outside[np.maximum(boxes, 0)] & (boxes >= 0))
         for body in hidden_bodies:
             out[self._of_body.get(body, [])] = False
         return out
 
-    def render(self, view: list[float], proj: list[float], width: int, height: int, light,
-               poses_moved: bool, keys: list[tuple[LoadedAsset, str]], outside: np.ndarray,
-               hidden_bodies: list[int]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    def render(self, view: list[float], proj: list[float], width: int, height: int, light, table: _Boxes,
+               outside: np.ndarray, hidden_bodies: list[int]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """RGB (h, w, 3) uint8, PyBullet's depth buffer (h, w) float32 and segmentation (h, w) int32, as
-        `getCameraImage` with TinyRenderer returns them for this view (rows top-down)."""
+        `getCameraImage` with TinyRenderer returns them for this view (rows top-down); `table` is the culler's
+        posed box table, `outside` which of its boxes lie outside the view (empty: draw every link)."""
         from luminous_sim.world.raster_kernel import render_objects
 
-        self.update(poses_moved)
+        self.update(table)
         v = np.asarray(view, dtype=np.float32).reshape(4, 4).T.copy()
         pr = np.asarray(proj, dtype=np.float32).reshape(4, 4).T.copy()
         one = np.float32(1.0)
@@ -293,7 +252,7 @@ class RasterScene:
         seg = np.full(width * height, -1, dtype=np.int32)
         render_objects(self.vertices, self.normals, self.faces, self.obj_first, self.obj_count, self.obj_vfirst,
                        self.obj_vcount, self.models, self.colors, self.seg_ids,
-                       self.drawn(keys, outside, hidden_bodies), v, pr, eye, lt, width, height, near, far,
+                       self.drawn(table.keys, outside, hidden_bodies), v, pr, eye, lt, width, height, near, far,
                        zbuf, rgb, seg)
         depth = gl_depth(zbuf, near, far).reshape(height, width)
         return (rgb.reshape(height, width, 3)[::-1].copy(), depth[::-1].copy(), seg.reshape(height, width)[::-1].copy())
@@ -309,8 +268,8 @@ def gl_depth(zbuf: np.ndarray, near: np.float32, far: np.float32) -> np.ndarray:
 
 class CompiledRenderer:
     """A World's frames drawn by the compiled rasteriser: the render objects made again when the scene's
-    objects change, poses read again when the culler heard of a move, links outside the view and outdoor boxes
-    no opening shows left out (`culler`'s tests), as the culled TinyRenderer frame leaves them out."""
+    objects or bodies change, posed from the culler's box table, links outside the view and outdoor boxes no
+    opening shows left out (`culler`'s tests), as the culled TinyRenderer frame leaves them out."""
 
     def __init__(self, client: BulletClient, objects: dict[str, LoadedAsset], culler: FrustumCuller, cull: bool):
         self.client = client
@@ -319,15 +278,13 @@ class CompiledRenderer:
         self._culler = culler
         self._cull = cull
         self._scene: RasterScene | None = None
-        self._epoch = -1
         self.scene()  # an unsupported visual is named now, not at the first frame
 
     def scene(self) -> RasterScene:
         """The render objects for the scene of now."""
         if self._scene is None or not self._scene.current():
             self._culler.reveal()  # a hidden link would be taken for one drawn at alpha 0
-            self._scene = RasterScene(self.client, self._objects, self._culler)
-            self._epoch = -1
+            self._scene = RasterScene(self.client, self._objects)
         return self._scene
 
     def touches_eye_plane(self, view: list[float]) -> bool:
@@ -343,12 +300,9 @@ class CompiledRenderer:
                ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """RGB, PyBullet's depth buffer and segmentation for this view (`RasterScene.render`)."""
         scene = self.scene()
-        moved = self._culler.pose_epoch != self._epoch
-        self._epoch = self._culler.pose_epoch
-        keys: list[tuple[LoadedAsset, str]] = []
         outside = np.zeros(0, dtype=bool)
         bodies: list[int] = []
         if self._cull:
-            keys, outside = self._culler.outside_mask(view, proj, width, height)
+            _, outside = self._culler.outside_mask(view, proj, width, height)
             bodies = self._culler.outdoors_hidden(view, proj, width, height, compiled=True)
-        return scene.render(view, proj, width, height, light, moved, keys, outside, bodies)
+        return scene.render(view, proj, width, height, light, self._culler.posed_boxes(), outside, bodies)

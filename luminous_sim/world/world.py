@@ -10,6 +10,7 @@ from __future__ import annotations
 import warnings
 from collections.abc import Iterable
 from dataclasses import dataclass
+from functools import partial
 from typing import TYPE_CHECKING, Any, cast
 
 import numpy as np
@@ -290,15 +291,15 @@ class World:
             eye = np.array(pose.eye())
             target = eye + np.array(pose.view_direction())
             c = self.config
+            draw = partial(render, self.client, eye, target, width=c.width, height=c.height, fov=c.fov, near=0.05,
+                           far=20.0, culler=self._culler, guard=self.eye_guard)
             try:
-                frame = render(self.client, eye, target, width=c.width, height=c.height, fov=c.fov, near=0.05,
-                               far=20.0, culler=self._culler, guard=self.eye_guard, compiled=self._compiled)
+                frame = draw(compiled=self._compiled)
             except UnsupportedGeometry as exc:  # a body added since that the compiled rasteriser cannot draw
                 warnings.warn(f"rasteriser='compiled' cannot draw this scene ({exc}); TinyRenderer draws it",
                               stacklevel=2)
                 self._compiled = None
-                frame = render(self.client, eye, target, width=c.width, height=c.height, fov=c.fov, near=0.05,
-                               far=20.0, culler=self._culler, guard=self.eye_guard)
+                frame = draw()
             self._facts = FrameFacts(frame)
         return self._facts
 

@@ -53,3 +53,12 @@ def world(kitchen_scene):
 
 def obj(scene, name: str) -> str:
     return next(o.id for o in scene.objects if o.name == name)
+
+
+def mug_into_fridge(scene) -> list[tuple[str, str, dict]]:
+    """(action, the object to stand at, its arguments) to pick the kitchen's mug up, open the fridge, put the
+    mug in and close it: held objects and moved links for the frame tests."""
+    mug, fridge = obj(scene, "mug"), obj(scene, "fridge")
+    return [("PickupObject", mug, {"objectId": mug}), ("OpenObject", fridge, {"objectId": fridge}),
+            ("PutObject", fridge, {"objectId": mug, "receptacleObjectId": fridge}),
+            ("CloseObject", fridge, {"objectId": fridge})]

@@ -11,7 +11,7 @@ from luminous_sim.world.articulation import move_joint
 from luminous_sim.world.camera import render
 from luminous_sim.world.config import WorldConfig
 from luminous_sim.world.world import World
-from tests.world.conftest import obj
+from tests.world.conftest import mug_into_fridge, obj
 
 
 def _views(world: World, sample: int = 1) -> list[AgentPose]:
@@ -170,12 +170,8 @@ def test_culled_frames_follow_bodies_moved_between_them(kitchen_scene):
 def test_culled_frames_equal_plain_frames_through_an_episode(kitchen_scene):
     """Pick up, open, put, close and walk: after every action the World's culled frame is the plain render."""
     with World(kitchen_scene, WorldConfig(width=64, height=64, settle_steps=120)) as w:
-        mug, fridge = obj(kitchen_scene, "mug"), obj(kitchen_scene, "fridge")
-        steps = [("PickupObject", mug, {"objectId": mug}), ("OpenObject", fridge, {"objectId": fridge}),
-                 ("PutObject", fridge, {"objectId": mug, "receptacleObjectId": fridge}),
-                 ("CloseObject", fridge, {"objectId": fridge})]
         checked = 0
-        for action, target, args in steps:
+        for action, target, args in mug_into_fridge(kitchen_scene):
             pose = w.view().interaction_pose(target)
             assert pose is not None, target
             w.agent = pose

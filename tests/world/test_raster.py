@@ -11,9 +11,10 @@ import pytest
 from pybullet_utils.bullet_client import BulletClient
 
 from luminous_sim.world.config import WorldConfig
-from luminous_sim.world.raster_scene import RasterScene, UnsupportedGeometry, _urdf_visuals
+from luminous_sim.world.culling import _Boxes
+from luminous_sim.world.raster_scene import RasterScene, UnsupportedGeometry, _visual_files
 from luminous_sim.world.world import World
-from tests.world.conftest import obj
+from tests.world.conftest import mug_into_fridge, obj
 
 NAV = ["MoveAhead", "RotateRight", "MoveAhead", "LookDown", "RotateLeft", "MoveAhead", "LookUp", "RotateLeft"]
 DEPTH_TOLERANCE = 1e-4
@@ -33,11 +34,11 @@ def test_a_box_is_drawn_as_tinyrenderer_draws_it():
     try:
         vis = c.createVisualShape(pb.GEOM_BOX, halfExtents=[0.5, 0.3, 0.2], rgbaColor=[0.8, 0.5, 0.3, 1])
         c.createMultiBody(0, -1, vis, [1.0, 0.2, 0.3], c.getQuaternionFromEuler([0, 0, 0.7]))
-        scene = RasterScene(c, {}, None)  # type: ignore[arg-type]
+        scene = RasterScene(c, {})
         view = c.computeViewMatrix([-1.2, -0.7, 1.1], [1.0, 0.2, 0.3], [0, 0, 1])
         proj = c.computeProjectionMatrixFOV(60, 1, 0.05, 20)
         light = [0.4, -0.6, 1.0]
-        rgb, depth, seg = scene.render(view, proj, 64, 64, light, True, [], np.zeros(0, bool), [])
+        rgb, depth, seg = scene.render(view, proj, 64, 64, light, _Boxes(c, []), np.zeros(0, bool), [])
         _, _, rgba, z, ref_seg = c.getCameraImage(64, 64, view, proj, renderer=pb.ER_TINY_RENDERER, shadow=0,
                                                   lightDirection=light,
                                                   flags=pb.ER_SEGMENTATION_MASK_OBJECT_AND_LINKINDEX)
@@ -79,10 +80,9 @@ def test_compiled_frames_follow_interactions(kitchen_scene):
     all drawn as TinyRenderer draws them."""
     with World(kitchen_scene, WorldConfig(width=64, height=64, settle_steps=120, rasteriser="tinyrenderer")) as ref, \
             World(kitchen_scene, WorldConfig(width=64, height=64, settle_steps=120, rasteriser="compiled")) as w:
-        mug, fridge = obj(kitchen_scene, "mug"), obj(kitchen_scene, "fridge")
-        steps = [("PickupObject", mug, {"objectId": mug}), ("OpenObject", fridge, {"objectId": fridge}),
-                 ("PutObject", fridge, {"objectId": mug, "receptacleObjectId": fridge}),
-                 ("CloseObject", fridge, {"objectId": fridge})]
+        microwave = obj(kitchen_scene, "microwave")
+        steps = mug_into_fridge(kitchen_scene) + [("ToggleObjectOn", microwave, {"objectId": microwave}),
+                                                  ("ToggleObjectOff", microwave, {"objectId": microwave})]
         frames = 0
         for action, target, args in steps:
             pose = w.view().interaction_pose(target)
@@ -97,7 +97,7 @@ def test_compiled_frames_follow_interactions(kitchen_scene):
                     ref.step(walk)
                 _assert_same(w.frame(), ref.frame(), (action, walk))
                 frames += 1
-        assert frames == 20
+        assert frames == 30
 
 
 def test_a_visual_it_cannot_draw_is_named_and_tinyrenderer_draws(kitchen_scene, tmp_path, monkeypatch):
@@ -107,7 +107,7 @@ def test_a_visual_it_cannot_draw_is_named_and_tinyrenderer_draws(kitchen_scene, 
         '    <visual name="w"><origin xyz="0 0 0.5" rpy="0 0 0"/><geometry><mesh filename="a.obj"/></geometry>'
         '</visual>\n  </link>\n</robot>\n')
     with pytest.raises(UnsupportedGeometry, match="link base"):
-        _urdf_visuals(str(tmp_path / "t.urdf"))
+        _visual_files(str(tmp_path / "t.urdf"))
 
     import luminous_sim.world.raster_scene as rs
 
