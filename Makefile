@@ -4,7 +4,7 @@ VENV ?= .venv
 BIN := $(VENV)/bin
 OUT ?= out/demo
 
-.PHONY: install demo test lint bench clean
+.PHONY: install demo test release-check lint bench clean
 
 $(BIN)/luminous: pyproject.toml
 	$(PY) -m venv $(VENV) || python3 -m venv $(VENV)
@@ -25,6 +25,11 @@ test: install
 	$(BIN)/ruff check luminous_sim tests benchmarks scripts examples
 	$(BIN)/mypy
 	$(BIN)/python -m pytest -q -m "not slow" -n auto --dist worksteal tests  # pytest-xdist: one worker a core; idle workers take queued tests from busy ones
+
+# the release path: sdist and wheel built and checked, the wheel installed in a fresh venv and tried from outside
+# the repository (scripts/release_check.sh)
+release-check: install
+	PY=$(PY) bash scripts/release_check.sh
 
 lint: install
 	$(BIN)/ruff check luminous_sim tests benchmarks scripts examples

@@ -50,7 +50,7 @@ def run_demo(out: Path, seed: int = 0, room_types: tuple[str, ...] = ROOM_TYPES)
         generated = generate(empty_cdf(room_type), seed=seed)
         sub = Path(out) / f"{i}_{room_type.lower()}"
         report = write_scene_outputs(generated, sub, physics=True)
-        valid = report["layout"]["ok"] and report["physics"]["ok"]
+        valid = report["satisfies_cdf"] and report["physics"]["ok"]
         results.append(DemoRoom(room_type, sub, len(generated.scene.objects), valid,
                                 len(report["physics"]["moved"])))
     return results

@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 
 from luminous_sim.assets.objio import png_bytes, write_atomic
-from luminous_sim.cssg import Generated, HouseGenerated
+from luminous_sim.cssg import Generated, HouseGenerated, HouseReport, LayoutReport
 
 
 def write_scene_outputs(generated: Generated | HouseGenerated, out_dir: Path, physics: bool = True) -> dict:
@@ -19,7 +19,7 @@ def write_scene_outputs(generated: Generated | HouseGenerated, out_dir: Path, ph
 
     out_dir = Path(out_dir)
     scene = generated.scene
-    report = {"layout": generated.report.to_dict()}
+    report = {**cdf_summary(generated), "layout": generated.report.to_dict()}
     if physics:
         report["physics"] = check_physics(scene).to_dict()
     built = build_scene(scene)
@@ -33,8 +33,35 @@ def write_scene_outputs(generated: Generated | HouseGenerated, out_dir: Path, ph
     finally:
         built.close()
     scene.save(out_dir / "scene.json")
-    write_atomic(out_dir / "report.json", json.dumps(report, indent=1, sort_keys=True) + "\n")
+    # the CDF summary first (satisfies_cdf, the unplaced objects), then the layout and physics checks
+    write_atomic(out_dir / "report.json", json.dumps(report, indent=1) + "\n")
     return report
+
+
+def cdf_summary(generated: Generated | HouseGenerated) -> dict:
+    """The top of report.json: whether the scene satisfies its CDF (every check of the layout report passed, every
+    object the CDF names placed), the objects the CDF names that were not placed, and the others (room defaults,
+    implicit companions) left out."""
+    rep = generated.report
+    layouts: list[LayoutReport] = list(rep.rooms.values()) if isinstance(rep, HouseReport) else [rep]
+    named = sorted({n for r in layouts for n in r.unplaced if n in r.required})
+    others = sorted({n for r in layouts for n in r.unplaced if n not in r.required})
+    return {"satisfies_cdf": bool(rep.ok) and not named, "unplaced_named_by_cdf": named, "unplaced_others": others}
+
+
+def summary_lines(where: Path, report: dict) -> list[str]:
+    """What the console says of a scene's report beyond 'valid': a scene that does not satisfy its CDF, and the
+    objects left out."""
+    lines = []
+    if not report["satisfies_cdf"]:
+        named = report["unplaced_named_by_cdf"]
+        why = f"objects it names were not placed: {', '.join(named)}" if named else "its layout checks failed"
+        lines.append(f"warning: {where}: the scene does NOT satisfy its CDF ({why}; report.json says which)")
+    others = report["unplaced_others"]
+    if others:
+        lines.append(f"note: {where}: {len(others)} other object(s) left out: "
+                     f"{', '.join(others[:8])}{', ...' if len(others) > 8 else ''}")
+    return lines
 
 
 def _reachable(scene) -> np.ndarray:

@@ -9,8 +9,9 @@ from typing import Any
 
 from pydantic import BaseModel, ConfigDict
 
-from luminous_sim.assets.paths import asset_root, user_asset_root
+from luminous_sim.assets.paths import user_asset_root
 from luminous_sim.errors import AssetError
+from luminous_sim.resources import asset_library
 
 CATALOG_NAME = "catalog.json"
 
@@ -108,7 +109,12 @@ class Catalog:
 
     @classmethod
     def load(cls, root: Path | None = None, include_user: bool = True) -> Catalog:
-        entries = cls.read(Path(root or asset_root()))
+        """The library at `root` (default: the one in use, checked against its digest) and the user's.
+
+        Raises:
+            AssetError: the default library is missing, lists no assets or has another digest.
+        """
+        entries = cls.read(Path(root) if root is not None else asset_library())
         if include_user:
             entries += cls.read(user_asset_root())
         return cls(entries)

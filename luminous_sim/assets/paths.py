@@ -1,4 +1,4 @@
-"""Where the asset library lives: the repository's `urdf_assets/` (or $LUMINOUS_ASSETS), and a user
+"""Where the asset library lives (`luminous_sim.resources`: the shipped one, or $LUMINOUS_ASSETS), and a user
 library for imported meshes (~/.luminous/user_assets or $LUMINOUS_USER_ASSETS)."""
 
 from __future__ import annotations
@@ -6,12 +6,13 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-REPO_ROOT = Path(__file__).resolve().parents[2]
+from luminous_sim.resources import asset_library_dir
 
 
 def asset_root() -> Path:
-    """The built-in asset library folder."""
-    return Path(os.environ.get("LUMINOUS_ASSETS", REPO_ROOT / "urdf_assets"))
+    """The built-in asset library folder (where `luminous assets build` writes by default; not checked: readers go
+    through `luminous_sim.resources.asset_library`)."""
+    return asset_library_dir()
 
 
 def user_asset_root() -> Path:

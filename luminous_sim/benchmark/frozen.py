@@ -1,9 +1,12 @@
 """The frozen splits: each split's manifest, shipped in `luminous_sim/benchmark/data/<split>.jsonl` (a header
 line, then one line per episode: task type, layout, draw and its seed, task parameters, start, `episode_key`),
-read here. Entry `i` of a split is line `i + 1`, the same on every machine."""
+read here. Entry `i` of a split is line `i + 1`, the same on every machine. Each manifest's SHA-256 lives in code
+(`MANIFEST_SHA256`) and is checked before the manifest is read: a changed, truncated or renumbered manifest is
+refused with a message, never taken for another benchmark (nor cached as a build failure)."""
 
 from __future__ import annotations
 
+import hashlib
 import json
 from dataclasses import dataclass
 from functools import lru_cache
@@ -11,6 +14,7 @@ from pathlib import Path
 from typing import Any
 
 from luminous_sim.benchmark.counts import Layout
+from luminous_sim.resources import cache_root
 from luminous_sim.splits import SplitError, plus_split
 from luminous_sim.world import AgentPose
 
@@ -21,20 +25,28 @@ DATA_DIR = Path(__file__).parent / "data"
 FROZEN = ("S+", "U+")
 """The splits that are frozen (their manifests ship with the package). U+test (`PAPER_COUNTS` has its counts) is
 not frozen yet: its entries are refused with a message saying so."""
+MANIFEST_SHA256 = {
+    "S+": "14e34e745573f7c54f2ee44efc17f17db0423a5dda048508d765eb3a85a9d550",
+    "U+": "37c15c1979567ad4ce5831d5f66a9d6d8a4a77264f5524e0965c2aff1dc70122",
+}
+"""The shipped manifests' SHA-256 (of their bytes). Freezing a split again (`benchmark.freeze`) changes it: put the
+new value here."""
 
 
-CACHE_VAR = "LUMINOUS_CACHE"
-"""The environment variable naming the cache folder (default `~/.cache/luminous`)."""
+def canonical_build_dir(split: str) -> Path:
+    """Where `luminous eval --split` keeps the canonical build of frozen split `split` when no `--build` folder is
+    named: `<cache>/benchmark-v<SPLIT_VERSION>/<split>-<first 16 digits of its manifest's digest>` under
+    `luminous_sim.resources.cache_root()` (`$LUMINOUS_CACHE`, `$XDG_CACHE_HOME/luminous` or `~/.cache/luminous`).
+    Keyed by the split version and the manifest, not the package version: a patch release does not build S+
+    again, and a new manifest never reads the old one's trials.
 
-
-def canonical_build_dir() -> Path:
-    """Where `luminous eval --split` keeps the canonical build of the frozen splits when no `--build` folder is
-    named: `$LUMINOUS_CACHE/benchmark-v<SPLIT_VERSION>`, else `~/.cache/luminous/benchmark-v<SPLIT_VERSION>`
-    (a new split version gets a new folder; nothing is written outside it)."""
-    import os
-
-    root = Path(os.environ.get(CACHE_VAR) or Path.home() / ".cache" / "luminous")
-    return root / f"benchmark-v{SPLIT_VERSION}"
+    Raises:
+        SplitError: an unknown or unfrozen split.
+    """
+    if split not in MANIFEST_SHA256:
+        plus_split(split)
+        raise SplitError(f"split {split} is not frozen yet (frozen: {', '.join(FROZEN)})")
+    return cache_root() / f"benchmark-v{SPLIT_VERSION}" / f"{split}-{MANIFEST_SHA256[split][:16]}"
 
 
 def manifest_path(split: str, folder: Path = DATA_DIR) -> Path:
@@ -74,7 +86,13 @@ def _manifest(split: str) -> tuple[dict[str, Any], tuple[BenchmarkEntry, ...]]:
     if split not in FROZEN or not path.is_file():
         raise SplitError(f"split {split} is not frozen yet (frozen: {', '.join(FROZEN)}); freeze it with "
                          f"python -m luminous_sim.benchmark.freeze --split {split}")
-    lines = path.read_text().splitlines()
+    data = path.read_bytes()
+    digest = hashlib.sha256(data).hexdigest()
+    if digest != MANIFEST_SHA256[split]:
+        raise SplitError(f"{path}: the frozen manifest of {split} was changed (sha256 {digest[:16]}..., shipped "
+                         f"{MANIFEST_SHA256[split][:16]}...); reinstall luminous-sim (pip install --force-reinstall "
+                         "luminous-sim) or restore the file (git checkout)")
+    lines = data.decode().splitlines()
     header = json.loads(lines[0])
     if header.get("format") != FROZEN_FORMAT or header.get("version") != SPLIT_VERSION:
         raise SplitError(f"{path}: format {header.get('format')!r} version {header.get('version')!r}; this "

@@ -1,9 +1,9 @@
 """The JSON Schema of the current CDF version, for editors and other tools.
 
 `schema_dict()` builds it from the pydantic model; `export_schema(out_dir)` writes
-`cdf-v<N>.schema.json`. The committed copy lives in `cdf/schema/` at the repository root, and a
-test checks it equals a fresh export. The loader is a little more forgiving than the schema
-(aliases such as `color`, case-insensitive predicate names, version-1 documents).
+`cdf-v<N>.schema.json`. The shipped copy lives in `luminous_sim/resources/cdf/schema/` (the
+repository's `cdf/schema/`), and a test checks it equals a fresh export. The loader is a little more
+forgiving than the schema (aliases such as `color`, case-insensitive predicate names, version-1 documents).
 """
 
 from __future__ import annotations
@@ -15,10 +15,11 @@ from typing import Any
 
 from luminous_sim.cdf.predicates import KEYWORDS, PREDICATES
 from luminous_sim.cdf.schema import CDF_VERSION, EXPRESSION_MARKER, ChallengeDefinition
+from luminous_sim.resources import schema_dir
 
 SCHEMA_ID = f"https://luminous-sim.dev/schema/cdf-v{CDF_VERSION}.schema.json"
-REPO_SCHEMA_DIR = Path(__file__).resolve().parents[2] / "cdf" / "schema"
-"""Where the committed schema lives in a source checkout."""
+SCHEMA_DIR = schema_dir()
+"""Where the shipped schema lives (package data; the repository's `cdf/schema/` links to it)."""
 
 _REF = {"$ref": "#/$defs/Expression"}
 _NAMES = {"type": "array", "items": {"type": "string"}}
@@ -133,7 +134,7 @@ def schema_filename(version: int = CDF_VERSION) -> str:
     return f"cdf-v{version}.schema.json"
 
 
-def export_schema(out_dir: str | os.PathLike[str] = REPO_SCHEMA_DIR) -> Path:
+def export_schema(out_dir: str | os.PathLike[str] = SCHEMA_DIR) -> Path:
     """Write the schema to `out_dir/cdf-v<N>.schema.json` (making the folder); return the path."""
     out = Path(out_dir)
     out.mkdir(parents=True, exist_ok=True)

@@ -104,10 +104,18 @@ def check_room(name: str) -> str:
     """Return a safe, known room name, else raise ValueError."""
     check_safe_ref(name, "room")
     if not room_exists(name):
-        raise ValueError(
-            f"unknown room {name!r}; expected a room-library name such as 'FloorPlan12' or a "
-            "procedural room such as 'kitchen_rect'"
-        )
+        module = _import("luminous_sim.rooms.library")
+        library_error = getattr(module, "room_files", None)
+        problem = None
+        if callable(library_error):  # a broken library (an incomplete install) is said as such
+            try:
+                library_error()
+            except Exception as exc:
+                problem = str(exc)
+        explain = getattr(module, "missing_room", None)
+        detail = problem or (_safely(explain, name) if callable(explain) else None)
+        raise ValueError(f"unknown room {name!r}; expected a room-library name such as 'FloorPlan12' or a "
+                         "procedural room such as 'kitchen_rect'" + (f" ({detail})" if isinstance(detail, str) else ""))
     return name
 
 

@@ -1,4 +1,5 @@
-"""`luminous cdf`: validate Challenge Definition Format files and export the CDF JSON Schema."""
+"""`luminous cdf`: validate Challenge Definition Format files, export the CDF JSON Schema, copy out the shipped
+example CDFs."""
 
 from __future__ import annotations
 
@@ -12,8 +13,8 @@ from luminous_sim.errors import CDFError, RoomError
 
 
 def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[type-arg]
-    """Add the `cdf` command and its `validate` and `schema` subcommands."""
-    parser = subparsers.add_parser("cdf", help="validate CDF files, export the CDF JSON Schema")
+    """Add the `cdf` command and its `validate`, `schema` and `examples` subcommands."""
+    parser = subparsers.add_parser("cdf", help="validate CDF files, export the CDF JSON Schema, copy the examples")
     sub = parser.add_subparsers(dest="cdf_command", required=True)
     validate = sub.add_parser(
         "validate", help="check CDF files (.yaml, .yml, .json) and summarise them"
@@ -23,6 +24,12 @@ def register(subparsers: argparse._SubParsersAction) -> None:  # type: ignore[ty
     schema = sub.add_parser("schema", help=f"write cdf-v{CDF_VERSION}.schema.json")
     schema.add_argument("--out", type=output_dir, required=True, metavar="DIR", help="output folder")
     schema.set_defaults(func=run_schema)
+    examples = sub.add_parser("examples", help="copy the example CDFs that ship with the package into a folder",
+                              epilog="example: luminous cdf examples --out my_cdfs && luminous generate --cdf "
+                                     "my_cdfs/kitchen_apple_fridge.yaml --seed 0 --out out/apple")
+    examples.add_argument("--out", type=output_dir, required=True, metavar="DIR",
+                          help="folder to copy them into (new or empty: nothing there is overwritten)")
+    examples.set_defaults(func=run_examples)
 
 
 def _check_sizes(cdf, path: Path) -> None:
@@ -84,4 +91,28 @@ def run_schema(args: argparse.Namespace) -> int:
             str(args.out), [Issue("", f"cannot write the schema ({exc.strerror or exc})")]
         ) from None
     print(path)
+    return 0
+
+
+def run_examples(args: argparse.Namespace) -> int:
+    """Copy the shipped example CDFs (`luminous_sim.resources.examples_dir`) into `--out`, which must be new or
+    empty (a copy never overwrites a file of the user's)."""
+    import shutil
+
+    from luminous_sim.errors import LuminousError
+    from luminous_sim.resources import examples_dir
+
+    out: Path = args.out
+    if out.is_symlink() or (out.exists() and (not out.is_dir() or any(out.iterdir()))):
+        raise LuminousError(f"--out {out}: expected a new or empty folder (nothing there is overwritten)")
+    source = examples_dir()
+    files = sorted(p for p in source.rglob("*.yaml") if p.is_file())
+    if not files:
+        raise LuminousError(f"no example CDFs in {source}: the package is incomplete; reinstall luminous-sim")
+    for path in files:
+        target = out / path.relative_to(source)
+        target.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(path, target)
+        print(target)
+    print(f"copied {len(files)} example CDFs from {source} to {out}")
     return 0

@@ -7,6 +7,7 @@ designs of an ALFRED split folder (method (b)) in ALFRED's layout (see luminous_
 from __future__ import annotations
 
 import argparse
+import sys
 import tomllib
 from pathlib import Path
 from typing import Any
@@ -127,6 +128,10 @@ def _build(args: argparse.Namespace) -> int:
               f"{report.failed} failed; {report.ran} run now)")
     print(report.summary())
     print(f"trials listed in {report.out / 'splits.json'}; every episode's record in {report.out / 'manifest.jsonl'}")
+    if report.crashed:  # the installation failed, not the tasks: the next run does these jobs again
+        print(f"error: {len(report.crashed)} job(s) crashed (see above); fix the cause and run the same command "
+              "again", file=sys.stderr)
+        return 1
     return 0
 
 

@@ -37,6 +37,8 @@ def register(sub: argparse._SubParsersAction) -> None:
                         help="a built dataset folder (`luminous dataset build` output) to evaluate on")
     parser.add_argument("--build", type=output_dir, default=None, metavar="DIR",
                         help="where the canonical build of --split is kept (default: the cache folder)")
+    parser.add_argument("--rebuild", action="store_true",
+                        help="build the asked entries of the canonical build (or --build) again from scratch")
     parser.add_argument("--live", action="store_true",
                         help="play the split's entries live in the env (no build; the oracle replans live)")
     parser.add_argument("--episodes", type=int_range(1, MAX_EVAL_EPISODES), default=None, metavar="N",
@@ -91,15 +93,16 @@ def _run(args: argparse.Namespace) -> int:
     def show(o: EpisodeOutcome) -> None:
         what = o.end if o.drawn else f"unavailable ({o.cause})"
         gc = f"{o.goal_conditions[0]}/{o.goal_conditions[1]}" if o.drawn else "-"
+        why = "" if o.drawn or not o.detail else f"  {_shorten(o.detail)}"
         print(f"{o.split} {o.index:4d} {o.task_type:<34} {what:<22} gc {gc:<5} steps {o.steps:4d} "
-              f"expert {o.expert_length:4d}", file=sys.stderr)
+              f"expert {o.expert_length:4d}{why}", file=sys.stderr)
 
     if args.data is None and args.split is None:
         raise LuminousError("give --split (a frozen split) or --data (a built dataset folder)")
-    if args.data is not None and (args.build is not None or args.live):
-        raise LuminousError("--data evaluates the folder it names; leave out --build and --live")
-    if args.live and args.build is not None:
-        raise LuminousError("--live plays the split's entries without a build; leave out --build")
+    if args.data is not None and (args.build is not None or args.live or args.rebuild):
+        raise LuminousError("--data evaluates the folder it names; leave out --build, --rebuild and --live")
+    if args.live and (args.build is not None or args.rebuild):
+        raise LuminousError("--live plays the split's entries without a build; leave out --build and --rebuild")
 
     def run(backend: Backend | None) -> EvalReport:
         common = {"seed": args.seed, "workers": args.workers, "out_dir": Path(args.out), "progress": show,
@@ -124,6 +127,29 @@ def _run(args: argparse.Namespace) -> int:
     paths = write_reports(report, Path(args.out))
     print(markdown_table([report]), end="")
     print(f"wrote {paths['json']}, {paths['table']}, {paths['plot']}")
+    return _incomplete(report)
+
+
+def _shorten(text: str, limit: int = 200) -> str:
+    text = " ".join(text.split())
+    return text if len(text) <= limit else text[: limit - 3] + "..."
+
+
+def _incomplete(report: object) -> int:
+    """1 (and each cause on stderr) when entries are unavailable because of a crash, not of the task: the
+    population is then incomplete; else 0."""
+    from luminous_sim.eval import crashed_build
+
+    outcomes = getattr(report, "outcomes", ())
+    crashed = [o for o in outcomes if crashed_build(o)]
+    unavailable = [o for o in outcomes if not o.drawn]
+    for o in unavailable:
+        print(f"unavailable: {o.split} {o.index} ({o.cause}): {_shorten(o.detail or o.cause, 400)}", file=sys.stderr)
+    if crashed:
+        print(f"error: {len(crashed)} of {len(outcomes)} entries are unavailable because their build crashed or "
+              "made another episode than the frozen split (not a task failure): the population is incomplete; fix "
+              "the cause above and run again (crashed builds are retried)", file=sys.stderr)
+        return 1
     return 0
 
 
@@ -134,14 +160,17 @@ def _canonical_build(args: argparse.Namespace, backend: object) -> Path:
     from luminous_sim.data import BuildOptions, build_split, built_count, make_backend
     from luminous_sim.eval import check_output, data_run
 
-    out = Path(args.build) if args.build is not None else canonical_build_dir()
+    out = Path(args.build) if args.build is not None else canonical_build_dir(args.split)
     check_output(Path(args.out), data_run(args.policy, out, args.split, args.seed, dict(args.env)))
     want = max(args.episodes or benchmark_size(args.split), built_count(out, args.split))
     options = BuildOptions(frames=False, video=False)
     if backend is None:
         with make_backend("local", args.workers, None) as local:
-            report = build_split(out, args.split, want, local, options, progress=True)
+            report = build_split(out, args.split, want, local, options, progress=True, rebuild=args.rebuild)
     else:
-        report = build_split(out, args.split, want, backend, options, progress=True)  # type: ignore[arg-type]
+        report = build_split(out, args.split, want, backend, options, progress=True,  # type: ignore[arg-type]
+                             rebuild=args.rebuild)
     print(f"canonical {args.split} build: {report.built} trials in {out} ({report.ran} built now)", file=sys.stderr)
+    if report.retried or report.crashed:
+        print(report.summary(), file=sys.stderr)
     return out

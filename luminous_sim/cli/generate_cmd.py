@@ -3,11 +3,13 @@
 from __future__ import annotations
 
 import argparse
+import sys
 from pathlib import Path
 
 from luminous_sim.cli.args import int_range, output_dir, seed
 from luminous_sim.errors import CDFError, InfeasibleSceneError
 from luminous_sim.limits import MAX_GENERATE_SCENES
+from luminous_sim.resources import default_house
 from luminous_sim.vocab import ROOM_TYPES
 
 EPILOG = (
@@ -38,12 +40,12 @@ def register(sub: argparse._SubParsersAction) -> None:
     parser.add_argument("--no-physics", action="store_true", help="skip the PyBullet settling check")
     parser.add_argument("--house", type=Path, nargs="?", const=DEFAULT_HOUSE, metavar="HOUSE.yaml",
                         help="generate a multi-room house from a CDF with a scene.house section (alone: the "
-                        f"default house, {DEFAULT_HOUSE.relative_to(DEFAULT_HOUSE.parents[3])}); not with --cdf, "
-                        "--room or --method")
+                        "default house, the shipped example houses/default_house.yaml, which `luminous cdf "
+                        "examples` copies out); not with --cdf, --room or --method")
     parser.set_defaults(func=_run)
 
 
-DEFAULT_HOUSE = Path(__file__).resolve().parents[2] / "cdf" / "examples" / "houses" / "default_house.yaml"
+DEFAULT_HOUSE = default_house()
 """The house `--house` generates when given no file."""
 
 
@@ -79,7 +81,7 @@ def _run(args: argparse.Namespace) -> int:
 
     from luminous_sim import cdf as cdf_mod
     from luminous_sim.cssg import Generated, empty_cdf, generate, sample_uniform
-    from luminous_sim.scene_outputs import write_scene_outputs
+    from luminous_sim.scene_outputs import summary_lines, write_scene_outputs
 
     doc = cdf_mod.load(args.cdf) if args.cdf else empty_cdf(args.room_type)
     if doc.scene.house is not None:  # a house CDF given as --cdf: the same as --house
@@ -115,8 +117,10 @@ def _run(args: argparse.Namespace) -> int:
                 raise
         sub = args.out if args.count == 1 else args.out / f"scene_{seed:05d}"
         report = write_scene_outputs(generated, sub, physics=not args.no_physics)
-        ok = report["layout"]["ok"] and report.get("physics", {}).get("ok", True)
+        ok = report["satisfies_cdf"] and report.get("physics", {}).get("ok", True)
         failures += not ok
+        for line in summary_lines(sub, report):
+            print(line, file=sys.stderr)
         for name, keys in report["layout"].get("ignored_attributes", {}).items():
             kind = next((o.type for o in generated.scene.objects if o.name == name), "fixture")
             print(f"note: {sub}: {name} is the room's own {kind}; its attributes {', '.join(keys)} were not applied")
@@ -151,7 +155,7 @@ def _run_house(args: argparse.Namespace) -> int:
 
     from luminous_sim import cdf as cdf_mod
     from luminous_sim.cssg import generate_house
-    from luminous_sim.scene_outputs import write_scene_outputs
+    from luminous_sim.scene_outputs import summary_lines, write_scene_outputs
 
     clashes = [flag for flag, given in (("--cdf", args.cdf), ("--room", args.room),
                                         ("--method", args.method != "cssg" or args.baseline)) if given]
@@ -167,8 +171,10 @@ def _run_house(args: argparse.Namespace) -> int:
         generated = generate_house(doc, seed=seed)
         sub = args.out if args.count == 1 else args.out / f"scene_{seed:05d}"
         report = write_scene_outputs(generated, sub, physics=not args.no_physics)
-        ok = report["layout"]["ok"] and report.get("physics", {}).get("ok", True)
+        ok = report["satisfies_cdf"] and report.get("physics", {}).get("ok", True)
         failures += not ok
+        for line in summary_lines(sub, report):
+            print(line, file=sys.stderr)
         if args.count == 1:
             rooms = ", ".join(f"{r.name} ({r.room_type})" for r in generated.plan.shell.house.rooms)  # type: ignore[union-attr]
             print(f"wrote {sub}/scene.json ({len(generated.scene.objects)} objects, house {generated.scene.room.name}: "

@@ -45,6 +45,7 @@ from luminous_sim.data.alfred_report import CoverageReport, Realisation, parse_d
 from luminous_sim.data.alfred_structure import Structure, structure, structure_differences
 from luminous_sim.data.backends import Backend, BackendError, LocalBackend, RayBackend, make_backend, map_jobs
 from luminous_sim.data.build import (
+    RETRIED_STAGES,
     BuildError,
     BuildOptions,
     BuildReport,
@@ -54,6 +55,7 @@ from luminous_sim.data.build import (
     build,
     build_split,
     built_count,
+    retried,
     split_jobs,
 )
 from luminous_sim.data.house_build import HOUSE_SPLIT, HouseJob, build_houses, house_jobs
@@ -69,6 +71,7 @@ from luminous_sim.data.task_scenes import physical_misfit, scene_for_task, task_
 
 __all__ = [
     "HOUSE_SPLIT",
+    "RETRIED_STAGES",
     "AlfredDesign",
     "AlfredParse",
     "AlfredParseError",
@@ -124,6 +127,7 @@ __all__ = [
     "read_design",
     "read_designs",
     "realise",
+    "retried",
     "scene_for_task",
     "scene_misfit",
     "solve_design",

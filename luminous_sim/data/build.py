@@ -72,6 +72,15 @@ ANNOTATIONS = 3
 """Instructions per trajectory (ALFRED has about three per trajectory, `repeat_idx` 0..2)."""
 CAUSES_SHOWN = 2
 """Most frequent failure causes shown per task type in the summary."""
+RETRIED_STAGES = ("crash", "version")
+"""Failures of the installation, not of the task: an exception (a bug, missing data) or an episode this install
+makes differently from the frozen split. Their records are never kept as results: the next run does the job
+again."""
+
+
+def retried(record: Record) -> bool:
+    """Whether a manifest record is a failure of the installation (`RETRIED_STAGES`), done again on the next run."""
+    return record.get("status") == "failed" and record.get("stage") in RETRIED_STAGES
 
 
 class BuildError(LuminousError):
@@ -395,6 +404,15 @@ class BuildReport:
     """Trials per split that the folder also holds, beside those asked for (each split kept apart)."""
     rejected: tuple[str, ...] = ()
     """Manifest lines left out as unreadable or altered (their jobs were done again), each with its cause."""
+    retried: tuple[str, ...] = ()
+    """Keys of jobs an earlier run recorded as a crash or a version failure, done again by this call."""
+    rebuilt: int = 0
+    """Finished jobs done again because the call asked for a rebuild."""
+
+    @property
+    def crashed(self) -> tuple[Record, ...]:
+        """Records of this call's jobs that failed through the installation (a crash, a version failure)."""
+        return tuple(r for r in self.records if retried(r))
 
     @property
     def built(self) -> int:
@@ -431,6 +449,16 @@ class BuildReport:
         if self.rejected:
             lines.append(f"{len(self.rejected)} manifest line(s) unreadable or altered, left out and their jobs done "
                          f"again; the first: {_shorten(self.rejected[0], 300)}")
+        if self.retried:
+            lines.append(f"{len(self.retried)} job(s) an earlier run crashed on (or built as another episode) were "
+                         f"done again: {', '.join(self.retried[:5])}{' ...' if len(self.retried) > 5 else ''}")
+        if self.rebuilt:
+            lines.append(f"{self.rebuilt} finished job(s) done again (a rebuild was asked for)")
+        if self.crashed:
+            first = self.crashed[0]
+            lines.append(f"{len(self.crashed)} job(s) failed through the installation, not the task (a crash or "
+                         f"another episode than the frozen split; the next run does them again): {first['key']} at "
+                         f"{first['stage']}: {_shorten(first['cause'], 300)}")
         if self.redone:
             lines.append(f"{len(self.redone)} finished trial(s) missing or damaged, done again: "
                          f"{', '.join(self.redone[:5])}{' ...' if len(self.redone) > 5 else ''}")
@@ -536,19 +564,23 @@ def _intact(out: Path, record: Record) -> bool:
     return tree_digest(trial) == (record["files"], record["sha256"])
 
 
-def _verify(out: Path, manifest: Manifest, jobs: Sequence[Job]) -> tuple[list[str], list[str]]:
+def _verify(out: Path, manifest: Manifest, jobs: Sequence[Job]) -> tuple[list[str], list[str], list[str]]:
     """The finished jobs to do again: (keys of `jobs` whose record disagrees with the job or whose trial is
-    missing or damaged, keys of other records whose trial is missing or damaged)."""
+    missing or damaged; keys of other records whose trial is missing or damaged; keys of `jobs` whose record is a
+    crash or a version failure, `retried`)."""
     by_key = {j.key: j for j in jobs}
     redo: list[str] = []
     drop: list[str] = []
+    again: list[str] = []
     for r in manifest:
         job = by_key.get(r["key"])
-        if job is not None and (r["split"], r["order"], r["task_type"]) != (job.split, job.order, job.task_type):
+        if job is not None and retried(r):
+            again.append(r["key"])
+        elif job is not None and (r["split"], r["order"], r["task_type"]) != (job.split, job.order, job.task_type):
             redo.append(r["key"])
         elif r["status"] == "built" and not _intact(out, r):
             (redo if job is not None else drop).append(r["key"])
-    return redo, drop
+    return redo, drop, again
 
 
 def _check_scope(out: Path, manifest: Manifest, jobs: Sequence[Job]) -> None:
@@ -585,9 +617,10 @@ def splits_document(manifest: Manifest) -> dict[str, list[dict[str, object]]]:
 
 
 def build(out: Path, jobs: Sequence[Job], backend: Backend | None = None, options: BuildOptions | None = None,
-          progress: bool = True) -> BuildReport:
+          progress: bool = True, rebuild: bool = False) -> BuildReport:
     """Run the `jobs` the build folder `out` has not finished, on `backend` (default: this process), and
-    write `splits.json`; resumable after a kill at any moment (see the module's docstring).
+    write `splits.json`; resumable after a kill at any moment (see the module's docstring). A job an earlier run
+    recorded as a crash or a version failure is done again (`retried`); with `rebuild` every one of `jobs` is.
 
     Raises:
         BuildError: `out` holds something else or a build with other settings, another build runs there,
@@ -606,8 +639,10 @@ def build(out: Path, jobs: Sequence[Job], backend: Backend | None = None, option
         _check_scope(out, manifest, jobs)
         run = uuid.uuid4().hex
         with _workers_lock(out, exclusive=True):  # waits for the job of any orphaned worker to end
-            redone, dropped = _verify(out, manifest, jobs)
-            manifest.remove(redone + dropped)
+            rebuilt = [j.key for j in jobs if j.key in manifest] if rebuild else []
+            manifest.remove(rebuilt)
+            redone, dropped, again = _verify(out, manifest, jobs)
+            manifest.remove(redone + dropped + again)
             _clean(out, manifest, {j.split for j in jobs} | {r["split"] for r in manifest})
             write_atomic(out / PARTIAL / RUN, run)
         todo = [j for j in jobs if j.key not in manifest]
@@ -630,17 +665,18 @@ def build(out: Path, jobs: Sequence[Job], backend: Backend | None = None, option
         asked = {j.split for j in jobs}
         others = dict(sorted(Counter(r["split"] for r in manifest if r["trial"] and r["split"] not in asked).items()))
         return BuildReport(out, tuple(manifest[j.key] for j in jobs), len(todo), seconds, workers,
-                           tuple(redone), tuple(dropped), others, tuple(manifest.rejected))
+                           tuple(redone), tuple(dropped), others, tuple(manifest.rejected), tuple(again),
+                           len(rebuilt))
 
 
 def build_split(out: Path, split: str, count: int | None = None, backend: Backend | None = None,
-                options: BuildOptions | None = None, progress: bool = True) -> BuildReport:
+                options: BuildOptions | None = None, progress: bool = True, rebuild: bool = False) -> BuildReport:
     """Method (a): episodes 0 .. count-1 of the frozen split `split` (S+, U+, U+test; None: all of them) into
-    the build folder `out`."""
+    the build folder `out` (`rebuild`: every one done again)."""
     from luminous_sim.benchmark import benchmark_size
 
     return build(out, split_jobs(split, benchmark_size(split) if count is None else count), backend, options,
-                 progress)
+                 progress, rebuild)
 
 
 def built_count(out: Path, split: str) -> int:

@@ -16,7 +16,8 @@ order from `seed` until `episodes` are kept, or `max_seeds` are spent (an error)
 never.
 
 The dataset is built in `<out>.partial/` (a Minari datasets root), each episode appended as it is rolled out,
-and moved to `out` when complete; `resume=True` goes on from a `<out>.partial/` an interrupted run left. Read
+and moved to `out` when complete; `resume=True` goes on from a `<out>.partial/` an interrupted run left (one
+stopped before its first episode, its dataset created but no run recorded, is started afresh). Read
 it back with `minari.MinariDataset(minari_dataset_path(out, dataset_id))`, or with `MINARI_DATASETS_PATH=out` and
 `minari.load_dataset(dataset_id)`; `dataset.recover_environment()` rebuilds the wrapped env.
 """
@@ -24,6 +25,7 @@ it back with `minari.MinariDataset(minari_dataset_path(out, dataset_id))`, or wi
 from __future__ import annotations
 
 import contextlib
+import json
 import os
 import warnings
 from collections.abc import Iterator
@@ -144,7 +146,8 @@ def export_minari(env_id: str, episodes: int, out: Path, *, seed: int = 0, datas
         env_kwargs: env options (`EnvConfig` fields), as `gymnasium.make(env_id, **env_kwargs)`.
         token_length: tokens kept of the instruction (`InstructionTokens`).
         jpeg: store images JPEG-encoded (Minari's default: lossy, smaller) instead of raw arrays.
-        resume: go on from the `<out>.partial/` of an interrupted run with the same arguments.
+        resume: go on from the `<out>.partial/` of an interrupted run with the same arguments (or start
+            afresh where that run stopped before writing any episode).
         max_seeds: give up after trying this many seeds (default `10 * episodes + 10`).
         progress: show a progress bar.
 
@@ -169,7 +172,8 @@ def export_minari(env_id: str, episodes: int, out: Path, *, seed: int = 0, datas
 
     from luminous_sim.env import InstructionTokens
 
-    out = Path(out)
+    # Absolute from the start: Minari joins its (relative) datasets root onto itself (MinariStorage.get_size)
+    out = Path(out).resolve()
     if out.exists() and (not out.is_dir() or any(out.iterdir())):
         raise MinariExportError(f"{out}: already exists; choose a new --out (a dataset is never overwritten)")
     dataset_id = dataset_id or default_minari_id(env_id)
@@ -180,14 +184,19 @@ def export_minari(env_id: str, episodes: int, out: Path, *, seed: int = 0, datas
     if env_id not in gymnasium.registry:
         raise MinariExportError(f"env {env_id!r} is not registered; see `luminous_sim.env.load_entries()`")
     partial = out.with_name(out.name + PARTIAL)
+    store = minari_dataset_path(partial, dataset_id)
+    unstarted = _unstarted(store)
     if partial.exists() and not resume:
-        raise MinariExportError(f"{partial}: an interrupted export is there; pass resume (--resume) to go on "
-                                "from it, or remove it")
+        state = ", stopped before its first episode" if unstarted else ""
+        then = "start it afresh" if unstarted else "go on from it"
+        raise MinariExportError(f"{partial}: an interrupted export is there{state}; pass resume (--resume) to "
+                                f"{then}, or remove it")
 
     env = InstructionTokens(gymnasium.make(env_id, **(env_kwargs or {})), length=token_length)
     try:
         with _datasets_root(partial):
-            store = minari_dataset_path(partial, dataset_id)
+            if unstarted:
+                _remove_unstarted(store)
             if store.exists():
                 try:
                     dataset = minari.MinariDataset(store)
@@ -234,6 +243,37 @@ def export_minari(env_id: str, episodes: int, out: Path, *, seed: int = 0, datas
         out.rmdir()
     os.replace(partial, out)
     return MinariExport(out / dataset_id, dataset_id, len(kept), int(steps), next_seed - seed, skipped)
+
+
+_STORE_FILES = frozenset({"metadata.json", "main_data.hdf5"})
+
+
+def _unstarted(store: Path) -> bool:
+    """Whether `store` is a dataset this export created but stopped before recording its run (no episodes).
+
+    Only Minari's own two files in `data/` and nothing else beside it, metadata naming our algorithm, no
+    episode and no `luminous_*` run: holding nothing of value, such a dataset is recreated on resume.
+    """
+    try:
+        if {p.name for p in store.parent.iterdir()} != {"data"} or not store.is_dir():
+            return False
+        files = {p.name for p in store.iterdir()}
+        if "metadata.json" not in files or not files <= _STORE_FILES or any(
+                not (store / name).is_file() or (store / name).is_symlink() for name in files):
+            return False
+        metadata = json.loads((store / "metadata.json").read_text())
+    except (OSError, ValueError):
+        return False
+    return (isinstance(metadata, dict) and metadata.get("algorithm_name") == ALGORITHM
+            and metadata.get("total_episodes") == 0 and "luminous_env_id" not in metadata)
+
+
+def _remove_unstarted(store: Path) -> None:
+    """Remove an `_unstarted` dataset: its known files one by one, then its (now empty) folders."""
+    for name in _STORE_FILES:
+        (store / name).unlink(missing_ok=True)
+    store.rmdir()
+    store.parent.rmdir()
 
 
 def _new_dataset(minari: Any, dataset_id: str, env: Any, jpeg: bool) -> Any:

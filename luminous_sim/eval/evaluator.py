@@ -287,6 +287,14 @@ def read_outcome(path: Path, split: str, index: int, job: EpisodeJob | None = No
     return outcome
 
 
+def crashed_build(outcome: EpisodeOutcome) -> bool:
+    """Whether an outcome is `unavailable` because its build crashed or made another episode (the installation's
+    fault, `data.RETRIED_STAGES`), not because the task could not be built."""
+    from luminous_sim.data import RETRIED_STAGES
+
+    return not outcome.drawn and outcome.cause == "build" and outcome.detail.split(":", 1)[0] in RETRIED_STAGES
+
+
 def run_job(job: EpisodeJob) -> EpisodeOutcome:
     """One job's outcome: read back from the output folder if an earlier run finished it (and its file is
     intact), else played."""
@@ -300,7 +308,10 @@ def _run_job(job: EpisodeJob) -> tuple[EpisodeOutcome, str]:
     damaged = ""
     if path is not None and (path.exists() or path.is_symlink()):
         try:
-            return read_outcome(path, job.split, job.index, job), ""
+            kept = read_outcome(path, job.split, job.index, job)
+            if not crashed_build(kept):  # an entry whose build crashed is never kept as a result: its build is retried
+                return kept, ""
+            path.unlink()
         except LuminousError as exc:
             damaged = str(exc)
             if path.is_dir() and not path.is_symlink():

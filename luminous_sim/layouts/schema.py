@@ -1,5 +1,5 @@
-"""The JSON Schema of the layout format, generated from its pydantic models; the committed copy lives in
-`cdf/schema/` at the repository root (beside the CDF's), and a test checks it equals a fresh export."""
+"""The JSON Schema of the layout format, generated from its pydantic models; the shipped copy lives in
+`luminous_sim/resources/cdf/schema/` (beside the CDF's), and a test checks it equals a fresh export."""
 
 from __future__ import annotations
 
@@ -9,11 +9,12 @@ from pathlib import Path
 from typing import Any
 
 from luminous_sim.layouts.model import LAYOUT_FORMAT, Layout
+from luminous_sim.resources import schema_dir
 
 SCHEMA_FILENAME = "luminous-layout-v1.schema.json"
 SCHEMA_ID = f"https://luminous-sim.dev/schema/{SCHEMA_FILENAME}"
-REPO_SCHEMA_DIR = Path(__file__).resolve().parents[2] / "cdf" / "schema"
-"""Where the committed schema lives in a source checkout."""
+SCHEMA_DIR = schema_dir()
+"""Where the shipped schema lives (package data; the repository's `cdf/schema/` links to it)."""
 
 
 def schema_dict() -> dict[str, Any]:
@@ -32,7 +33,7 @@ def schema_text() -> str:
     return json.dumps(schema_dict(), indent=2, sort_keys=True, ensure_ascii=False) + "\n"
 
 
-def export_schema(out_dir: str | os.PathLike[str] = REPO_SCHEMA_DIR) -> Path:
+def export_schema(out_dir: str | os.PathLike[str] = SCHEMA_DIR) -> Path:
     """Write the schema to `out_dir/luminous-layout-v1.schema.json` (making the folder); return the path."""
     from luminous_sim.assets.objio import write_atomic
 

@@ -2,8 +2,10 @@
 
 A name is only ever a bare word (`^[A-Za-z0-9_-]+$`); it is looked up as `<name>.json` inside the
 library folders, never used as a path, so `../x` or `/etc/passwd` cannot reach outside them.
-Folders searched, in order: the repository's `cdf/rooms/` (and its subfolders), then each folder in
-the `LUMINOUS_ROOM_LIBRARY` environment variable (separated by `os.pathsep`). The first match wins.
+Folders searched, in order: the package's shipped room library (`luminous_sim.resources.room_library_dir`:
+ALFRED's FloorPlans converted, in subfolders), then each folder in the `LUMINOUS_ROOM_LIBRARY` environment
+variable (separated by `os.pathsep`). The first match wins. A shipped library without ALFRED's floor plans is an
+incomplete install, and an error, never an empty list.
 
 Procedural names mean "generate a room of this type and shape": `kitchen`, `kitchen_rect`,
 `kitchen_L`, `kitchen_two_zone`, and the same for `living_room`, `bedroom` and `bathroom` (the
@@ -19,12 +21,14 @@ from pathlib import Path
 import numpy as np
 
 from luminous_sim.errors import RoomError
+from luminous_sim.resources import room_library_dir
 from luminous_sim.rooms.generate import SHAPES, generate_shell, snake
 from luminous_sim.rooms.shell import NAME_PATTERN, RoomShell, load_shell
 from luminous_sim.vocab import ROOM_TYPES
 
 ENV_VAR = "LUMINOUS_ROOM_LIBRARY"
-SHIPPED_DIR = Path(__file__).resolve().parents[2] / "cdf" / "rooms"
+SHIPPED_DIR = room_library_dir()
+ALFRED_ROOM = re.compile(r"FloorPlan\d+")
 NOT_ROOMS = frozenset({"splits", "index"})
 """File stems in library folders that hold metadata, not rooms."""
 
@@ -56,8 +60,16 @@ def library_dirs() -> list[Path]:
 
 
 def room_files() -> dict[str, Path]:
-    """Every room file in the library folders, by name (the first folder holding a name wins)."""
+    """Every room file in the library folders, by name (the first folder holding a name wins).
+
+    Raises:
+        RoomError: the shipped library holds none of ALFRED's floor plans (an incomplete install).
+    """
     found: dict[str, Path] = {}
+    if not SHIPPED_DIR.is_dir() or not any(ALFRED_ROOM.fullmatch(p.stem) for p in SHIPPED_DIR.rglob("*.json")):
+        raise RoomError(f"the room library at {SHIPPED_DIR} holds none of ALFRED's floor plans (FloorPlan<N>.json): "
+                        "the package is incomplete; reinstall luminous-sim (pip install --force-reinstall "
+                        "luminous-sim)")
     for base in library_dirs():
         if not base.is_dir():
             continue
@@ -88,6 +100,14 @@ def is_procedural(name: str) -> bool:
     return name in PROCEDURAL and name not in room_files()
 
 
+def missing_room(name: str) -> str:
+    """Why `name` is not a room: where it was looked for and what provides rooms."""
+    dirs = ", ".join(map(str, library_dirs()))
+    return (f"no room {name!r} in the room library (no {name}.json in {dirs}; not a procedural name such as "
+            f"{', '.join(list(PROCEDURAL)[:2])}): `luminous rooms list` lists every room; {ENV_VAR}=DIR adds a "
+            "folder of your own rooms")
+
+
 def has_room(name: str) -> bool:
     """Whether `name` is a room file in the library or a procedural name (invalid names: False)."""
     if not isinstance(name, str) or not _NAME.fullmatch(name):
@@ -99,10 +119,10 @@ def room_path(name: str) -> Path:
     """The file of a library room; RoomError for an invalid or unknown name."""
     files = room_files()
     if check_name(name) not in files:
-        hint = " (a procedural name: use shell_for(name, rng))" if name in PROCEDURAL else ""
-        raise RoomError(
-            f"no room {name!r} in the room library ({', '.join(map(str, library_dirs()))}){hint}"
-        )
+        if name in PROCEDURAL:
+            raise RoomError(f"{name!r} is a procedural room name, not a file of the room library: use "
+                            "shell_for(name, rng)")
+        raise RoomError(missing_room(name))
     return files[name]
 
 

@@ -121,3 +121,46 @@ def test_allocation_fills_distinct_tasks_before_repeats(capacities, count, want)
 def test_allocation_refuses_a_type_no_layout_holds():
     with pytest.raises(ValueError, match="no layout"):
         allocate([0, 0], 3)
+
+
+def test_the_shipped_manifests_have_the_digests_in_code():
+    import hashlib
+
+    from luminous_sim.benchmark.frozen import MANIFEST_SHA256, manifest_path
+
+    for split in FROZEN:
+        assert hashlib.sha256(manifest_path(split).read_bytes()).hexdigest() == MANIFEST_SHA256[split]
+
+
+@pytest.mark.parametrize("edit", [
+    lambda lines: [lines[0], lines[1].replace('"episode_key": "', '"episode_key": "0'), *lines[2:]],  # a changed key
+    lambda lines: lines[:-3],  # truncated
+    lambda lines: [lines[0], lines[2], lines[1], *lines[3:]],  # renumbered
+    lambda lines: [lines[0], "garbage", *lines[2:]],
+])
+def test_a_changed_manifest_is_refused_with_a_message(tmp_path, monkeypatch, edit):
+    from luminous_sim.benchmark import frozen
+
+    lines = frozen.manifest_path("U+").read_text().splitlines()
+    changed = tmp_path / "U+.jsonl"
+    changed.write_text("\n".join(edit(lines)) + "\n")
+    monkeypatch.setattr(frozen, "manifest_path", lambda split, folder=None: changed)
+    frozen._manifest.cache_clear()
+    try:
+        with pytest.raises(SplitError, match=r"the frozen manifest of U\+ was changed .* reinstall luminous-sim"):
+            benchmark_entry("U+", 0)
+    finally:
+        frozen._manifest.cache_clear()
+
+
+def test_the_canonical_build_is_keyed_by_split_version_and_manifest_not_package_version(tmp_path, monkeypatch):
+    from luminous_sim.benchmark import SPLIT_VERSION, canonical_build_dir
+    from luminous_sim.benchmark.frozen import MANIFEST_SHA256
+
+    monkeypatch.setenv("LUMINOUS_CACHE", str(tmp_path))
+    for split in FROZEN:
+        assert canonical_build_dir(split) == tmp_path / f"benchmark-v{SPLIT_VERSION}" / \
+            f"{split}-{MANIFEST_SHA256[split][:16]}"
+    assert canonical_build_dir("S+") != canonical_build_dir("U+")
+    with pytest.raises(SplitError, match="not frozen"):
+        canonical_build_dir("U+test")

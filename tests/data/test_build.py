@@ -230,8 +230,57 @@ def test_failures_are_recorded_with_their_first_cause_and_counted(tmp_path):
     records = [json.loads(line) for line in (tmp_path / "b" / MANIFEST).read_text().splitlines()]
     assert [r["status"] for r in records] == ["failed"] * 3 and records[0]["where"] == "test"
     assert json.loads((tmp_path / "b" / SPLITS).read_text()) == {}
-    again = build(tmp_path / "b", jobs, options=QUICK, progress=False)  # finished failures are not redone
-    assert again.ran == 0 and again.failed == 3
+    again = build(tmp_path / "b", jobs, options=QUICK, progress=False)  # task failures are not redone; a crash is
+    assert again.ran == 1 and again.failed == 3 and again.retried == ("x/2",)
+    assert "crashed on" in again.summary() and [r["key"] for r in again.crashed] == ["x/2"]
+
+
+@dataclass(frozen=True)
+class _CrashingOnce:
+    """A job that crashes (or, with `stage`, fails at that stage) while `flag` is missing, then builds a trial: an
+    installation fault fixed between two runs."""
+
+    key: str
+    order: int
+    flag: str
+    stage: str = "crash"
+    split: str = "mine"
+    task_type: str = "pick_and_place_simple"
+
+    def run(self, work: Path, options: BuildOptions) -> JobOutcome:
+        if not Path(self.flag).exists():
+            if self.stage == "crash":
+                raise FileNotFoundError("no room 'FloorPlan10' in the room library")
+            return JobOutcome(stage=self.stage, cause="another episode than the frozen split")
+        trial = work / "pick_and_place_simple-Mug-0" / f"trial_{self.order}"
+        trial.mkdir(parents=True)
+        (trial / "traj_data.json").write_text(json.dumps({"key": self.key}))
+        return JobOutcome(trial=trial)
+
+
+@pytest.mark.parametrize("stage", ["crash", "version"])
+def test_a_crash_is_never_cached_as_a_result_and_is_retried_on_the_next_run(tmp_path, stage):
+    flag = tmp_path / "fixed"
+    jobs = [_CrashingOnce("x/0", 0, str(flag), stage), _Failing("x/1", 1)]
+    first = build(tmp_path / "b", jobs, options=QUICK, progress=False)
+    assert (first.built, first.failed) == (0, 2) and [r["key"] for r in first.crashed] == ["x/0"]
+    assert "failed through the installation" in first.summary()
+    flag.write_text("")  # the install is fixed
+    second = build(tmp_path / "b", jobs, options=QUICK, progress=False)
+    assert second.ran == 1 and second.retried == ("x/0",) and (second.built, second.failed) == (1, 1)
+    assert not second.crashed and second.records[0]["status"] == "built"
+    third = build(tmp_path / "b", jobs, options=QUICK, progress=False)
+    assert third.ran == 0 and not third.retried
+
+
+def test_rebuild_does_every_asked_job_again(tmp_path):
+    flag = tmp_path / "fixed"
+    flag.write_text("")
+    jobs = [_CrashingOnce("x/0", 0, str(flag)), _Failing("x/1", 1)]
+    build(tmp_path / "b", jobs, options=QUICK, progress=False)
+    again = build(tmp_path / "b", jobs, options=QUICK, progress=False, rebuild=True)
+    assert again.ran == 2 and again.rebuilt == 2 and "rebuild was asked for" in again.summary()
+    assert (again.built, again.failed) == (1, 1)
 
 
 def test_refusals_name_the_problem(tmp_path):

@@ -110,3 +110,49 @@ def test_bad_arguments_are_one_line_errors(tmp_path, capsys):
                  ["--env", NAV, "--episodes", "1", "--env-kwarg", "colour=3"]):
         code, _, err = run(["dataset", "minari", *argv, "--out", str(tmp_path / "x")], capsys)
         assert code == 2 and one_line_error(err), (argv, err)
+
+
+def test_a_relative_out_writes_where_an_absolute_one_would(tmp_path, capsys, monkeypatch):
+    # the documented `--out out/minari`: Minari joined a relative datasets root onto itself (main_data.hdf5 not found)
+    monkeypatch.chdir(tmp_path)
+    code, stdout, err = run(["dataset", "minari", "--env", NAV, "--episodes", "1", "--out", "out/minari",
+                             "--env-kwarg", "max_steps=60"], capsys)
+    assert code == 0, err
+    out = tmp_path / "out" / "minari"
+    assert "wrote 1 oracle episodes" in stdout and str(out) in stdout
+    assert not (tmp_path / "out" / "minari.partial").exists()
+    dataset = minari.MinariDataset(minari_dataset_path(out, default_minari_id(NAV)))
+    assert dataset.total_episodes == 1 and [int(m["seed"]) for m in dataset.storage.get_episode_metadata([0])] == [0]
+    (episode,) = dataset.iterate_episodes()
+    assert episode.actions.tolist() == oracle_episode(NAV, 0, **KWARGS)[0]
+
+
+def test_a_partial_torn_while_the_dataset_was_created_starts_afresh_on_resume(tmp_path, monkeypatch):
+    # what the relative --out bug left behind: Minari's metadata and an empty main_data.hdf5, no run recorded
+    from minari.dataset.minari_storage import MinariStorage
+
+    def torn(self):
+        raise FileNotFoundError("main_data.hdf5")
+
+    out, dataset_id = tmp_path / "ds", default_minari_id(NAV)
+    store = minari_dataset_path(tmp_path / "ds.partial", dataset_id)
+    with monkeypatch.context() as m:
+        m.setattr(MinariStorage, "get_size", torn)
+        with pytest.raises(FileNotFoundError):
+            export_minari(NAV, 1, out, env_kwargs=KWARGS)
+    assert (store / "metadata.json").is_file() and not out.exists()
+    with pytest.raises(MinariExportError, match="before its first episode.*--resume"):
+        export_minari(NAV, 1, out, env_kwargs=KWARGS)
+    done = export_minari(NAV, 1, out, seed=2, env_kwargs=KWARGS, resume=True)
+    assert (done.episodes, done.seeds_tried) == (1, 1) and not (tmp_path / "ds.partial").exists()
+    dataset = minari.MinariDataset(minari_dataset_path(out, dataset_id))
+    assert dataset.storage.metadata["luminous_first_seed"] == 2 and dataset.total_episodes == 1
+
+
+def test_a_partial_that_is_not_our_own_is_never_removed(tmp_path):
+    store = minari_dataset_path(tmp_path / "ds.partial", default_minari_id(NAV))
+    store.mkdir(parents=True)
+    (store / "metadata.json").write_text('{"total_episodes": 0, "algorithm_name": "someone else"}')
+    with pytest.raises(MinariExportError, match="cannot resume"):
+        export_minari(NAV, 1, tmp_path / "ds", env_kwargs=KWARGS, resume=True)
+    assert (store / "metadata.json").read_text() == '{"total_episodes": 0, "algorithm_name": "someone else"}'

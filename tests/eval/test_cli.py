@@ -116,3 +116,39 @@ def test_the_step_reader_follows_the_step_instructions_in_order():
     put = agent.act({}, ok)   # the pick up worked: on to the next step
     assert put["action"] == "PutObject"
     assert agent.act({}, ok) == {"action": "Stop"}   # the put worked and the steps ran out
+
+
+def test_a_crashed_build_is_named_exits_non_zero_and_is_retried_on_the_next_run(tmp_path, capsys, monkeypatch):
+    """A build job that crashed (missing data: an incomplete install) is the installation's failure, not the
+    task's: eval prints its cause and exits 1, and neither the build nor the evaluation keeps it as a result."""
+    import luminous_sim.benchmark as benchmark
+    from luminous_sim.errors import RoomError
+
+    def broken(entry):
+        raise RoomError("no room 'FloorPlan10' in the room library")
+
+    argv = ["eval", "--policy", "oracle", "--split", "U+", "--episodes", "1", "--build", str(tmp_path / "b"),
+            "--out", str(tmp_path / "o")]
+    with monkeypatch.context() as patch:
+        patch.setattr(benchmark, "entry_episode", broken)
+        code, _out, err = run(argv, capsys)
+    assert code == 1
+    assert "unavailable: U+ 0 (build): crash: RoomError: no room 'FloorPlan10'" in err
+    assert "the population is incomplete" in err
+    code, _out, err = run(argv, capsys)  # the install fixed: the same command builds and plays the entry
+    assert code == 0, err
+    assert "crashed on (or built as another episode) were done again: U+/000000" in err
+    report = json.loads((tmp_path / "o" / "report.json").read_text())
+    assert report["drawn"] == 1 and report["overall"]["sr"] == 1.0
+
+
+def test_rebuild_builds_the_asked_entries_again(tmp_path, capsys):
+    argv = ["eval", "--policy", "oracle", "--split", "U+", "--episodes", "1", "--build", str(tmp_path / "b"),
+            "--out", str(tmp_path / "o")]
+    assert run(argv, capsys)[0] == 0
+    code, _out, err = run(argv + ["--rebuild"], capsys)
+    assert code == 0, err
+    assert "canonical U+ build: 1 trials" in err and "(1 built now)" in err
+    code, _out, err = run(["eval", "--policy", "oracle", "--split", "U+", "--data", str(tmp_path / "b"), "--rebuild",
+                           "--out", str(tmp_path / "p")], capsys)
+    assert code == 2 and "leave out --build, --rebuild and --live" in err

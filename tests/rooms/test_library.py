@@ -97,3 +97,28 @@ def test_user_file_cannot_shadow_shipped_room(tmp_path, monkeypatch):
     save_shell(shell, tmp_path / "FloorPlan1.json")
     monkeypatch.setenv(ENV_VAR, str(tmp_path))
     assert load_room("FloorPlan1").source == "alfred:FloorPlan1"
+
+
+def test_a_library_without_alfreds_floor_plans_is_an_error_not_a_shorter_list(tmp_path, monkeypatch):
+    """An incomplete install (the shipped rooms missing) says so, never lists only the procedural names."""
+    from luminous_sim.cdf.refs import check_room
+    from luminous_sim.rooms import library
+
+    monkeypatch.setattr(library, "SHIPPED_DIR", tmp_path / "rooms")
+    for call in (library.room_names, library.room_files, lambda: library.load_room("FloorPlan1")):
+        with pytest.raises(RoomError, match=r"holds none of ALFRED's floor plans .* reinstall luminous-sim"):
+            call()
+    with pytest.raises(ValueError, match=r"unknown room 'FloorPlan18'.*holds none of ALFRED's floor plans"):
+        check_room("FloorPlan18")
+
+
+def test_an_unknown_room_names_where_it_was_looked_for_and_what_provides_rooms(tmp_path, monkeypatch):
+    from luminous_sim.cdf.refs import check_room
+
+    monkeypatch.setenv("LUMINOUS_ROOM_LIBRARY", str(tmp_path))
+    with pytest.raises(RoomError) as err:
+        load_room("FloorPlan9999")
+    text = str(err.value)
+    assert str(SHIPPED_DIR) in text and str(tmp_path) in text and "luminous rooms list" in text
+    with pytest.raises(ValueError, match=r"unknown room 'FloorPlan9999'.*no FloorPlan9999.json in .*luminous rooms"):
+        check_room("FloorPlan9999")

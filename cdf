@@ -1,0 +1,1 @@
+luminous_sim/resources/cdf
