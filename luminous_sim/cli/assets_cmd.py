@@ -1,4 +1,4 @@
-"""`luminous assets build|list|sheet|import`: the asset library from the command line."""
+"""`luminous assets build|list|sheet|import|digest`: the asset library from the command line."""
 
 from __future__ import annotations
 
@@ -15,7 +15,8 @@ def register(sub: argparse._SubParsersAction) -> None:
 
     build = cmds.add_parser("build", help="regenerate the asset library deterministically")
     build.add_argument("--types", nargs="*", help="only these object types (default: all)")
-    build.add_argument("--out", type=output_dir, help="library folder (default: the repository's urdf_assets/)")
+    build.add_argument("--out", type=output_dir, help="library folder (default: the library in use, the shipped one unless LUMINOUS_ASSETS "
+                       "names another; a rebuild changes its digest: see `luminous assets digest`)")
     build.add_argument("--jobs", type=limited(1, "MAX_WORKERS"), default=2, help="worker processes (default 2)")
     build.set_defaults(func=_build)
 
@@ -32,6 +33,11 @@ def register(sub: argparse._SubParsersAction) -> None:
     sheet.add_argument("--states-on", action="store_true", help="open joints, switch things on, show dirt")
     sheet.set_defaults(func=_sheet)
 
+    digest = cmds.add_parser("digest", help="the digest of an asset library (what LUMINOUS_ASSETS_DIGEST names)")
+    digest.add_argument("library", type=Path, nargs="?", default=None,
+                        help="library folder (default: the one in use)")
+    digest.set_defaults(func=_digest)
+
     imp = cmds.add_parser("import", help="add your own OBJ/GLB/STL/PLY mesh to the user catalog")
     imp.add_argument("mesh", type=Path, help="the mesh file (.obj, .glb, .gltf, .stl, .ply, .off)")
     imp.add_argument("--type", required=True, dest="object_type", help="ALFRED object type, e.g. Mug")
@@ -42,6 +48,17 @@ def register(sub: argparse._SubParsersAction) -> None:
     imp.add_argument("--any-size", action="store_true",
                      help="accept a size far from the catalog's for this type (a toy car, a giant mug)")
     imp.set_defaults(func=_import)
+
+
+def _digest(args: argparse.Namespace) -> int:
+    """Print a library's digest and whether it is the shipped library's."""
+    from luminous_sim.resources import ASSET_LIBRARY_SHA256, asset_library_dir, library_digest
+
+    root = args.library if args.library is not None else asset_library_dir()
+    got = library_digest(root)
+    same = "the shipped library's" if got == ASSET_LIBRARY_SHA256 else "not the shipped library's"
+    print(f"{got}  {root} ({same})")
+    return 0
 
 
 def _build(args: argparse.Namespace) -> int:

@@ -115,3 +115,13 @@ def test_cache_root_follows_LUMINOUS_CACHE_then_XDG_CACHE_HOME_then_home(tmp_pat
     monkeypatch.delenv("XDG_CACHE_HOME")
     monkeypatch.setenv("HOME", str(tmp_path / "home"))
     assert cache_root() == tmp_path / "home" / ".cache" / "luminous"
+
+
+def test_assets_digest_prints_a_librarys_digest(tmp_path, capsys):
+    from luminous_sim.cli.main import main
+
+    root = _library(tmp_path / "lib")
+    assert main(["assets", "digest", str(root)]) == 0
+    assert capsys.readouterr().out.startswith(f"{library_digest(root)}  {root} (not the shipped library's)")
+    assert main(["assets", "digest"]) == 0
+    assert f"{ASSET_LIBRARY_SHA256}  " in capsys.readouterr().out
