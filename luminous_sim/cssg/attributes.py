@@ -92,6 +92,27 @@ def check_size(variants: list[AssetEntry], size: Any, object_type: str, where: s
         f"(one is {dims} m); a size may scale an asset by {SCALE_RANGE[0]:g}x to {SCALE_RANGE[1]:g}x")
 
 
+def check_assets(cdf: Any, catalog: Any) -> None:
+    """Every type the CDF's objects name has an asset in the catalog (before any layout is drawn).
+
+    Raises:
+        AssetError: the first object whose type (or named asset) the library lacks: what, where it was looked
+            for, and what provides it.
+    """
+    from luminous_sim.errors import AssetError
+
+    for i, spec in enumerate(cdf.scene.objects):
+        pool = catalog.of_type(spec.type)
+        if pool and (not spec.asset or any(e.id == spec.asset for e in pool)):
+            continue
+        roots = sorted({e.root for e in catalog}) or ["(an empty catalog)"]
+        what = f"no asset {spec.asset!r} among its {spec.type} variants" if pool else f"no asset of type {spec.type}"
+        raise AssetError(f"scene.objects[{i}] ({spec.name}): the asset library has {what} "
+                         f"(looked in {', '.join(roots)}); the shipped library has every ALFRED type: unset "
+                         "LUMINOUS_ASSETS, or add one with `luminous assets import MESH --type "
+                         f"{spec.type}`")
+
+
 def check_sizes(cdf: Any, catalog: Any) -> None:
     """Check every CDF object's `size` against the variants it may use (before any layout is drawn).
 

@@ -14,7 +14,7 @@ import numpy as np
 
 from luminous_sim.assets.catalog import Catalog, default_catalog
 from luminous_sim.cdf.schema import ChallengeDefinition
-from luminous_sim.cssg.attributes import check_sizes
+from luminous_sim.cssg.attributes import check_assets, check_sizes
 from luminous_sim.cssg.draft import SceneDraft
 from luminous_sim.cssg.objects import reserve_for_goal
 from luminous_sim.cssg.requests import Request, requests_from_cdf
@@ -208,6 +208,7 @@ def generate(cdf: ChallengeDefinition, seed: int = 0, room: RoomShell | None = N
         raise CDFError(f"CDF {cdf.name or ''}: scene.house describes a house of several rooms; expected "
                        "cssg.generate_house for it (generate makes one room)")
     catalog = catalog or default_catalog()
+    check_assets(cdf, catalog)
     check_sizes(cdf, catalog)
     failures: Counter[str] = Counter()
     unplaced: set[str] = set()

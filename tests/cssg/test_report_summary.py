@@ -39,3 +39,19 @@ def test_generate_writes_the_summary_at_the_top_of_report_json(tmp_path):
     report = json.loads((out / "report.json").read_text())
     assert list(report)[:3] == ["satisfies_cdf", "unplaced_named_by_cdf", "unplaced_others"]
     assert report["satisfies_cdf"] is True and report["unplaced_named_by_cdf"] == []
+
+
+def test_a_type_the_library_lacks_is_named_before_any_layout_is_drawn():
+    import pytest
+
+    from luminous_sim import cdf
+    from luminous_sim.assets.catalog import Catalog, default_catalog
+    from luminous_sim.cssg import generate
+    from luminous_sim.errors import AssetError
+
+    doc = cdf.load("cdf/examples/kitchen_apple_fridge.yaml")
+    without_apples = Catalog([e for e in default_catalog() if e.type != "Apple"])
+    want = (r"scene.objects\[\d+\] \(.*\): the asset library has no asset of type Apple \(looked in .*urdf_assets\)"
+            r".*luminous assets import MESH --type Apple")
+    with pytest.raises(AssetError, match=want):
+        generate(doc, seed=0, catalog=without_apples)
