@@ -10,40 +10,98 @@ Actions ALFRED issues and what they do here:
 
 | action | here |
 |---|---|
-| `Initialize` | records `gridSize` (0.25 only), `visibility_distance` and the render flags; succeeds |
+| `Initialize` | checks and records its values (`INITIALIZE_KEYS`): `gridSize` 0.25 only, `cameraY` 0.75 only, |
+| | `fieldOfView` 60 only, `visibility_distance` (or `visibilityDistance`) a number in (0, 5] m, render |
+| | flags true or false; anything else is a failed event naming the key |
 | `SetObjectToggles` | checks that each listed type's objects start in the listed state (our scenes are built so) |
 | `SetStateOfAllObjects` | `CanBeDirty`: dirtyable pickupable objects start dirty (as our cleaning episodes); |
 | | `CanBeFilled`: nothing starts filled |
 | `SetObjectPoses` | identifies the trial's scene in `LUMINOUS_ALFRED_DATA` and builds it (or puts a built one back) |
 | `MoveAhead`, `RotateLeft/Right`, `LookUp/Down`, `Teleport(Full)`, `Pass` | the World's (render flags dropped) |
 | `OpenObject`, `CloseObject`, `PickupObject`, `PutObject`, `ToggleObjectOn/Off`, `SliceObject` | the World's |
-| `CleanObject` | a dirty dirtyable object becomes clean (ALFRED sends it after switching a faucet on) |
+| `CleanObject` | a dirty dirtyable object, visible and within reach, becomes clean (ALFRED sends it after |
+| | switching a faucet on) |
 | `GetReachablePositions` | `metadata["reachablePositions"]` (and `actionReturn`): the agent's grid |
 
-A refused action gives `lastActionSuccess` false and an `errorMessage`, never an exception. The one
-exception is a scene that cannot be identified (`ThorSceneError`, one line): nothing can run without it.
+A refused action gives `lastActionSuccess` false and an `errorMessage`, never an exception: an unknown
+key, a value of the wrong type or out of its range, an object out of view or beyond `visibility_distance`
+(every interaction, whatever `forceAction` or `forceVisible` say: ALFRED's rule). The one exception is
+`ThorSceneError` (one line): a scene that cannot be identified (nothing can run without it), or a bad
+argument to `Controller(...)`, `start(...)` or `reset(...)` (a frame size outside 16..1024 pixels, a
+scene name that is not `FloorPlanN`), which ai2thor also raises for.
 """
 
 from __future__ import annotations
 
+import dataclasses
 import math
+import os
+import re
 from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
+from luminous_sim.env.config import IMAGE_SIZE
 from luminous_sim.errors import LuminousError
 from luminous_sim.thor.event import Event, object_color, object_name
-from luminous_sim.thor.scenes import SceneIndex, ThorSceneError, Trial
+from luminous_sim.thor.scenes import SceneIndex, ThorSceneError, Trial, one_line, poses_key
+from luminous_sim.world.arguments import number, shown
 
-RENDER_KEYS = frozenset({"renderImage", "renderDepthImage", "renderClassImage", "renderObjectImage",
-                         "renderNormalsImage", "tempRenderChange", "sequenceId", "agentId"})
-"""Keys ai2thor takes on any action that only say what to render (we always render everything)."""
+RENDER_FLAGS = frozenset({"renderImage", "renderDepthImage", "renderClassImage", "renderObjectImage",
+                          "renderNormalsImage", "tempRenderChange"})
+"""Flags ai2thor takes on any action that only say what to render (we always render everything): true or false."""
+RENDER_KEYS = RENDER_FLAGS | {"sequenceId", "agentId"}
+"""Keys ai2thor takes on any action and that change nothing here (`sequenceId` a count, `agentId` 0: one agent)."""
 SET_UP_ACTIONS = ("Initialize", "SetObjectToggles", "SetStateOfAllObjects", "SetObjectPoses")
 AGENT_Y = 0.9009995
 """THOR's agent height in ALFRED's records (`world.agent_metadata` says the same)."""
 GRID = 0.25
+CAMERA_Y = 0.75
+"""`Initialize`'s `cameraY`, ALFRED's (`CAMERA_HEIGHT_OFFSET`): the World's camera stands where it puts it."""
+FIELD_OF_VIEW = 60.0
+"""Degrees: the World's camera (`WorldConfig.fov`, and `metadata["fov"]`)."""
+VISIBILITY_DEFAULT = 1.5
+"""Metres: ALFRED's `VISIBILITY_DISTANCE`, the reach of every interaction until `Initialize` says otherwise."""
+MAX_VISIBILITY_DISTANCE = 5.0
+"""Metres: the largest `visibility_distance` taken (ALFRED's is 1.5, RoboTHOR's 1.0); beyond a few metres
+"within reach" would take in most of a room."""
+SCREEN_SIZE = IMAGE_SIZE
+"""Least and most pixels a side of the frame (`start(player_screen_width=..., player_screen_height=...)`):
+the environments' range (`env.config.IMAGE_SIZE`, 16..1024)."""
+QUALITY_SETTINGS = ("DONOTUSE", "High", "High WebGL", "Low", "Medium", "MediumCloseFitShadows", "Ultra",
+                    "Very High", "Very Low")
+"""ai2thor 2.1.0's render quality names (`Controller(quality=...)`; kept, not used: one renderer here)."""
+INITIALIZE_KEYS = frozenset({"action", "gridSize", "cameraY", "fieldOfView", "visibility_distance",
+                             "visibilityDistance", "makeAgentsVisible", "forceAction"}) | RENDER_KEYS
+"""The keys `Initialize` takes."""
+SET_UP_KEYS: dict[str, frozenset[str]] = {
+    "SetObjectToggles": frozenset({"action", "objectToggles", "forceAction"}) | RENDER_KEYS,
+    "SetStateOfAllObjects": frozenset({"action", "StateChange", "forceAction"}) | RENDER_KEYS,
+    "SetObjectPoses": frozenset({"action", "objectPoses", "forceAction", "placeStationary"}) | RENDER_KEYS,
+    "GetReachablePositions": frozenset({"action", "forceAction"}) | RENDER_KEYS,
+    "CleanObject": frozenset({"action", "objectId", "forceAction", "forceVisible", "coordinateObjectId",
+                              "coordinateReceptacleObjectId", "cleanObjectId"}) | RENDER_KEYS,
+}
+"""The keys each action the controller runs itself takes (the World checks its own actions' keys)."""
+STATE_CHANGES = ("CanBeDirty", "CanBeFilled", "CanBeUsedUp")
+"""`SetStateOfAllObjects`'s `StateChange` values modelled."""
+SCENE_NAME = re.compile(r"FloorPlan([1-9][0-9]{0,4})(_physics)?")
+"""The scene names `reset` takes: AI2-THOR's floor plans (ai2thor's `_physics` suffix is the same scene)."""
+
+
+def _is_bool(value: Any) -> bool:
+    return isinstance(value, bool | np.bool_)
+
+
+def _size(name: str, value: Any) -> int:
+    """A frame side given to `start`, checked: an int (not a bool) within `SCREEN_SIZE`."""
+    lo, hi = SCREEN_SIZE
+    n = number(value)
+    if not isinstance(n, int) or not lo <= n <= hi:
+        raise ThorSceneError(f"start: {name} must be a whole number of pixels in {lo}..{hi}, not {shown(value)}")
+    return n
 
 
 class Controller:
@@ -57,6 +115,12 @@ class Controller:
 
     def __init__(self, quality: str = "MediumCloseFitShadows", data: str | Path | list[str | Path] | None = None,
                  **kwargs: Any):
+        if not isinstance(quality, str) or quality not in QUALITY_SETTINGS:
+            raise ThorSceneError(f"Controller: quality must be one of ai2thor's {', '.join(QUALITY_SETTINGS)}, not "
+                                 f"{shown(quality)}")
+        if data is not None and not isinstance(data, str | os.PathLike) and not (
+                isinstance(data, list | tuple) and data and all(isinstance(d, str | os.PathLike) for d in data)):
+            raise ThorSceneError(f"Controller: data must be a dataset folder or a list of them, not {shown(data)}")
         self.quality = quality
         self.options = dict(kwargs)
         self.data = data
@@ -68,7 +132,7 @@ class Controller:
         self.trial: Trial | None = None
         self.world: Any = None
         self._world_scene: str | None = None
-        self._visibility = 1.5
+        self._visibility = VISIBILITY_DEFAULT
         self._toggles: list[dict[str, Any]] = []
         self._dirty = False
         self._names: dict[str, str] = {}
@@ -79,13 +143,39 @@ class Controller:
 
     def start(self, port: int = 0, start_unity: bool = True, player_screen_width: int = 300,
               player_screen_height: int = 300, x_display: str | None = None, **kwargs: Any) -> None:
-        """ai2thor starts Unity here; we only take the frame size (no display is needed)."""
-        self.width, self.height = int(player_screen_width), int(player_screen_height)
+        """ai2thor starts Unity here; we only take the frame size (no display is needed).
+
+        Raises:
+            ThorSceneError: a frame side that is not a whole number in 16..1024 (`SCREEN_SIZE`), an `x_display`
+                that is not a string, a `port` that is not one, `start_unity` not true or false.
+        """
+        width, height = _size("player_screen_width", player_screen_width), _size("player_screen_height",
+                                                                               player_screen_height)
+        if x_display is not None and not isinstance(x_display, str):
+            raise ThorSceneError(f"start: x_display must be a display name (a string), not {shown(x_display)}")
+        if not isinstance(number(port), int) or not 0 <= port <= 65535:
+            raise ThorSceneError(f"start: port must be a port number in 0..65535, not {shown(port)}")
+        if not _is_bool(start_unity):
+            raise ThorSceneError(f"start: start_unity must be true or false, not {shown(start_unity)}")
+        if self.world is not None and (width, height) != (self.width, self.height):
+            self.stop()  # its frames have the old size; the next SetObjectPoses builds the scene again
+        self.width, self.height = width, height
         self.x_display = x_display
 
     def reset(self, scene: str = "FloorPlan1", **kwargs: Any) -> Event:
-        """Name the floor plan; the scene itself is built when `SetObjectPoses` identifies the trial."""
-        self.scene_name = str(scene)
+        """Name the floor plan; the scene itself is built when `SetObjectPoses` identifies the trial.
+
+        Raises:
+            ThorSceneError: `scene` is not an AI2-THOR floor plan's name (`FloorPlanN`), or an argument that
+                ai2thor 2.1.0's `reset` does not take.
+        """
+        match = SCENE_NAME.fullmatch(scene) if isinstance(scene, str) else None
+        if match is None:
+            raise ThorSceneError(f"reset: the scene must be an AI2-THOR floor plan's name (FloorPlanN), not "
+                                 f"{shown(scene)}")
+        if kwargs:
+            raise ThorSceneError(f"reset takes only the scene name, not {', '.join(map(shown, sorted(kwargs)))}")
+        self.scene_name = f"FloorPlan{match.group(1)}"
         self.trial = None
         self._toggles, self._dirty = [], False
         self.last_event = self._blank_event({"action": "Reset"}, True, "")
@@ -114,33 +204,54 @@ class Controller:
             act = {"action": action, **kwargs}
         name = act.get("action")
         if not isinstance(name, str):
-            self.last_event = self._failed(act, f"an action needs an 'action' name, got {name!r}")
+            self.last_event = self._failed(act, f"an action needs an 'action' name, got {shown(name)}")
             return self.last_event
         try:
-            self.last_event = self._dispatch(name, act)
+            why = self._common_failure(name, act)
+            self.last_event = self._failed(act, why) if why else self._dispatch(name, act)
         except ThorSceneError:
             raise
-        except (KeyError, ValueError, TypeError, LuminousError) as exc:  # malformed arguments
-            self.last_event = self._failed(act, f"invalid arguments for {name}: {type(exc).__name__}: {exc}")
+        except (KeyError, ValueError, TypeError, ArithmeticError, LuminousError) as exc:  # malformed arguments
+            self.last_event = self._failed(act, f"invalid arguments for {name}: {type(exc).__name__}: "
+                                                f"{one_line(str(exc), 300)}")
         return self.last_event
+
+    @staticmethod
+    def _common_failure(name: str, act: dict[str, Any]) -> str | None:
+        """Why the keys every action may carry are not acceptable (render flags, `sequenceId`, `agentId`,
+        `forceAction`), or why a key is not one the controller's own action takes; None if they are fine."""
+        for key in RENDER_FLAGS | {"forceAction"}:
+            if key in act and not _is_bool(act[key]):
+                return f"{name}: {key} must be true or false, not {shown(act[key])}"
+        if "sequenceId" in act and (not isinstance(number(act["sequenceId"]), int) or act["sequenceId"] < 0):
+            return f"{name}: sequenceId must be a whole number >= 0, not {shown(act['sequenceId'])}"
+        if "agentId" in act and (not isinstance(number(act["agentId"]), int) or act["agentId"] != 0):
+            return f"{name}: agentId must be 0 (one agent), not {shown(act['agentId'])}"
+        accepted = INITIALIZE_KEYS if name == "Initialize" else SET_UP_KEYS.get(name)
+        if accepted is not None:
+            unknown = sorted(str(k) for k in act if k not in accepted)
+            if unknown:
+                return (f"{name} takes no {', '.join(map(shown, unknown))} (it takes "
+                        f"{', '.join(sorted(accepted))})")
+        return None
 
     def _dispatch(self, name: str, act: dict[str, Any]) -> Event:
         if name == "Initialize":
-            grid = act.get("gridSize", GRID)
-            if not math.isclose(float(grid), GRID):
-                return self._failed(act, f"Initialize: gridSize must be {GRID} (ALFRED's), not {grid}")
-            self._visibility = float(act.get("visibility_distance", act.get("visibilityDistance", self._visibility)))
-            return self._current(act)
+            return self._initialize(act)
         if name == "SetObjectToggles":
-            self._toggles = [dict(t) for t in act.get("objectToggles") or []]
+            toggles = act.get("objectToggles")
+            why = _toggles_failure(toggles)
+            if why:
+                return self._failed(act, f"SetObjectToggles: {why}")
+            self._toggles = [dict(t) for t in toggles or []]
             return self._check_toggles(act) if self.trial is not None else self._current(act)
         if name == "SetStateOfAllObjects":
             change = act.get("StateChange")
+            if not isinstance(change, str) or change not in STATE_CHANGES:
+                return self._failed(act, f"SetStateOfAllObjects: StateChange {shown(change)} is not modelled "
+                                         f"({', '.join(STATE_CHANGES)} are)")
             if change == "CanBeDirty":
                 self._dirty = True
-            elif change not in ("CanBeFilled", "CanBeUsedUp"):
-                return self._failed(act, f"SetStateOfAllObjects: StateChange {change!r} is not modelled "
-                                         "(CanBeDirty and CanBeFilled are)")
             return self._current(act)
         if name == "SetObjectPoses":
             return self._load(act)
@@ -156,17 +267,60 @@ class Controller:
         result = self.world.step(world_act)
         return self._event(act, result.success, result.error)
 
+    def _initialize(self, act: dict[str, Any]) -> Event:
+        """`Initialize`: every value checked before any is taken (a refusal changes nothing)."""
+        fixed = (("gridSize", GRID, "ALFRED's; the agent moves on a 0.25 m grid"),
+                 ("cameraY", CAMERA_Y, "ALFRED's; the World's camera height is fixed"),
+                 ("fieldOfView", FIELD_OF_VIEW, "the World's camera"))
+        for key, only, why in fixed:
+            if key in act:
+                value = number(act[key])
+                if value is None or not math.isclose(value, only, abs_tol=1e-6):
+                    return self._failed(act, f"Initialize: {key} must be {only:g} ({why}), not {shown(act[key])}")
+        given = [k for k in ("visibility_distance", "visibilityDistance") if k in act]
+        visibility = self._visibility
+        for key in given:
+            value = number(act[key])
+            if value is None or not 0.0 < value <= MAX_VISIBILITY_DISTANCE:
+                return self._failed(act, f"Initialize: {key} must be a number of metres in (0, "
+                                         f"{MAX_VISIBILITY_DISTANCE:g}] (ALFRED's is {VISIBILITY_DEFAULT}), not "
+                                         f"{shown(act[key])}")
+            visibility = float(value)
+        if len(given) == 2 and not math.isclose(float(act[given[0]]), float(act[given[1]])):
+            return self._failed(act, f"Initialize: visibility_distance {shown(act[given[0]])} and visibilityDistance "
+                                     f"{shown(act[given[1]])} differ")
+        if "makeAgentsVisible" in act and not _is_bool(act["makeAgentsVisible"]):
+            return self._failed(act, f"Initialize: makeAgentsVisible must be true or false, not "
+                                     f"{shown(act['makeAgentsVisible'])}")
+        self._visibility = visibility
+        self._apply_visibility()
+        return self._current(act)
+
+    def _apply_visibility(self) -> None:
+        """Give the built World (if any) the recorded visibility distance, the reach of every interaction."""
+        world = self.world
+        if world is not None and world.config.visibility_distance != self._visibility:
+            world.config = dataclasses.replace(world.config, visibility_distance=self._visibility)
+            world.invalidate_frame()  # what is visible depends on it
+
     # ------------------------------------------------------------------ set-up
 
     def _load(self, act: dict[str, Any]) -> Event:
         if not self.scene_name:
             return self._failed(act, "SetObjectPoses: reset(scene_name) first")
+        poses: Any = act.get("objectPoses")
+        try:
+            poses_key(poses)
+        except ValueError as exc:
+            return self._failed(act, f"SetObjectPoses: {exc}")
         index = SceneIndex.of(self.data)
-        trial = index.find(self.scene_name, act.get("objectPoses") or [])
+        trial = index.find(self.scene_name, poses)
         scene = trial.scene()
         digest = scene.to_json()
         world = self.world
-        if world is None or self._world_scene != digest or not world.reset_to_start():
+        size = (self.width, self.height)
+        if world is None or self._world_scene != digest or (world.config.width, world.config.height) != size \
+                or not world.reset_to_start():
             from luminous_sim.world import World, WorldConfig
 
             if world is not None:
@@ -174,6 +328,7 @@ class Controller:
             world = World(scene, WorldConfig(width=self.width, height=self.height,
                                              visibility_distance=self._visibility))
             self.world, self._world_scene = world, digest
+        self._apply_visibility()
         self.trial = trial
         if self._dirty:
             from luminous_sim.vocab import abilities
@@ -189,7 +344,7 @@ class Controller:
     def _check_toggles(self, act: dict[str, Any]) -> Event:
         states = self.world.view().state.objects
         for t in self._toggles:
-            kind, on = t.get("objectType"), bool(t.get("isOn"))
+            kind, on = t["objectType"], bool(t["isOn"])
             wrong = sorted(oid for oid, st in states.items() if st.object_type == kind and st.isToggled != on)
             if wrong:
                 return self._failed(act, f"SetObjectToggles: {', '.join(wrong)} start {'off' if on else 'on'} in this "
@@ -197,12 +352,23 @@ class Controller:
         return self._current(act)
 
     def _clean(self, act: dict[str, Any]) -> Event:
+        """`CleanObject`: ALFRED's rule, as for every interaction: the object visible and within reach."""
         from luminous_sim.vocab import abilities
+        from luminous_sim.world.reach import reach_failure
 
         oid = act.get("objectId")
-        states = self.world.view().state.objects
+        if "forceVisible" in act and not _is_bool(act["forceVisible"]):
+            return self._failed(act, "CleanObject: forceVisible must be true or false, not "
+                                     f"{shown(act['forceVisible'])}")
+        if not isinstance(oid, str) or not oid:
+            return self._failed(act, f"CleanObject needs an objectId (a string), not {shown(oid)}")
+        state = self.world.view().state
+        states = state.objects
         if oid not in states:
-            return self._failed(act, f"CleanObject: object ID appears to be invalid: {oid!r}")
+            return self._failed(act, f"CleanObject: object ID appears to be invalid: {shown(oid)}")
+        why = reach_failure(self.world, state, oid)
+        if why is not None:
+            return self._failed(act, f"CleanObject: {why.message}")
         if not abilities(states[oid].object_type).dirtyable:
             return self._failed(act, f"CleanObject: {oid} is not dirtyable")
         self.world.interactions.set_dirty(oid, False)
@@ -287,3 +453,16 @@ class Controller:
         if oid not in self._colors:
             self._colors[oid] = object_color(oid, set(self._colors.values()))
         return self._colors[oid]
+
+
+def _toggles_failure(toggles: Any) -> str | None:
+    """Why `SetObjectToggles`'s `objectToggles` is not a list of {objectType: str, isOn: bool}, or None."""
+    if toggles is None:
+        return None
+    if not isinstance(toggles, list | tuple):
+        return f"objectToggles must be a list of {{objectType, isOn}}, not {shown(toggles)}"
+    for i, t in enumerate(toggles):
+        if not isinstance(t, Mapping) or set(t) != {"objectType", "isOn"} or not isinstance(t["objectType"], str) \
+                or not _is_bool(t["isOn"]):
+            return f"objectToggles[{i}] must be {{objectType: a type name, isOn: true or false}}, not {shown(t)}"
+    return None

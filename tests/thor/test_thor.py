@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import json
 import os
+import shutil
 import subprocess
 import sys
 from collections import Counter
@@ -286,3 +287,237 @@ def test_alfred_judges_a_from_alfred_sample(alfred: Path, tmp_path: Path):
     print(report.summary())
     assert report.built >= 1
     _sweep(tmp_path / "built", alfred, tmp_path / "rows.jsonl")
+
+
+# ------------------------------------------------------------------------------ hostile input (each refused)
+
+
+@pytest.mark.parametrize("size", [0, -1, 15, 1025, 10**6, 1.5, True, "300", None])
+def test_start_refuses_a_bad_frame_size_with_a_scene_error(size: Any):
+    for kw in ({"player_screen_width": size}, {"player_screen_height": size}):
+        with pytest.raises(ThorSceneError, match=r"16\.\.1024") as info:
+            Controller().start(**kw)
+        assert "\n" not in str(info.value)
+
+
+@pytest.mark.parametrize("make", [
+    lambda: Controller(quality="Bogus"), lambda: Controller(quality=5), lambda: Controller(data=5),
+    lambda: Controller().start(x_display=5), lambda: Controller().start(port="x"),
+    lambda: Controller().start(start_unity="no"), lambda: Controller().reset(None), lambda: Controller().reset(8),
+    lambda: Controller().reset("Garbage"), lambda: Controller().reset("FloorPlan1", seed=3),
+], ids=["quality", "quality-type", "data", "x_display", "port", "start_unity", "reset-None", "reset-int",
+        "reset-name", "reset-kwargs"])
+def test_constructor_start_and_reset_refuse_bad_arguments_with_a_scene_error(make: Any):
+    with pytest.raises(ThorSceneError):
+        make()
+
+
+def test_reset_takes_ai2thors_physics_suffix():
+    c = Controller()
+    assert c.reset("FloorPlan12_physics").metadata["lastActionSuccess"]
+    assert c.scene_name == "FloorPlan12"
+
+
+BAD_INITIALIZE = [
+    ("gridSize", "0.25"), ("gridSize", float("nan")), ("cameraY", 1.0), ("cameraY", float("nan")),
+    ("fieldOfView", 90), ("fieldOfView", 0), ("visibility_distance", float("nan")), ("visibility_distance", -1),
+    ("visibility_distance", 0), ("visibility_distance", float("inf")), ("visibility_distance", 100),
+    ("visibility_distance", "1.5"), ("visibility_distance", True), ("visibilityDistance", float("nan")),
+    ("visibilityDistance", -1.0), ("visibilityDistance", float("inf")), ("renderDepthImage", "yes"),
+    ("renderObjectImage", 1), ("renderImage", None), ("makeAgentsVisible", "no"), ("sequenceId", -1),
+    ("agentId", 1), ("bogusKey", 1),
+]
+
+
+@pytest.mark.parametrize(("key", "value"), BAD_INITIALIZE, ids=[f"{k}={v!r}" for k, v in BAD_INITIALIZE])
+def test_initialize_refuses_a_bad_value_with_a_failed_event(key: str, value: Any):
+    c = Controller()
+    c.reset("FloorPlan8")
+    event = c.step({"action": "Initialize", "gridSize": 0.25, key: value})
+    _refused(event)
+    assert key in event.metadata["errorMessage"]
+    assert c._visibility == 1.5  # a refused Initialize takes none of its values
+
+
+def test_initialize_takes_alfreds_values_and_a_visibility_in_range():
+    c = Controller()
+    c.reset("FloorPlan8")
+    ok = c.step(dict(action="Initialize", gridSize=0.25, cameraY=0.75, fieldOfView=60, renderImage=True,
+                     renderDepthImage=True, renderClassImage=True, renderObjectImage=True, visibility_distance=1.5,
+                     makeAgentsVisible=False))
+    assert ok.metadata["lastActionSuccess"], ok.metadata["errorMessage"]
+    assert c.step(dict(action="Initialize", visibilityDistance=1.0)).metadata["lastActionSuccess"]
+    assert c._visibility == 1.0
+    _refused(c.step(dict(action="Initialize", visibility_distance=1.0, visibilityDistance=1.5)))
+
+
+def test_initialize_visibility_reaches_a_loaded_world(controller: Controller):
+    assert controller.world.config.visibility_distance == 1.5
+    near = [o for o in controller.last_event.metadata["objects"] if o["pickupable"] and 0.6 < o["distance"] <= 1.5]
+    assert controller.step(dict(action="Initialize", visibility_distance=0.5)).metadata["lastActionSuccess"]
+    assert controller.world.config.visibility_distance == 0.5
+    for o in near:
+        refused = controller.step(dict(action="PickupObject", objectId=o["objectId"]))
+        _refused(refused)
+    controller.step(dict(action="Initialize", visibility_distance=1.5))
+    assert controller.world.config.visibility_distance == 1.5
+
+
+REACH_ACTIONS = {"PickupObject": "pickupable", "OpenObject": "openable", "CloseObject": "openable",
+                 "ToggleObjectOn": "toggleable", "ToggleObjectOff": "toggleable", "CleanObject": "objectId"}
+
+
+@pytest.mark.parametrize("force", [{}, {"forceAction": True}, {"forceVisible": True}], ids=["plain", "forceAction",
+                                                                                            "forceVisible"])
+def test_every_interaction_keeps_alfreds_reach_rule(controller: Controller, trial: dict[str, Any],
+                                                    force: dict[str, bool]):
+    objects = controller.last_event.metadata["objects"]
+    for name, flag in REACH_ACTIONS.items():
+        far = max((o for o in objects if o.get(flag)), key=lambda o: o["distance"])
+        assert far["distance"] > 1.5
+        refused = controller.step(dict(action=name, objectId=far["objectId"], **force))
+        _refused(refused)
+        assert "too far away" in refused.metadata["errorMessage"], (name, refused.metadata["errorMessage"])
+    for step in trial["plan"]["low_actions"]:  # hold the trial's object, then put it somewhere far
+        assert controller.step(dict(step["api_action"])).metadata["lastActionSuccess"]
+        if step["api_action"]["action"] == "PickupObject":
+            break
+    held = controller.last_event.metadata["inventoryObjects"][0]["objectId"]
+    far = max((o for o in controller.last_event.metadata["objects"] if o["receptacle"]), key=lambda o: o["distance"])
+    refused = controller.step(dict(action="PutObject", objectId=held, receptacleObjectId=far["objectId"],
+                                   placeStationary=True, **force))
+    assert "too far away" in refused.metadata["errorMessage"], refused.metadata["errorMessage"]
+
+
+@pytest.fixture(scope="module")
+def clean_trial(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict[str, Any]]:
+    """S+ episode 10 (pick_clean_then_place_in_recep: a Mug washed in the sink), built without frames."""
+    data = _build_split(tmp_path_factory.mktemp("thor") / "clean", "S+", 1, start=10)
+    (path,) = sorted(data.glob("*/*/*/traj_data.json"))
+    return data, json.loads(path.read_text())
+
+
+def test_clean_object_keeps_alfreds_reach_rule(clean_trial: tuple[Path, dict[str, Any]]):
+    data, traj = clean_trial
+    scene = traj["scene"]
+    c = Controller(data=data)
+    c.start(player_screen_width=300, player_screen_height=300)
+    c.reset(scene["floor_plan"])
+    c.step(dict(action="Initialize", gridSize=0.25, cameraY=0.75, visibility_distance=1.5))
+    c.step(dict(action="SetStateOfAllObjects", StateChange="CanBeDirty", forceAction=True))
+    assert c.step(dict(action="SetObjectPoses", objectPoses=scene["object_poses"])).metadata["lastActionSuccess"]
+    c.step(dict(scene["init_action"]))
+    dirty = [o for o in c.last_event.metadata["objects"] if o["dirtyable"] and o["isDirty"]]
+    far = max(dirty, key=lambda o: o["distance"])
+    hidden = [o for o in dirty if not o["visible"] and o["distance"] <= 1.5]
+    assert far["distance"] > 1.5 and hidden
+    for force in ({}, {"forceAction": True}, {"forceVisible": True}):
+        refused = c.step(dict(action="CleanObject", objectId=far["objectId"], **force))
+        assert "too far away" in refused.metadata["errorMessage"], refused.metadata["errorMessage"]
+        refused = c.step(dict(action="CleanObject", objectId=hidden[0]["objectId"], **force))
+        assert "not visible" in refused.metadata["errorMessage"], refused.metadata["errorMessage"]
+    assert c.step(dict(action="CleanObject", objectId="Mug|x", forceVisible="yes")).metadata["lastActionSuccess"] \
+        is False
+    put = None
+    for step in traj["plan"]["low_actions"]:  # ALFRED's own use: the object put in the sink, in view
+        act = step["api_action"]
+        assert c.step(dict(act)).metadata["lastActionSuccess"]
+        put = act["objectId"] if act["action"] == "PutObject" else put
+        if act["action"] == "ToggleObjectOn":
+            break
+    basin = [o for o in c.last_event.metadata["objects"] if o["objectType"] == "SinkBasin" and put in
+             o["receptacleObjectIds"]]
+    assert basin and c.last_event.get_object(put)["visible"]
+    ok = c.step(dict(action="CleanObject", objectId=put))
+    assert ok.metadata["lastActionSuccess"], ok.metadata["errorMessage"]
+    c.stop()
+
+
+def test_set_up_and_common_keys_are_checked_not_taken(controller: Controller):
+    pose = controller.last_event.pose
+    huge = [{"objectName": "A", "position": {"x": 10**400, "y": 0, "z": 0}}]
+    for act in (dict(action="SetObjectPoses", objectPoses=huge), dict(action="SetObjectPoses", objectPoses=5),
+                dict(action="SetObjectPoses", objectPoses=[5]),
+                dict(action="SetObjectToggles", objectToggles=[{"objectType": "FloorLamp", "isOn": "false"}]),
+                dict(action="SetObjectToggles", objectToggles=5),
+                dict(action="SetStateOfAllObjects", StateChange=["x"]),
+                dict(action="SetStateOfAllObjects", StateChange="CanBeDirty", forceAction="yes"),
+                dict(action="GetReachablePositions", gridSize=0.1), dict(action="MoveAhead", renderImage="yes"),
+                dict(action="RotateLeft", agentId=3), dict(action="CleanObject", objectId=["x"])):
+        refused = controller.step(act)
+        _refused(refused)
+        assert refused.pose == pose
+
+
+# ------------------------------------------------------------------ the scene index's files (each refused)
+
+
+def _trial_copy(splus1: Path, root: Path) -> tuple[Path, Path]:
+    """A copy of the built trial under `root/S+/task/trial`, and a folder beside `root` with another copy."""
+    (src,) = sorted(splus1.glob("*/*/*/traj_data.json"))
+    trial, outside = root / "S+" / "task" / "trial", root.parent / "outside"
+    for folder in (trial, outside):
+        folder.mkdir(parents=True)
+        for name in ("traj_data.json", "luminous.json"):
+            shutil.copy(src.parent / name, folder / name)
+    return trial, outside
+
+
+def _fault(case: str, trial: Path, outside: Path) -> str:
+    """Make the fault `case` in `trial`; the words its refusal says."""
+    traj, sidecar = trial / "traj_data.json", trial / "luminous.json"
+    if case in ("fifo", "sidecar-fifo"):
+        target = traj if case == "fifo" else sidecar
+        target.unlink()
+        os.mkfifo(target)
+        return "FIFO"
+    if case in ("dev-zero", "link-outside", "sidecar-link-outside"):
+        target = sidecar if case.startswith("sidecar") else traj
+        target.unlink()
+        os.symlink("/dev/zero" if case == "dev-zero" else outside / target.name, target)
+        return "symbolic link"
+    if case == "oversized":
+        traj.write_text('{"pad": "' + "x" * 2000 + '"}')
+        return "MAX_INPUT_BYTES"
+    if case == "deep":
+        traj.write_text("[" * 100_000 + "]" * 100_000)
+        return "nested too deeply"
+    if case == "folder-link":
+        shutil.rmtree(trial)
+        os.symlink(outside, trial)
+        return "not walked"
+    if case == "not-a-trial":
+        traj.write_text(json.dumps({"scene": {"floor_plan": 8, "object_poses": [1]}}))
+        return "not a trial"
+    raise AssertionError(case)
+
+
+FAULTS = ["fifo", "sidecar-fifo", "dev-zero", "link-outside", "sidecar-link-outside", "oversized", "deep",
+          "folder-link", "not-a-trial"]
+
+
+@pytest.mark.timeout(120)
+@pytest.mark.parametrize("case", FAULTS)
+def test_scene_index_refuses_special_linked_oversized_and_malformed_files(case: str, splus1: Path, tmp_path: Path,
+                                                                         trial: dict[str, Any],
+                                                                         monkeypatch: pytest.MonkeyPatch):
+    import luminous_sim.thor.scenes as scenes
+
+    if case == "oversized":
+        monkeypatch.setattr(scenes, "MAX_INPUT_BYTES", 1000)  # the limit is named in the refusal
+    root = tmp_path / "data"
+    words = _fault(case, *_trial_copy(splus1, root))
+    index = SceneIndex([root])
+    assert index.size() == 0
+    assert len(index.refused) == 1 and words in index.refused[0], index.refused
+    with pytest.raises(ThorSceneError, match=words) as info:
+        index.find(trial["scene"]["floor_plan"], trial["scene"]["object_poses"])
+    assert "\n" not in str(info.value)
+
+
+def test_scene_index_reads_a_trial_within_the_limit(splus1: Path, tmp_path: Path, trial: dict[str, Any]):
+    root = tmp_path / "data"
+    _trial_copy(splus1, root)
+    index = SceneIndex([root])
+    assert index.size() == 1 and not index.refused
+    assert index.find(trial["scene"]["floor_plan"], trial["scene"]["object_poses"]).scene().room.name
