@@ -15,7 +15,8 @@ def register(sub: argparse._SubParsersAction) -> None:
 
     build = cmds.add_parser("build", help="regenerate the asset library deterministically")
     build.add_argument("--types", nargs="*", help="only these object types (default: all)")
-    build.add_argument("--out", type=output_dir, help="library folder (default: the library in use, the shipped one unless LUMINOUS_ASSETS "
+    build.add_argument("--out", type=output_dir,
+                       help="library folder (default: the library in use, the shipped one unless LUMINOUS_ASSETS "
                        "names another; a rebuild changes its digest: see `luminous assets digest`)")
     build.add_argument("--jobs", type=limited(1, "MAX_WORKERS"), default=2, help="worker processes (default 2)")
     build.set_defaults(func=_build)
