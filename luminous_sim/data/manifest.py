@@ -24,7 +24,7 @@ from pathlib import Path
 from typing import Any
 
 from luminous_sim.assets.objio import write_atomic
-from luminous_sim.errors import LuminousError, link_or_kind
+from luminous_sim.errors import LuminousError, read_file_bytes
 
 Record = dict[str, Any]
 STATUSES = ("built", "failed")
@@ -67,16 +67,13 @@ class Manifest:
         self.rejected: list[str] = []
         """With `repair`: why each line left out was refused (file, line, field)."""
         self._repair = repair
+        self._torn_at: int | None = None
+        """Where a last line cut short by a kill starts (None: the file ends with a whole line)."""
         if self.path.exists() or self.path.is_symlink():
             self._load()
 
     def _load(self) -> None:
-        if self.path.is_symlink() or not self.path.is_file():
-            raise ManifestError(f"{self.path}: {link_or_kind(self.path)}; expected the build's manifest")
-        size = self.path.stat().st_size
-        if size > MAX_BYTES:
-            raise ManifestError(f"{self.path}: {size} bytes; a manifest may hold at most {MAX_BYTES}")
-        raw = self.path.read_bytes()
+        raw = read_file_bytes(self.path, MAX_BYTES, "the build's manifest", ManifestError)
         *complete, tail = raw.split(b"\n")  # `tail`: bytes after the last newline (a line cut short)
         twice: set[str] = set()
         for number, line in enumerate(complete, 1):
@@ -99,11 +96,8 @@ class Manifest:
             self._records.pop(key, None)
         if self.rejected:
             write_atomic(self.path, "".join(_line(r) for r in self._records.values()))
-        elif tail:  # drop it so that the next append starts a fresh line
-            with open(self.path, "r+b") as fh:
-                fh.truncate(len(raw) - len(tail))
-                fh.flush()
-                os.fsync(fh.fileno())
+        elif tail:  # the next append drops it first, to start a fresh line (a reader alone never writes)
+            self._torn_at = len(raw) - len(tail)
 
     def _add(self, record: Record, where: str) -> None:
         check_record(record, where)
@@ -128,6 +122,12 @@ class Manifest:
         """Add a finished job's record and make it durable (written, flushed and fsync'd) before returning."""
         self._add(record, str(self.path))
         self.path.parent.mkdir(parents=True, exist_ok=True)
+        if self._torn_at is not None:
+            with open(self.path, "r+b") as fh:
+                fh.truncate(self._torn_at)
+                fh.flush()
+                os.fsync(fh.fileno())
+            self._torn_at = None
         with open(self.path, "ab") as fh:
             fh.write(_line(record).encode())
             fh.flush()
@@ -140,10 +140,12 @@ class Manifest:
         for key in keys:
             self._records.pop(key, None)
         write_atomic(self.path, "".join(_line(r) for r in self._records.values()))
+        self._torn_at = None
 
     def sorted_rewrite(self, order: Callable[[Record], Any]) -> None:
         """Replace the file with the records sorted by `order` (atomically)."""
         write_atomic(self.path, "".join(_line(r) for r in sorted(self._records.values(), key=order)))
+        self._torn_at = None
 
 
 def _checked(record: object, where: str) -> Record:

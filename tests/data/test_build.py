@@ -368,3 +368,12 @@ def test_a_trial_is_synced_once_by_syncfs_or_file_by_file_without_it(tmp_path, m
     monkeypatch.setattr(build_module, "_syncfs", lambda: None)
     build_module._fsync_tree(trial)
     assert len(fsyncs) == 10
+
+
+def test_reading_a_manifest_never_writes_it(tmp_path):
+    """`luminous eval --data` reads a user's manifest: a torn last line is left as it is until a build appends."""
+    path = tmp_path / MANIFEST
+    path.write_text(_line(_failed("a")) + '{"key": "b", "sta')
+    before = path.read_bytes()
+    assert len(Manifest(path)) == 1
+    assert path.read_bytes() == before

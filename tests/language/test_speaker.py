@@ -565,3 +565,24 @@ def test_a_file_that_is_not_a_checkpoint_is_a_speaker_error(tmp_path, content):
     path.write_bytes(content)
     with pytest.raises(SpeakerError, match="model.pt"):
         load_checkpoint(path)
+
+
+def test_a_frame_name_never_leaves_raw_images_and_special_files_are_refused(tmp_path):
+    """An `images` entry names a file inside raw_images/ (its stem only); a link or a FIFO there is refused, not
+    followed or read (a FIFO would block)."""
+    import os
+
+    (tmp_path / "raw_images").mkdir()
+    outside = tmp_path / "secret.png"
+    outside.write_bytes(b"not an image")
+    from luminous_sim.language.speaker.features import _frame_file
+
+    assert _frame_file(tmp_path / "raw_images", "../secret.png") is None  # only the stem, inside raw_images/
+    (tmp_path / "raw_images" / "secret.png").write_bytes(b"x")
+    assert _frame_file(tmp_path / "raw_images", "../secret.png") == tmp_path / "raw_images" / "secret.png"
+    (tmp_path / "raw_images" / "000000000.png").symlink_to(outside)
+    with pytest.raises(SpeakerError, match="a symbolic link"):
+        load_step_features(tmp_path, [{"image_name": "000000000.jpg", "low_idx": 0}], 1)
+    os.mkfifo(tmp_path / "raw_images" / "000000001.jpg")
+    with pytest.raises(SpeakerError, match="FIFO"):
+        load_step_features(tmp_path, [{"image_name": "000000001.jpg", "low_idx": 0}], 1)

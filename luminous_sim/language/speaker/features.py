@@ -52,11 +52,27 @@ def frame_features(frames: np.ndarray) -> np.ndarray:
 
 
 def _frame_file(image_dir: Path, image_name: str) -> Path | None:
-    stem = Path(image_name).stem
+    """The frame an `images` entry names, inside `image_dir` (only the name's stem is used, never a path).
+
+    Raises:
+        SpeakerError: the file there is a link, not a regular file (a FIFO, a device) or over MAX_INPUT_BYTES.
+    """
+    import os
+
+    from luminous_sim.errors import link_or_kind
+    from luminous_sim.limits import MAX_INPUT_BYTES
+
+    stem = Path(str(image_name)).stem
     for ext in (".jpg", ".png", ".jpeg"):
         candidate = image_dir / f"{stem}{ext}"
-        if candidate.exists():
-            return candidate
+        if not (candidate.exists() or candidate.is_symlink()):
+            continue
+        if candidate.is_symlink() or not candidate.is_file():
+            raise SpeakerError(f"{candidate}: {link_or_kind(candidate)}; expected a frame (a regular image file)")
+        if os.stat(candidate).st_size > MAX_INPUT_BYTES:
+            raise SpeakerError(f"{candidate}: over {MAX_INPUT_BYTES} bytes (luminous_sim.limits.MAX_INPUT_BYTES); "
+                               "expected a frame")
+        return candidate
     return None
 
 
