@@ -174,24 +174,82 @@ def link_or_kind(path: str | os.PathLike[str]) -> str:
     return "a symbolic link" if os.path.islink(path) else path_kind(path)
 
 
-def read_json_file(path: str | os.PathLike[str], limit: int, what: str,
-                   error: type[LuminousError] = LuminousError) -> Any:
-    """The JSON value of the regular file `path` (never followed through a link) of at most `limit` bytes.
+def read_file_bytes(path: str | os.PathLike[str], limit: int, what: str,
+                    error: type[LuminousError] = LuminousError) -> bytes:
+    """The bytes of the regular file `path` (never followed through a link) of at most `limit` bytes.
+
+    What `path` is, is checked before it is opened (`os.lstat`: a FIFO would block, a device could be endless),
+    and again on the open descriptor (opened without following a link and without blocking), so that a file
+    swapped in between is refused too; at most `limit` + 1 bytes are read.
 
     Raises:
-        error: a link, not a regular file, over `limit` bytes, or not JSON; the message names the file and
-            says it was expected to be `what` (e.g. "an episode outcome file").
+        error: missing, a link, not a regular file (a folder, a FIFO, a device, a socket) or over `limit` bytes;
+            the message names the file and says it was expected to be `what`.
+    """
+    import errno
+
+    def refused(kind: str) -> LuminousError:
+        return error(f"{path}: {kind}; expected {what}")
+
+    def not_a_file(mode: int) -> LuminousError | None:
+        if stat.S_ISLNK(mode):
+            return refused("a symbolic link")
+        return None if stat.S_ISREG(mode) else refused(mode_kind(mode))
+
+    def too_big() -> LuminousError:
+        return error(f"{path}: over {limit} bytes; expected {what}")
+
+    try:
+        before = os.lstat(path)
+    except FileNotFoundError:
+        raise refused("no such file or folder") from None
+    except OSError as exc:
+        raise refused(f"cannot read ({exc.strerror or exc})") from None
+    problem = not_a_file(before.st_mode) or (too_big() if before.st_size > limit else None)
+    if problem is not None:
+        raise problem
+    flags = os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0)
+    try:
+        fd = os.open(path, flags)
+    except OSError as exc:
+        if exc.errno == errno.ELOOP:
+            raise refused("a symbolic link") from None
+        raise refused("no such file or folder" if isinstance(exc, FileNotFoundError)
+                      else f"cannot read ({exc.strerror or exc})") from None
+    with os.fdopen(fd, "rb") as fh:
+        opened = os.fstat(fh.fileno())
+        problem = not_a_file(opened.st_mode) or (too_big() if opened.st_size > limit else None)
+        if problem is not None:
+            raise problem
+        try:
+            raw = fh.read(limit + 1)
+        except OSError as exc:
+            raise refused(f"cannot read ({exc.strerror or exc})") from None
+    if len(raw) > limit:  # it grew after the checks
+        raise too_big()
+    return raw
+
+
+def read_json_file(path: str | os.PathLike[str], limit: int, what: str,
+                   error: type[LuminousError] = LuminousError) -> Any:
+    """The JSON value of the regular file `path` (read by `read_file_bytes`: never through a link, never a FIFO or
+    a device, at most `limit` bytes). Standard JSON only: `NaN` and `Infinity` are refused, and so is a document
+    nested too deeply for the parser.
+
+    Raises:
+        error: see `read_file_bytes`; not JSON or nested too deeply; the message names the file and says it was
+            expected to be `what` (e.g. "an episode outcome file (luminous_sim.limits.MAX_EPISODE_FILE_BYTES)").
     """
     import json
 
-    if os.path.islink(path) or not os.path.isfile(path):
-        raise error(f"{path}: {link_or_kind(path)}; expected {what}")
-    size = os.stat(path).st_size
-    if size > limit:
-        raise error(f"{path}: {size} bytes; {what} holds at most {limit}")
-    with open(path, "rb") as fh:
-        raw = fh.read(limit + 1)
+    raw = read_file_bytes(path, limit, what, error)
     try:
-        return json.loads(raw)
-    except (ValueError, RecursionError) as exc:
-        raise error(f"{path}: not JSON ({exc})") from None
+        return json.loads(raw, parse_constant=_not_a_json_number)
+    except RecursionError:
+        raise error(f"{path}: not JSON (nested too deeply for the parser); expected {what}") from None
+    except ValueError as exc:
+        raise error(f"{path}: not JSON ({exc}); expected {what}") from None
+
+
+def _not_a_json_number(name: str) -> Any:
+    raise ValueError(f"{name} is not a JSON number")

@@ -179,3 +179,55 @@ def test_checkpoints_over_the_limit_are_refused_before_loading(tmp_path):
 
     with pytest.raises(LuminousError, match=r"big\.pt: .* bytes; .*MAX_CHECKPOINT_BYTES"):
         load_checkpoint(big)
+
+
+JSON_CASES = {
+    "fifo": (lambda p: os.mkfifo(p), "a FIFO (named pipe)"),
+    "link to /dev/zero": (lambda p: os.symlink("/dev/zero", p), "a symbolic link"),
+    "link to a good file": (lambda p: (p.with_name("good.json").write_text("{}"), os.symlink(p.with_name("good.json"),
+                                                                                              p)), "a symbolic link"),
+    "folder": (lambda p: p.mkdir(), "a folder"),
+    "missing": (lambda p: None, "no such file or folder"),
+    "over the limit": (lambda p: os.truncate(p.write_bytes(b"") or p, 1001), "over 1000 bytes"),
+    "nested": (lambda p: p.write_text("[" * 100_000 + "]" * 100_000), "not JSON (nested too deeply for the parser)"),
+    "NaN": (lambda p: p.write_text('{"x": NaN}'), "not JSON (NaN is not a JSON number)"),
+    "Infinity": (lambda p: p.write_text("[-Infinity]"), "not JSON (-Infinity is not a JSON number)"),
+    "not UTF-8": (lambda p: p.write_bytes(b'"\xff"'), "not JSON ("),
+    "truncated": (lambda p: p.write_text('{"a": [1,'), "not JSON ("),
+}
+
+
+@pytest.mark.parametrize("case", list(JSON_CASES))
+def test_read_json_file_refuses_before_reading_and_names_the_limit(case: str, tmp_path: Path) -> None:
+    """`errors.read_json_file`, which every reader of a user's JSON file goes through: what the path is is checked
+    before it is opened (a FIFO would block, /dev/zero is endless), at most limit + 1 bytes are read, the size
+    message names the limit, and nesting too deep for the parser is a message, not a RecursionError."""
+    from luminous_sim.errors import LuminousError, read_json_file
+
+    class Mine(LuminousError):
+        pass
+
+    make, says = JSON_CASES[case]
+    path = tmp_path / "x.json"
+    make(path)
+    with pytest.raises(Mine) as err:
+        read_json_file(path, 1000 if case == "over the limit" else 1 << 20, "a test file (luminous_sim.limits.X)",
+                       Mine)
+    text = str(err.value)
+    assert text.startswith(f"{path}: {says}") and text.endswith("expected a test file (luminous_sim.limits.X)"), text
+    assert "\n" not in text
+
+
+def test_read_json_file_reads_a_small_regular_file(tmp_path: Path) -> None:
+    from luminous_sim.errors import read_json_file
+
+    path = tmp_path / "x.json"
+    path.write_text('{"a": [1, 2.5, "b", null, true]}')
+    assert read_json_file(path, path.stat().st_size, "x") == {"a": [1, 2.5, "b", None, True]}
+
+
+def test_read_json_file_refuses_a_device_without_reading_it() -> None:
+    from luminous_sim.errors import LuminousError, read_json_file
+
+    with pytest.raises(LuminousError, match=r"^/dev/zero: a device; expected x$"):
+        read_json_file("/dev/zero", 1 << 20, "x")
