@@ -277,6 +277,7 @@ def _write(out: Path, scene: Scene, task, traj: Trajectory, text, start: AgentPo
         "init_action": traj.init_action, "plan": {"high_pddl": traj.high_pddl, "low_actions": traj.low_actions},
         "images": traj.images, "success": traj.success, "goal_conditions": list(traj.goal_conditions),
         "replans": traj.replans, "failure": first, "scene": scene.room.name,
+        "scene_key": scene.content_key(),  # the viewer plays an episode only in the scene of this key
     }
     if traj.failures:
         record["failure_code"] = str(traj.failure_codes[0])

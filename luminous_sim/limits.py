@@ -63,6 +63,31 @@ MAX_NGRAM = 100
 """Longest n-gram a speaker's decoding may forbid repeating (`--no-repeat-ngram`)."""
 MAX_GENERATE_SCENES = 100_000
 """Scenes one `luminous generate` call writes (`--count`)."""
+MAX_AGENT_MEMORY_MB = 1024 * 1024
+"""The largest memory limit (MiB of address space) `luminous eval --agent-memory` takes: 1 TiB."""
+MAX_STEP_TIMEOUT_S = 24 * 3600.0
+"""The longest `luminous eval --step-timeout` (seconds one agent call may take): a day."""
+MAX_SCENE_OBJECTS = 2_000
+"""Objects one scene (`scene.json`, a `Scene`) may hold. Measured: the largest generated house (the five-room
+`two_bedroom_flat`, seeds 0-7) holds at most 137 objects, a generated kitchen about 50 and ALFRED's largest room
+under 150, so this is about 14 times the largest, and above what the largest CDF (`MAX_CDF_INSTANCES`) adds to a
+room's furniture; 100,000 objects kept `luminous view` busy past 240 s and 2.9 GB."""
+MAX_SCENE_SIDE_M = 100.0
+"""Longest side (m) of the bounding box of a scene's floor outline (a CDF house or an imported room spans at most
+`MAX_LAYOUT_SIDE_M`, 30 m; the generated houses about 10 m)."""
+MAX_SCENE_YAW_RAD = 25.0
+"""Largest |yaw| (radians) of a scene object: about four turns either way (generated scenes keep within -pi..3pi)."""
+MIN_SCENE_SCALE, MAX_SCENE_SCALE = 0.001, 100.0
+"""The range of a scene object's uniform asset scale (CSSG keeps within 0.3..3, a layout within 0..100)."""
+MAX_SCENE_ID_CHARS = 256
+"""Longest object id, name, type, asset or region a scene may give (generated ids hold under 60 characters)."""
+MAX_EPISODE_ACTIONS = 10_000
+"""Low-level actions (and frames) one episode folder read by `luminous view --trajectory` may hold; ALFRED's
+longest expert plans hold a few hundred."""
+MAX_FRAME_BYTES = 64 * 1024 * 1024
+"""Largest frame image (an episode's frames/*.png) the viewer reads; an agent's 300x300 frame is about 100 kB."""
+MAX_FRAME_PIXELS = 4096 * 4096
+"""Most pixels a frame image the viewer reads may hold (an agent's frame holds 300x300)."""
 MAX_CHECKPOINT_BYTES = 1024 * 1024 * 1024
 """Largest model checkpoint read (a learned speaker: `speaker describe/evaluate`, `dataset build --speaker`; a
 behaviour-cloning policy: `bc eval`); the project's are a few MB. A trajectory or vocabulary file the speaker reads

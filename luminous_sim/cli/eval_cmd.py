@@ -6,16 +6,20 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import os
 import sys
 from pathlib import Path
 
 from luminous_sim.cli.args import int_range, output_dir, seed
 from luminous_sim.data.backends import BACKENDS
-from luminous_sim.limits import MAX_EVAL_EPISODES, MAX_WORKERS
+from luminous_sim.limits import MAX_AGENT_MEMORY_MB, MAX_EVAL_EPISODES, MAX_STEP_TIMEOUT_S, MAX_WORKERS
 
 SPLITS: tuple[str, ...] = ("S+", "U+", "U+test")
 """The split names (`luminous_sim.splits.PLUS_SPLITS`; a test keeps the two in step)."""
+DEFAULT_STEP_TIMEOUT, DEFAULT_AGENT_MEMORY_MB, MIN_AGENT_MEMORY_MB = 10.0, 16384, 1024
+"""`luminous_sim.eval.sandbox`'s (kept here so that `luminous --help` imports no simulator; a test keeps them in
+step)."""
 
 
 def register(sub: argparse._SubParsersAction) -> None:
@@ -54,10 +58,29 @@ def register(sub: argparse._SubParsersAction) -> None:
                         help="a running Ray cluster's address (ray backend; default: start a local cluster of "
                              "WORKERS CPUs). Every node needs luminous_sim and your agent's module installed")
     parser.add_argument("--seed", type=seed, default=0, help="seed of the agents' randomness (default 0)")
+    parser.add_argument("--step-timeout", type=positive_seconds, default=DEFAULT_STEP_TIMEOUT, metavar="SECONDS",
+                        help="time limit of each reset() or act() call of your agent; a call over it ends its "
+                             f"episode as agent_timeout, a failure (default {DEFAULT_STEP_TIMEOUT:g})")
+    parser.add_argument("--agent-memory", default=DEFAULT_AGENT_MEMORY_MB,
+                        type=int_range(MIN_AGENT_MEMORY_MB, MAX_AGENT_MEMORY_MB, "MAX_AGENT_MEMORY_MB"),
+                        metavar="MB", help="memory limit (address space, MiB) of your agent's process; going past "
+                                       f"it stops the evaluation (default {DEFAULT_AGENT_MEMORY_MB})")
     parser.add_argument("--env", type=env_option, action="append", default=[], metavar="KEY=VALUE",
                         help="an env option over ALFRED's (EnvConfig's fields; VALUE as JSON, else a string), "
                              "e.g. --env width=64 --env targets=objects; repeatable")
     parser.set_defaults(func=_run)
+
+
+def positive_seconds(text: str) -> float:
+    """A finite number of seconds above 0."""
+    try:
+        value = float(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a number of seconds, got {text!r}") from None
+    if not math.isfinite(value) or value <= 0 or value > MAX_STEP_TIMEOUT_S:
+        raise argparse.ArgumentTypeError(f"expected a number of seconds above 0 and at most {MAX_STEP_TIMEOUT_S:g} "
+                                         f"(luminous_sim.limits.MAX_STEP_TIMEOUT_S), got {text!r}")
+    return value
 
 
 def env_option(text: str) -> tuple[str, object]:
@@ -75,6 +98,8 @@ def _run(args: argparse.Namespace) -> int:
     from luminous_sim.data import Backend, make_backend
     from luminous_sim.errors import LuminousError
     from luminous_sim.eval import (
+        AgentCrashed,
+        AgentLimits,
         EpisodeOutcome,
         EvalReport,
         check_policy,
@@ -86,7 +111,11 @@ def _run(args: argparse.Namespace) -> int:
 
     if os.getcwd() not in sys.path:  # MODULE may be a file in the current folder, as with `python -m`
         sys.path.insert(0, os.getcwd())
-    check_policy(args.policy)  # a bad spec fails here, before any episode
+    limits = AgentLimits(step_timeout=args.step_timeout, memory_mb=args.agent_memory)
+    try:
+        check_policy(args.policy, limits)  # a bad spec fails here, before any episode (the module imported in a child)
+    except AgentCrashed as exc:
+        return _crashed(exc, Path(args.out))
     if args.backend == "local" and args.address:
         raise LuminousError(f"--address {args.address} is for the ray backend, not local")
 
@@ -106,7 +135,7 @@ def _run(args: argparse.Namespace) -> int:
 
     def run(backend: Backend | None) -> EvalReport:
         common = {"seed": args.seed, "workers": args.workers, "out_dir": Path(args.out), "progress": show,
-                  "env_kwargs": dict(args.env), "backend": backend}
+                  "env_kwargs": dict(args.env), "backend": backend, "limits": limits}
         if args.live:
             from luminous_sim.benchmark import benchmark_size
 
@@ -116,12 +145,15 @@ def _run(args: argparse.Namespace) -> int:
             data = _canonical_build(args, backend)
         return evaluate_data(args.policy, Path(data), split=args.split, episodes=args.episodes, **common)
 
-    if args.backend == "local":
-        report = run(None)
-    else:  # a local Ray cluster's workers inherit PYTHONPATH: the current folder's agent module too
-        os.environ["PYTHONPATH"] = os.pathsep.join(p for p in (os.getcwd(), os.environ.get("PYTHONPATH")) if p)
-        with make_backend(args.backend, args.workers, args.address) as backend:
-            report = run(backend)
+    try:
+        if args.backend == "local":
+            report = run(None)
+        else:  # a local Ray cluster's workers inherit PYTHONPATH: the current folder's agent module too
+            os.environ["PYTHONPATH"] = os.pathsep.join(p for p in (os.getcwd(), os.environ.get("PYTHONPATH")) if p)
+            with make_backend(args.backend, args.workers, args.address) as backend:
+                report = run(backend)
+    except AgentCrashed as exc:
+        return _crashed(exc, Path(args.out))
     for why in report.replayed:
         print(f"played again (its file was damaged): {why}", file=sys.stderr)
     paths = write_reports(report, Path(args.out))
@@ -136,9 +168,10 @@ def _shorten(text: str, limit: int = 200) -> str:
 
 
 def _incomplete(report: object) -> int:
-    """1 (and each cause on stderr) when entries are unavailable because of a crash, not of the task: the
-    population is then incomplete; else 0."""
+    """1 (and each cause on stderr) when entries are unavailable because of a crash, not of the task (the
+    population is then incomplete), or because their trial is broken (`BROKEN_TRIAL`); else 0."""
     from luminous_sim.eval import crashed_build
+    from luminous_sim.eval.metrics import BROKEN_TRIAL
 
     outcomes = getattr(report, "outcomes", ())
     crashed = [o for o in outcomes if crashed_build(o)]
@@ -150,7 +183,25 @@ def _incomplete(report: object) -> int:
               "made another episode than the frozen split (not a task failure): the population is incomplete; fix "
               "the cause above and run again (crashed builds are retried)", file=sys.stderr)
         return 1
+    broken = [o for o in outcomes if not o.drawn and o.cause == BROKEN_TRIAL]
+    if broken:
+        names = ", ".join(o.trial or f"{o.split} {o.index}" for o in broken[:5]) + (" ..." if len(broken) > 5 else "")
+        print(f"error: {len(broken)} of {len(outcomes)} entries are broken trials ({names}): their files cannot "
+              "be played (the cause of each is above); they count as failures in SR all", file=sys.stderr)
+        return 1
     return 0
+
+
+def _crashed(exc: Exception, out: Path) -> int:
+    """1, and on stderr the cause of an agent's crash (`AgentCrashed`) and what the output folder kept: the
+    evaluation stopped there, and the same command resumes it."""
+    episodes = out / "episodes"
+    kept = len(list(episodes.glob("*.json"))) if episodes.is_dir() else 0
+    print(f"luminous eval: error: {exc}", file=sys.stderr)
+    print(f"error: the evaluation stopped: the agent crashed ({getattr(exc, 'cause', 'raised')}); {kept} finished "
+          f"episode{'s' if kept != 1 else ''} kept in {episodes} (no report written); fix the agent and run the same "
+          "command again to resume", file=sys.stderr)
+    return 1
 
 
 def _canonical_build(args: argparse.Namespace, backend: object) -> Path:

@@ -21,25 +21,34 @@ def register(sub: argparse._SubParsersAction) -> None:
                         help="an episode folder to play (trajectory.json, frames/, instructions.txt), e.g. "
                         "`luminous demo`'s episode/")
     parser.add_argument("--port", type=int_range(0, 65535), default=8080,
-                        help="port to serve on (default 8080; a busy one: the next free one; 0: any free one)")
+                        help="port to serve on (default 8080; a busy one: the next free one, up to 65535; 0: any "
+                        "free one)")
     parser.add_argument("--host", default="127.0.0.1",
                         help="interface to listen on (default 127.0.0.1, this machine only)")
     parser.set_defaults(func=_run)
 
 
-def _run(args: argparse.Namespace) -> int:
+def wait_for_interrupt() -> None:
+    """Wait until Ctrl-C (a seam: the CLI's tests replace it)."""
     import threading
 
+    try:
+        threading.Event().wait()
+    except KeyboardInterrupt:
+        pass
+
+
+def _run(args: argparse.Namespace) -> int:
     from luminous_sim.viewer import serve
 
+    # serve refuses a busy port range, a host it cannot listen on, a scene or an episode that is not valid and an
+    # episode of another scene, each in one line (exit 2), before any server thread starts
     viewer = serve(args.scene_dir, args.trajectory, port=args.port, host=args.host)
     print(f"serving {args.scene_dir} ({len(viewer.scene.objects)} objects"
           f"{', episode ' + str(args.trajectory) if args.trajectory else ''}) at {viewer.url}  (Ctrl-C stops it)",
           flush=True)
     try:
-        threading.Event().wait()
-    except KeyboardInterrupt:
-        pass
+        wait_for_interrupt()
     finally:
         viewer.close()
     return 0

@@ -1,7 +1,9 @@
 """`reset(options=...)`, checked: the options a reset takes, read into a typed `ResetOptions` before any work
 starts, or refused with a one-line `LuminousError` naming the option and what was expected.
 
-- `scene`: a `luminous_sim.scene.Scene`; the episode is played in it (only the goal is drawn).
+- `scene`: a `luminous_sim.scene.Scene`, checked as a scene file is (`scene.check_scene`: finite poses within
+  bounds, unique ids, parents present, the object-count limit); the episode is played in it (only the goal is
+  drawn).
 - `split`, `index`: a frozen split's name (`S+`, `U+`, `U+test`) and a whole number below its size; entry
   `index` of the split (`index` alone: of the env's `split`; `split` alone: an entry drawn over the split's
   entries of the env's task types).
@@ -27,7 +29,7 @@ import numpy as np
 
 from luminous_sim.env.config import MAX_CDF_FILES, EnvConfig, short_repr
 from luminous_sim.errors import LuminousError
-from luminous_sim.scene import Scene
+from luminous_sim.scene import Scene, check_scene
 
 if TYPE_CHECKING:
     from luminous_sim.benchmark import TrialEpisode
@@ -101,6 +103,8 @@ def reset_options(options: Any, config: EnvConfig) -> ResetOptions:
     scene = given.get("scene")
     if scene is not None and not isinstance(scene, Scene):
         raise LuminousError(f"reset options scene: expected a luminous_sim.scene.Scene, got {type(scene).__name__}")
+    if scene is not None:  # by the rules a scene file is read by: a copied Scene was never validated
+        check_scene(scene, "reset options scene")
     split = _split(given["split"]) if "split" in given else ""
     index = _whole("index", given["index"]) if "index" in given else None
     if index is not None and not (split or config.split):

@@ -1,8 +1,8 @@
 """Layer L5: evaluation on LUMINOUS's splits (S+, U+, U+test) with ALFRED's metrics and limits.
 
-A policy (`oracle`, `random`, or a user's agent as `MODULE:CALLABLE`; see docs/evaluation.md) plays
-episodes of a split; SR, GC, PLW-SR and PLW-GC come out overall and per task type, as JSON, a markdown
-table in the layout of the paper's Table 4, and a plot.
+A policy (`oracle`, `random`, or a user's agent as `MODULE:CALLABLE`, run in a child process with time and
+memory limits: `AgentLimits`; see docs/evaluation.md) plays episodes of a split; SR, GC, PLW-SR and PLW-GC
+come out overall and per task type, as JSON, a markdown table in the layout of the paper's Table 4, and a plot.
 
 Typical use::
 
@@ -38,6 +38,7 @@ from luminous_sim.eval.policies import (
     resolve_factory,
 )
 from luminous_sim.eval.report import TABLE4_ROWS, markdown_table, plot, write_reports
+from luminous_sim.eval.sandbox import AgentCrashed, AgentLimits, AgentProcess, AgentTimeout
 from luminous_sim.eval.trials import TrialRef, list_trials
 from luminous_sim.eval.workers import map_local, map_ordered
 
@@ -47,6 +48,10 @@ __all__ = [
     "TABLE4_ROWS",
     "Agent",
     "AgentContext",
+    "AgentCrashed",
+    "AgentLimits",
+    "AgentProcess",
+    "AgentTimeout",
     "EpisodeJob",
     "EpisodeOutcome",
     "EvalReport",

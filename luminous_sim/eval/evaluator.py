@@ -14,7 +14,11 @@ carry - matching them); a damaged or edited one (truncated, `[]`, `{}`, a field 
 changed but still well-formed, another episode's, one without a `check`) is played again and overwritten,
 and counted in `EvalReport.replayed`.
 
-An agent that raises stops the evaluation (`PolicyError`). An agent that returns something that is not an
+A user's agent runs in a child process of the worker (`sandbox.AgentProcess`, with `sandbox.AgentLimits`): a
+`reset()` or `act()` call over the step limit ends its episode as `agent_timeout` (cause `AGENT_FAULT`, a
+failure) and the next episode gets a fresh process; an agent that raises, exits, is killed or goes past its
+memory limit stops the evaluation (`AgentCrashed`, naming the cause, the episode and the step; a built-in or
+in-process agent that raises: `PolicyError`). An agent that returns something that is not an
 action (None, an index outside the space, an unknown action, arguments the env cannot decode such as a
 malformed mask) ends its episode as `invalid_action` with cause `AGENT_FAULT` and the step and the env's
 message in `detail`; a mask that decodes but hits nothing is an ordinary failed action, as in ALFRED.
@@ -23,6 +27,7 @@ message in `detail`; a mask that decodes but hits nothing is an ordinary failed 
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import hashlib
 import itertools
 import json
@@ -40,8 +45,9 @@ from luminous_sim.benchmark import benchmark_entry, benchmark_size
 from luminous_sim.data.backends import Backend
 from luminous_sim.env import EnvConfig, EpisodeUnavailable, LuminousEnv
 from luminous_sim.errors import LuminousError, link_or_kind, read_json_file
-from luminous_sim.eval.metrics import AGENT_FAULT, EpisodeOutcome, Metrics, metrics, metrics_by_type
+from luminous_sim.eval.metrics import AGENT_FAULT, BROKEN_TRIAL, EpisodeOutcome, Metrics, metrics, metrics_by_type
 from luminous_sim.eval.policies import Agent, PolicyError, ReplayAgent, check_policy, make_agent
+from luminous_sim.eval.sandbox import AgentCrashed, AgentLimits, AgentTimeout
 from luminous_sim.eval.workers import map_local, map_ordered
 from luminous_sim.limits import MAX_EPISODE_FILE_BYTES, MAX_EVAL_EPISODES, MAX_INPUT_BYTES
 from luminous_sim.splits import plus_split
@@ -79,6 +85,11 @@ class EpisodeJob:
     """A build job that wrote no trial (its stage and cause): the outcome is `unavailable`, cause `build`."""
     named: tuple[str, str, int] | None = None
     """(task type, floor plan, layout) of an unbuilt job, as the build recorded them."""
+    broken: str = ""
+    """Why the listed trial folder cannot be read (`TrialRef.broken`): the outcome is `unavailable`, cause
+    `broken_trial`, and nothing in the folder is read."""
+    limits: AgentLimits = field(default_factory=AgentLimits)
+    """The limits of a user's agent process (`sandbox.AgentLimits`: step time, memory)."""
 
     @property
     def path(self) -> Path | None:
@@ -165,11 +176,21 @@ def play(env: LuminousEnv, agent: Agent, split: str, index: int, seed: int = 0, 
         steps_text = obs.get("high_descs", "")
         agent.reset(obs["instruction"], {**info, "episode_seed": own_seed,
                                          "high_descs": steps_text.split("\n") if steps_text.strip(".") else []})
+    except AgentTimeout as exc:  # the agent's process was killed; the next episode gets a fresh one
+        fault, truncated = f"at reset: {exc}", True
+    except AgentCrashed as exc:
+        raise exc.on(split, index) from None
     except Exception as exc:
         raise PolicyError(f"the agent raised on {split} episode {index} at reset: {type(exc).__name__}: {exc}") from exc
+    timed_out = bool(fault)
     while not (terminated or truncated):
         try:
             action = agent.act(obs, info)
+        except AgentTimeout as exc:
+            fault, timed_out = f"step {steps + 1}: {exc}", True
+            break
+        except AgentCrashed as exc:
+            raise exc.on(split, index, steps + 1) from None
         except Exception as exc:
             raise PolicyError(f"the agent raised on {split} episode {index} at step {steps}: "
                               f"{type(exc).__name__}: {exc}") from exc
@@ -183,7 +204,9 @@ def play(env: LuminousEnv, agent: Agent, split: str, index: int, seed: int = 0, 
             fault = f"step {steps}: the agent returned {_shown(action)}, not an action of the env: {fault}"
             break
     stopped = terminated and not info["success"]
-    if fault:
+    if timed_out:
+        end = "agent_timeout"
+    elif fault:
         end = "invalid_action"
     elif info["success"]:
         end = "success"
@@ -205,19 +228,22 @@ def _trial_where(trial: str, split: str) -> tuple[str, str, int]:
     from luminous_sim.benchmark import FROZEN, benchmark_size
 
     path = Path(trial)
-    try:
-        traj = json.loads((path / "traj_data.json").read_bytes()[:MAX_INPUT_BYTES])
-        task_type, floor_plan = str(traj["task_type"]), str(traj["scene"]["floor_plan"])
-    except (OSError, ValueError, KeyError, TypeError) as exc:
-        raise LuminousError(f"{path / 'traj_data.json'}: cannot read task_type and scene.floor_plan "
-                            f"({type(exc).__name__}: {exc})") from None
+    what = "a trial's {} (luminous_sim.limits.MAX_INPUT_BYTES)"
+    try:  # a trial these cannot be read from is a broken trial (`trials.trial_problem` names why): "" then
+        traj = read_json_file(path / "traj_data.json", MAX_INPUT_BYTES, what.format("traj_data.json"))
+        task_type, floor_plan = traj["task_type"], traj["scene"]["floor_plan"]
+    except (LuminousError, KeyError, TypeError):
+        return "", "", 0
+    if not isinstance(task_type, str) or not isinstance(floor_plan, str):
+        return "", "", 0
     layout = 0
-    # Only the layout's number is read here; a damaged sidecar is named where the trial is restored (the env's
-    # `trial` reset, `benchmark.read_trial`), and its episode then ends as an error there, not here.
-    with contextlib.suppress(OSError, ValueError, AttributeError):
-        bench = json.loads((path / "luminous.json").read_bytes()[:MAX_INPUT_BYTES]).get("benchmark") or {}
+    # Only the layout's number is read here; a damaged sidecar is named where the trial is restored
+    # (`benchmark.read_trial`), and its episode is then a broken trial, not an error here.
+    with contextlib.suppress(LuminousError, AttributeError):
+        bench = read_json_file(path / "luminous.json", MAX_INPUT_BYTES, what.format("luminous.json")).get(
+            "benchmark") or {}
         name, i = bench.get("split"), bench.get("index")
-        if name in FROZEN and isinstance(i, int) and 0 <= i < benchmark_size(name):
+        if name in FROZEN and isinstance(i, int) and not isinstance(i, bool) and 0 <= i < benchmark_size(name):
             layout = benchmark_entry(name, i).layout
     return task_type, floor_plan, layout
 
@@ -238,8 +264,9 @@ def _shown(action: Any) -> str:
     return text if len(text) <= 80 else text[:77] + "..."
 
 
-_RUNNERS: dict[tuple[str, str], tuple[LuminousEnv, Agent]] = {}
-"""This process's env and agent per (policy, env options): a user's agent is made once per worker."""
+_RUNNERS: dict[tuple[str, str, AgentLimits], tuple[LuminousEnv, Agent]] = {}
+"""This process's env and agent per (policy, env options, agent limits): a user's agent is made once per worker
+(its process started once, and again after a timeout)."""
 
 
 CHECK = "check"
@@ -318,17 +345,19 @@ def _run_job(job: EpisodeJob) -> tuple[EpisodeOutcome, str]:
                 shutil.rmtree(path)
             else:
                 path.unlink()
-    if job.unbuilt:
+    broken = job.broken or (_trial_problem(job.trial) if job.trial and not job.unbuilt else "")
+    if job.unbuilt or broken:  # an unbuilt job, or a trial that cannot be read or whose task is impossible
         task_type, floor_plan, layout = job.where()
         outcome = EpisodeOutcome(job.split, job.index, task_type, floor_plan, layout, end="unavailable",
-                                 cause="build", detail=job.unbuilt)
+                                 cause="build" if job.unbuilt else BROKEN_TRIAL, detail=job.unbuilt or broken,
+                                 trial=job.trial_rel)
         if path is not None:
             write_atomic(path, json.dumps(outcome_record(outcome), indent=1) + "\n")
         return outcome, damaged
-    key = (job.policy, job.env_json)
+    key = (job.policy, job.env_json, job.limits)
     if key not in _RUNNERS:
         env = LuminousEnv(**json.loads(job.env_json))
-        _RUNNERS[key] = (env, make_agent(job.policy, env))
+        _RUNNERS[key] = (env, make_agent(job.policy, env, job.limits))
     env, agent = _RUNNERS[key]
     if job.trial and job.policy == "oracle":
         agent = _replay_agent(job.trial)
@@ -339,6 +368,13 @@ def _run_job(job: EpisodeJob) -> tuple[EpisodeOutcome, str]:
     if path is not None:
         write_atomic(path, json.dumps(outcome_record(outcome), indent=1) + "\n")
     return outcome, damaged
+
+
+def _trial_problem(trial: str) -> str:
+    """Why a trial folder cannot be played (a broken trial), or "" (`trials.trial_problem`)."""
+    from luminous_sim.eval.trials import trial_problem
+
+    return trial_problem(trial)
 
 
 def _replay_agent(trial: str) -> ReplayAgent:
@@ -383,10 +419,8 @@ def check_output(out_dir: Path, run: dict[str, Any]) -> bool:
         if path.is_symlink() or not path.is_file():
             raise LuminousError(f"{path}: {link_or_kind(path)}; "
                                 "expected the evaluation's run.json")
-        try:
-            old = json.loads(path.read_bytes()[:MAX_EPISODE_FILE_BYTES])
-        except (ValueError, RecursionError) as exc:
-            raise LuminousError(f"{path}: not JSON ({exc}); is this an evaluation folder?") from None
+        old = read_json_file(path, MAX_EPISODE_FILE_BYTES, "the evaluation's run.json "
+                             "(luminous_sim.limits.MAX_EPISODE_FILE_BYTES); is this an evaluation folder?")
         if not isinstance(old, dict):
             raise LuminousError(f"{path}: expected a JSON object (what the folder's evaluation ran), "
                                 f"got {type(old).__name__}")
@@ -452,7 +486,7 @@ def _run_all(policy: str, split: str, seed: int, config: EnvConfig, jobs: list[E
 def evaluate(policy: str, split: str, episodes: int | Iterable[int], *, seed: int = 0, workers: int = 1,
              out_dir: Path | None = None, env_kwargs: dict[str, Any] | None = None,
              progress: Callable[[EpisodeOutcome], None] | None = None,
-             backend: Backend | None = None) -> EvalReport:
+             backend: Backend | None = None, limits: AgentLimits | None = None) -> EvalReport:
     """Run `policy` (`oracle`, `random` or `MODULE:CALLABLE`) on entries of the frozen split `split`, each
     played live: `reset(options={"split": split, "index": i})`, the episode `benchmark.entry_episode` defines
     (the oracle is the env's expert, replanning from the env's state). `evaluate_data` plays a build's trials
@@ -471,18 +505,25 @@ def evaluate(policy: str, split: str, episodes: int | Iterable[int], *, seed: in
         backend: where the episodes run instead (`data.make_backend("ray", workers, address)` for a Ray
             cluster); the outcomes are the same whatever the backend. With Ray, a user's agent module must
             be importable by the workers (on `PYTHONPATH`, or installed on every node).
+        limits: a user's agent's limits (`sandbox.AgentLimits`: seconds per call, memory); it runs in a child
+            process of each worker, and its module is never imported in this process.
 
     Raises:
         PolicyError, SplitError, LuminousError: a bad policy spec, split, index or env option (before any work).
+        AgentCrashed: a user's agent raised, exited, was killed or went past its memory limit (the evaluation
+            stops; the episodes finished before stay in `out_dir`). A call over the step limit is no crash: its
+            episode ends as `agent_timeout` and the evaluation goes on.
     """
-    check_policy(policy)
+    limits = limits or AgentLimits()
+    check_policy(policy, limits)
     plus_split(split)
     indices = _indices(episodes, benchmark_size(split), split)
     config = _env_config(split, env_kwargs)
     env_json = json.dumps(config.to_kwargs(), sort_keys=True)
     if out_dir is not None:
         _claim(out_dir, {"policy": policy, "split": split, "seed": seed, "env": config.to_kwargs()})
-    jobs = [EpisodeJob(policy, split, i, seed, env_json, None if out_dir is None else str(out_dir)) for i in indices]
+    jobs = [EpisodeJob(policy, split, i, seed, env_json, None if out_dir is None else str(out_dir), limits=limits)
+            for i in indices]
     return _run_all(policy, split, seed, config, jobs, progress, workers, backend)
 
 
@@ -490,7 +531,7 @@ def evaluate_data(policy: str, data_dir: Path, *, split: str | None = None,
                   episodes: int | Iterable[int] | None = None, seed: int = 0, workers: int = 1,
                   out_dir: Path | None = None, env_kwargs: dict[str, Any] | None = None,
                   progress: Callable[[EpisodeOutcome], None] | None = None,
-                  backend: Backend | None = None) -> EvalReport:
+                  backend: Backend | None = None, limits: AgentLimits | None = None) -> EvalReport:
     """Run `policy` on the trials of a built dataset folder, as ALFRED's evaluation iterates over a split's
     traj_data.json files: each trial restored from its files alone (`reset(options={"trial": folder})`), the
     agent reading annotation 0; the `oracle` replays the trial's recorded low-level actions through the agent
@@ -504,10 +545,12 @@ def evaluate_data(policy: str, data_dir: Path, *, split: str | None = None,
 
     Raises:
         PolicyError, LuminousError: a bad policy spec, data folder, index or env option (before any work).
+        AgentCrashed: as for `evaluate`.
     """
     from luminous_sim.eval.trials import list_trials
 
-    check_policy(policy)
+    limits = limits or AgentLimits()
+    check_policy(policy, limits)
     refs = list_trials(Path(data_dir), split)
     if not refs:
         raise LuminousError(f"{data_dir}: holds no trial{f' of split {split}' if split else ''}")
@@ -521,6 +564,8 @@ def evaluate_data(policy: str, data_dir: Path, *, split: str | None = None,
     if out_dir is not None:
         _claim(out_dir, data_run(policy, data_dir, label, seed, env_kwargs))
     jobs = [EpisodeJob(policy, r.split, r.index, seed, env_json, None if out_dir is None else str(out_dir),
-                       trial="" if r.unbuilt else str(r.path), trial_rel=r.rel, unbuilt=r.unbuilt, named=r.named)
+                       trial="" if r.unbuilt or r.broken else str(r.path), trial_rel=r.rel, unbuilt=r.unbuilt,
+                       named=r.named, broken=r.broken)
             for r in refs]
+    jobs = [dataclasses.replace(job, limits=limits) for job in jobs]
     return _run_all(policy, label, seed, config, jobs, progress, workers, backend)

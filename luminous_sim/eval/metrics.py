@@ -23,14 +23,23 @@ from typing import Any
 from luminous_sim.errors import LuminousError
 from luminous_sim.vocab import ALFRED_TASK_TYPES
 
-ENDS: tuple[str, ...] = ("success", "stop", "max_steps", "max_failures", "invalid_action", "unavailable")
+ENDS: tuple[str, ...] = ("success", "stop", "max_steps", "max_failures", "invalid_action", "agent_timeout",
+                         "unavailable")
 """How an episode ended: the goal held, the agent stopped, ALFRED's step or failed-action limit, the agent
-returned something that is not an action (the agent's fault, `AGENT_FAULT`), or the entry's episode could
-not be drawn."""
+returned something that is not an action or a call to it went past the step limit (`sandbox.AgentLimits`;
+both the agent's fault, `AGENT_FAULT`, and failures in SR and GC), or the entry's episode could not be
+drawn."""
 AGENT_FAULT = "agent_fault"
 """The `cause` of an `invalid_action` end: the agent returned None, an index outside the action space, an
 unknown action name or arguments the env cannot decode (a malformed mask); `detail` says which, at which
-step. A mask that decodes but hits nothing is an ordinary failed action, as in ALFRED."""
+step. A mask that decodes but hits nothing is an ordinary failed action, as in ALFRED. Also the `cause` of an
+`agent_timeout` end (`detail`: the call and the step)."""
+BROKEN_TRIAL = "broken_trial"
+"""The `cause` of an `unavailable` end for a trial of a dataset folder that cannot be played: a folder reached
+through a symbolic link or outside the dataset folder, a file that is missing, special, oversized or not
+JSON, a field missing, of the wrong kind or out of range, or a task its restored scene makes impossible (a
+type `pddl_params` names that the scene lacks); `detail` says which. It counts in SR all, and `luminous eval`
+exits 1."""
 
 
 @dataclass(frozen=True)
@@ -53,8 +62,8 @@ class EpisodeOutcome:
     failures: int = 0
     instruction: str = ""
     cause: str = ""
-    """Why an unavailable entry has no episode (`env.UNAVAILABLE_CAUSES`), `AGENT_FAULT` for an
-    `invalid_action` end; "" otherwise."""
+    """Why an unavailable entry has no episode (`env.UNAVAILABLE_CAUSES`, "build", `BROKEN_TRIAL`),
+    `AGENT_FAULT` for an `invalid_action` or `agent_timeout` end; "" otherwise."""
     detail: str = ""
     episode_key: str = ""
     """The episode's content key (`benchmark.episode_key`, from the env's restored world)."""

@@ -2,7 +2,7 @@
 
 The agent interface (see docs/evaluation.md for a worked example)::
 
-    def make_agent(context: AgentContext) -> Agent        # the MODULE:CALLABLE, called once per worker
+    def make_agent(context: AgentContext) -> Agent        # the MODULE:CALLABLE, once per worker, in a child
 
     class Agent:
         def reset(self, instruction: str, info: dict) -> None: ...      # before each episode
@@ -14,7 +14,8 @@ research, `"objectId": id`; `{"action": "Stop"}` or `"<<stop>>"` ends the episod
 `failure_code` and `error` say why the last action failed; the reset `info` also carries `episode_seed`,
 a seed for the agent's own randomness in this episode (so results do not depend on how episodes are shared
 among workers). An agent that reads `success`, `goal_conditions` or `subgoal` from `info`, or looks into
-the env, is not playing ALFRED's game.
+the env, is not playing ALFRED's game. A user's agent runs in a child process with time and memory limits
+(`luminous_sim.eval.sandbox`); the built-ins run in the evaluation's process.
 """
 
 from __future__ import annotations
@@ -23,13 +24,16 @@ import importlib
 import re
 from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any, Protocol
+from typing import TYPE_CHECKING, Any, Protocol
 
 import numpy as np
 from gymnasium import spaces
 
 from luminous_sim.env import ActionTable, EnvConfig, LuminousEnv, OraclePolicy
 from luminous_sim.errors import LuminousError
+
+if TYPE_CHECKING:
+    from luminous_sim.eval.sandbox import AgentLimits
 
 BUILT_IN: tuple[str, ...] = ("oracle", "random")
 _SPEC = re.compile(r"^[A-Za-z_][\w]*(\.[A-Za-z_][\w]*)*:[A-Za-z_][\w]*(\.[A-Za-z_][\w]*)*$")
@@ -113,9 +117,7 @@ def resolve_factory(spec: str) -> Callable[[AgentContext], Agent]:
     Raises:
         PolicyError: the spec is malformed, the module cannot be imported, or the name is not a callable.
     """
-    if not _SPEC.match(spec):
-        raise PolicyError(f"policy {spec!r}: expected {' or '.join(BUILT_IN)}, or MODULE:CALLABLE "
-                          "(a dotted module path, a colon, a callable's name)")
+    check_spec(spec)
     module_name, _, attr = spec.partition(":")
     try:
         module = importlib.import_module(module_name)
@@ -131,26 +133,61 @@ def resolve_factory(spec: str) -> Callable[[AgentContext], Agent]:
     return target
 
 
-def check_policy(spec: str) -> str:
-    """The spec if it names a usable policy (a built-in, or a callable that imports); else PolicyError."""
-    if spec not in BUILT_IN:
-        resolve_factory(spec)
+def check_spec(spec: str) -> str:
+    """The spec if it is a built-in's name or of the form MODULE:CALLABLE (nothing is imported); else PolicyError."""
+    if spec not in BUILT_IN and not _SPEC.match(spec):
+        raise PolicyError(f"policy {spec!r}: expected {' or '.join(BUILT_IN)}, or MODULE:CALLABLE "
+                          "(a dotted module path, a colon, a callable's name)")
     return spec
 
 
-def make_agent(spec: str, env: LuminousEnv) -> Agent:
-    """The agent of a policy spec for one env.
+def check_policy(spec: str, limits: AgentLimits | None = None) -> str:
+    """The spec if it names a usable policy (a built-in, or a callable that imports); else PolicyError. A
+    user's module is imported in a child process (`sandbox.probe`, with `limits`), never in this one.
 
     Raises:
-        PolicyError: a bad spec, or a factory whose result has no `reset` and `act`.
+        PolicyError: a malformed spec, a module that does not import, a name that is not a callable.
+        AgentCrashed: importing the module ended its process (`sys.exit`, a signal, the memory limit).
+    """
+    check_spec(spec)
+    if spec not in BUILT_IN:
+        from luminous_sim.eval.sandbox import probe
+
+        probe(spec, limits)
+    return spec
+
+
+def make_agent(spec: str, env: LuminousEnv, limits: AgentLimits | None = None, *,
+               in_process: bool = False) -> Agent:
+    """The agent of a policy spec for one env: a built-in in this process; a user's agent (`MODULE:CALLABLE`)
+    in a child process with `limits` (`sandbox.AgentProcess`), or with `in_process` here (trusted code only:
+    it can then stall or end the evaluation).
+
+    Raises:
+        PolicyError: a bad spec, or a factory that raised or whose result has no `reset` and `act`.
+        AgentCrashed: the agent's process ended while starting (`sandbox.AgentCrashed`).
     """
     if spec == "oracle":
         return OracleAgent(env)
     if spec == "random":
         return RandomAgent(env.actions.n)  # the size of env.action_space, a Discrete
-    factory = resolve_factory(spec)
+    context = AgentContext(env.action_space, env.observation_space, env.actions, env.config)
+    if in_process:
+        return build_agent(spec, resolve_factory(spec), context)
+    from luminous_sim.eval.sandbox import AgentProcess
+
+    check_spec(spec)
+    return AgentProcess(spec, context, limits)
+
+
+def build_agent(spec: str, factory: Callable[[AgentContext], Agent], context: AgentContext) -> Agent:
+    """`factory(context)`, checked to be an agent (in the process that runs it).
+
+    Raises:
+        PolicyError: the factory raised, or returned something without `reset` and `act`.
+    """
     try:
-        agent = factory(AgentContext(env.action_space, env.observation_space, env.actions, env.config))
+        agent = factory(context)
     except Exception as exc:
         raise PolicyError(f"policy {spec!r}: the factory raised {type(exc).__name__}: {exc}") from exc
     missing = [m for m in ("reset", "act") if not callable(getattr(agent, m, None))]

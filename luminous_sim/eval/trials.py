@@ -7,16 +7,17 @@ layout whose trials carry our sidecar)."""
 
 from __future__ import annotations
 
-import json
+import os
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from luminous_sim.errors import LuminousError, link_or_kind
-from luminous_sim.limits import MAX_INPUT_BYTES
+from luminous_sim.errors import LuminousError, link_or_kind, read_json_file
+from luminous_sim.limits import MAX_EVAL_EPISODES, MAX_INPUT_BYTES
 
 TRAJ = "traj_data.json"
 SPLITS = "splits.json"
+MANIFEST = "manifest.jsonl"
 
 
 @dataclass(frozen=True)
@@ -33,21 +34,44 @@ class TrialRef:
     """Why the build wrote no trial for this job (its stage and cause); "" for a trial."""
     named: tuple[str, str, int] | None = None
     """(task type, floor plan, layout) as the build recorded them (for an unbuilt job)."""
+    broken: str = ""
+    """Why the trial folder cannot be read where it is listed (not a folder inside the dataset folder, reached
+    through a symbolic link, or without its traj_data.json); "" when it can be. Its outcome is `unavailable`
+    with cause `broken_trial`, and nothing in it is read."""
+
+
+def plain_name(text: object) -> bool:
+    """Whether `text` is one plain folder name (`data.manifest.plain_name`: not empty, no separator, not
+    `.`-led, no NUL, at most 255 characters)."""
+    from luminous_sim.data.manifest import plain_name as plain
+
+    return plain(text)
 
 
 def _from_splits(root: Path, doc: Any) -> list[TrialRef]:
+    where = root / SPLITS
     if not isinstance(doc, dict) or not all(isinstance(v, list) for v in doc.values()):
-        raise LuminousError(f"{root / SPLITS}: expected {{split: [{{'repeat_idx', 'task'}}, ...]}}")
-    out = []
+        raise LuminousError(f"{where}: expected {{split: [{{'repeat_idx', 'task'}}, ...]}}")
+    out: list[TrialRef] = []
     for split, items in doc.items():
-        seen: list[str] = []
+        if not plain_name(split):
+            shown = repr(split) if len(repr(split)) <= 60 else repr(split)[:57] + "..."
+            raise LuminousError(f"{where}: split {shown}: expected a plain folder name (the split's folder inside "
+                                "the dataset folder: no '/', not '.'-led, not empty)")
+        seen: dict[str, None] = {}
         for k, item in enumerate(items):
-            task = item.get("task") if isinstance(item, dict) else None
-            if not isinstance(task, str) or Path(task).is_absolute() or ".." in Path(task).parts:
-                raise LuminousError(f"{root / SPLITS}: {split}[{k}]: field 'task': expected '<task>/<trial>' inside "
-                                    "the folder")
-            if task not in seen:
-                seen.append(task)
+            task: Any = item.get("task") if isinstance(item, dict) else None
+            parts = task.split("/") if isinstance(task, str) else []
+            if not parts or len(parts) > 2 or not all(plain_name(part) for part in parts):
+                raise LuminousError(f"{where}: {split}[{k}]: field 'task': expected '<task>/<trial>' (or '<trial>'), "
+                                    "plain folder names inside the split's folder")
+            repeat = item.get("repeat_idx", 0)
+            if not isinstance(repeat, int) or isinstance(repeat, bool) or repeat < 0:
+                raise LuminousError(f"{where}: {split}[{k}]: field 'repeat_idx': expected a whole number >= 0")
+            seen.setdefault(task, None)
+            if len(out) + len(seen) > MAX_EVAL_EPISODES:
+                raise LuminousError(f"{where}: lists more than {MAX_EVAL_EPISODES} trials "
+                                    "(luminous_sim.limits.MAX_EVAL_EPISODES)")
         for i, task in enumerate(seen):
             rel = f"{split}/{task}"
             out.append(TrialRef(split, i, root / rel, rel))
@@ -63,45 +87,111 @@ def _from_manifest(root: Path, path: Path) -> list[TrialRef]:
             rel = f"{r['split']}/{r['trial']}"
             out.append(TrialRef(r["split"], r["order"], root / rel, rel))
         else:
-            named = (str(r["task_type"]), str(r.get("floor_plan", "")), int(r.get("layout", 0) or 0))
+            plan, layout = r.get("floor_plan", ""), r.get("layout", 0) or 0
+            if not isinstance(plan, str) or not isinstance(layout, int) or isinstance(layout, bool) or layout < 0:
+                raise LuminousError(f"{path}: the record of {r['split']} job {r['order']}: fields 'floor_plan' and "
+                                    f"'layout': expected a floor plan's name and a whole number >= 0, got "
+                                    f"{plan!r} and {layout!r}")
+            named = (str(r["task_type"]), plan, layout)
             out.append(TrialRef(r["split"], r["order"], root, "", unbuilt=f"{r.get('stage')}: {r.get('cause')}",
                                 named=named))
     return out
 
 
+def _from_tree(root: Path) -> list[TrialRef]:
+    """Every folder under `root` that holds a traj_data.json, in sorted order; links are not followed (a folder
+    reached through one is not listed; a traj_data.json that is a link is listed, and refused when read)."""
+    found: list[str] = []
+    for folder, dirs, files in os.walk(root, followlinks=False):
+        dirs.sort()
+        if TRAJ in files or TRAJ in dirs:
+            found.append(Path(folder).relative_to(root).as_posix())
+            if len(found) > MAX_EVAL_EPISODES:
+                raise LuminousError(f"{root}: holds more than {MAX_EVAL_EPISODES} trials "
+                                    "(luminous_sim.limits.MAX_EVAL_EPISODES)")
+    refs = []
+    counts: dict[str, int] = {}
+    for rel in sorted(found):
+        name = rel.split("/")[0] if rel.count("/") >= 2 else ""
+        refs.append(TrialRef(name, counts.get(name, 0), root / rel, rel))
+        counts[name] = counts.get(name, 0) + 1
+    return refs
+
+
+def confined(root: Path, rel: str) -> str:
+    """Why the folder `rel` (a relative path) is not a trial folder inside the dataset folder `root`, or "":
+    each step from `root` must be a real folder (no symbolic link on the way), and the folder must resolve to a
+    place inside `root`. Only `lstat` is used: nothing is opened or followed."""
+    import stat
+
+    here = Path(root)
+    for part in Path(rel).parts:
+        if part in ("", ".", ".."):
+            return f"{rel}: not a plain path inside the dataset folder"
+        here = here / part
+        try:
+            mode = os.lstat(here).st_mode
+        except FileNotFoundError:
+            return f"{here}: no such folder; expected a trial folder"
+        except OSError as exc:
+            return f"{here}: cannot read ({exc.strerror or exc}); expected a trial folder"
+        if stat.S_ISLNK(mode):
+            return f"{here}: a symbolic link (links are never followed); expected a trial folder inside {root}"
+        if not stat.S_ISDIR(mode):
+            return f"{here}: {link_or_kind(here)}; expected a trial folder"
+    if not here.resolve().is_relative_to(Path(root).resolve()):
+        return f"{here}: outside the dataset folder {root}"
+    try:
+        os.lstat(here / TRAJ)
+    except FileNotFoundError:
+        return f"{here}: holds no {TRAJ}"
+    except OSError as exc:
+        return f"{here / TRAJ}: cannot read ({exc.strerror or exc})"
+    return ""
+
+
 def list_trials(root: Path, split: str | None = None) -> list[TrialRef]:
     """The trials under the dataset folder `root` (of `split` only, if given).
 
+    A listed trial folder that is not a real folder inside `root` (reached through a symbolic link, missing,
+    a file) or holds no traj_data.json is still listed, with why in `TrialRef.broken`.
+
     Raises:
-        LuminousError: `root` is no folder, its splits.json is malformed, or a listed trial has no traj_data.json;
-            the message names the path.
+        LuminousError: `root` is no folder (or a link); its manifest.jsonl or splits.json is a link, not a
+            regular file, over its size limit or malformed (a split key that is not a plain folder name, a task
+            path that is absolute, climbs out with `..` or is not made of plain folder names); or it lists
+            more than `limits.MAX_EVAL_EPISODES` trials. The message names the path and the field.
     """
     root = Path(root)
     if root.is_symlink() or not root.is_dir():
         raise LuminousError(f"{root}: {link_or_kind(root)}; expected a dataset folder (a `luminous dataset build` "
                             "output or ALFRED's layout)")
     index = root / SPLITS
-    manifest = root / "manifest.jsonl"
-    if manifest.is_file() and not manifest.is_symlink():
+    manifest = root / MANIFEST
+    if os.path.lexists(manifest):
         refs = _from_manifest(root, manifest)
-    elif index.is_file() and not index.is_symlink():
-        if index.stat().st_size > MAX_INPUT_BYTES:
-            raise LuminousError(f"{index}: over {MAX_INPUT_BYTES} bytes")
-        try:
-            refs = _from_splits(root, json.loads(index.read_bytes()))
-        except ValueError as exc:
-            raise LuminousError(f"{index}: not JSON ({exc})") from None
+    elif os.path.lexists(index):
+        doc = read_json_file(index, MAX_INPUT_BYTES,
+                             "the dataset folder's splits.json (luminous_sim.limits.MAX_INPUT_BYTES)")
+        refs = _from_splits(root, doc)
     else:
-        refs = []
-        counts: dict[str, int] = {}
-        for traj in sorted(root.rglob(TRAJ)):
-            rel = traj.parent.relative_to(root).as_posix()
-            name = rel.split("/")[0] if rel.count("/") >= 2 else ""
-            refs.append(TrialRef(name, counts.get(name, 0), traj.parent, rel))
-            counts[name] = counts.get(name, 0) + 1
+        refs = _from_tree(root)
     if split is not None:
         refs = [r for r in refs if r.split == split]
+    out = []
     for r in refs:
-        if not r.unbuilt and not (r.path / TRAJ).is_file():
-            raise LuminousError(f"{r.path}: listed in {SPLITS} but holds no {TRAJ}")
-    return refs
+        broken = "" if r.unbuilt else confined(root, r.rel)
+        out.append(TrialRef(r.split, r.index, r.path, r.rel, r.unbuilt, ("", "", 0), broken) if broken else r)
+    return out
+
+
+def trial_problem(path: Path | str) -> str:
+    """Why the trial folder `path` cannot be played (`benchmark.read_trial`'s refusal: a file that cannot be
+    read, a field missing, of the wrong kind or out of range, a task impossible in the restored scene), or ""."""
+    from luminous_sim.benchmark import read_trial
+
+    try:
+        read_trial(Path(path))
+    except LuminousError as exc:
+        return str(exc)
+    return ""

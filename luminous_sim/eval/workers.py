@@ -36,14 +36,21 @@ def map_local(fn: Callable[[T], R], items: Sequence[T], workers: int = 1) -> Ite
 
 def map_ordered(fn: Callable[[T], R], items: Sequence[T], backend: Backend) -> Iterator[R]:
     """`fn` over `items` on `backend`, yielding results in the order of `items` (each as soon as it and every
-    earlier one have finished; later results wait in memory)."""
+    earlier one have finished; later results wait in memory). A job's `LuminousError` is raised as it is, not
+    wrapped in the backend's error (Ray's `RayTaskError`)."""
     waiting: dict[int, R] = {}
     following = 0
-    for (i, _, _), result in backend.imap_unordered(_apply, [(i, fn, item) for i, item in enumerate(items)]):
-        waiting[i] = result
-        while following in waiting:
-            yield waiting.pop(following)
-            following += 1
+    try:
+        for (i, _, _), result in backend.imap_unordered(_apply, [(i, fn, item) for i, item in enumerate(items)]):
+            waiting[i] = result
+            while following in waiting:
+                yield waiting.pop(following)
+                following += 1
+    except Exception as exc:
+        cause = getattr(exc, "cause", None)  # Ray wraps a task's error (RayTaskError); ours carries the message
+        if isinstance(cause, LuminousError) and cause is not exc:
+            raise cause from None
+        raise
 
 
 def _apply(job: tuple[int, Callable[[T], R], T]) -> R:

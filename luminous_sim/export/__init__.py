@@ -11,6 +11,8 @@ asset library's meshes. USD needs usd-core and the MuJoCo check mujoco (the `exp
 
 from __future__ import annotations
 
+import math
+import os
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -56,11 +58,12 @@ def load_scene(source: Path) -> Scene:
 
     source = Path(source)
     path = source / "scene.json" if source.is_dir() else source
-    if not path.is_file():
-        what = "has no scene.json" if source.is_dir() else "does not exist"
-        raise ExportError(f"{source}: {what}; expected a scene folder written by `luminous generate`")
+    if source.is_dir() and not os.path.lexists(path):
+        raise ExportError(f"{source}: has no scene.json; expected a scene folder written by `luminous generate`")
+    if not os.path.lexists(path):
+        raise ExportError(f"{source}: does not exist; expected a scene folder written by `luminous generate`")
     try:
-        return Scene.load(path)
+        return Scene.load(path)  # refuses a FIFO, a device or a folder there without opening it for reading
     except LuminousError as exc:
         raise ExportError(str(exc)) from None
 
@@ -87,9 +90,39 @@ def check_format(fmt: str, out: Path | None = None) -> str:
     return fmt
 
 
+def check_posed(posed: PosedScene) -> None:
+    """Every pose and size of a posed scene finite and within `limits.MAX_LAYOUT_COORDINATE_M` (a live world
+    whose physics blew up, or a body thrown away, would otherwise write a file of NaN vertices).
+
+    Raises:
+        ExportError: naming the body (or structure box) and what is wrong.
+    """
+    from luminous_sim.limits import MAX_LAYOUT_COORDINATE_M
+
+    def bad(values: tuple[float, ...] | list[float]) -> bool:
+        return not all(math.isfinite(v) and abs(v) <= MAX_LAYOUT_COORDINATE_M for v in values)
+
+    for box in posed.structure:
+        if bad((*box.center, *box.size, *box.orientation)):
+            raise ExportError(f"structure {box.name}: pose or size not finite or beyond "
+                              f"+-{MAX_LAYOUT_COORDINATE_M:g} m; nothing was written")
+    for obj in posed.objects:
+        for link in obj.links:
+            if bad((*link.position, *link.orientation, *link.com_position, *link.com_orientation)):
+                raise ExportError(f"{obj.object_id} ({link.name}): pose not finite or beyond "
+                                  f"+-{MAX_LAYOUT_COORDINATE_M:g} m; nothing was written")
+        if bad([j.value for j in obj.joints]) or not (math.isfinite(obj.scale) and obj.scale > 0):
+            raise ExportError(f"{obj.object_id}: a joint value or the scale is not finite; nothing was written")
+
+
 def write(posed: PosedScene, fmt: str, out: Path, ceiling: bool = True) -> ExportResult:
-    """Write a posed scene (`world.posed.posed_scene`) in one format."""
+    """Write a posed scene (`world.posed.posed_scene`) in one format, atomically (the old file or the new one).
+
+    Raises:
+        ExportError: an unknown format, a suffix that does not fit it, or a pose that is not finite (`check_posed`).
+    """
     check_format(fmt, out)
+    check_posed(posed)
     out = Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)
     t0 = time.perf_counter()
@@ -129,12 +162,20 @@ def export(source: World | Scene | Path | str, fmt: str, out: Path | str, ceilin
     check_format(fmt, Path(out))
     if isinstance(source, World):
         return write(posed_scene(source), fmt, Path(out), ceiling)
-    from luminous_sim.scene import Scene
+    from luminous_sim.scene import Scene, check_scene
 
-    scene = source if isinstance(source, Scene) else load_scene(Path(source))
-    with build_world(scene) as world:
+    if isinstance(source, Scene):
+        scene = check_scene(source, "the scene to export")
+        where = "the scene to export"
+    else:
+        scene, where = load_scene(Path(source)), str(source)
+    try:
+        world = build_world(scene)
+    except LuminousError as exc:  # an asset the catalog lacks, ...: said of the scene it came from
+        raise ExportError(f"{where}: {exc}") from None
+    with world:
         return write(posed_scene(world), fmt, Path(out), ceiling)
 
 
-__all__ = ["FORMATS", "SUFFIXES", "ExportError", "ExportResult", "Format", "build_world", "check_format", "export",
-           "load_scene", "write"]
+__all__ = ["FORMATS", "SUFFIXES", "ExportError", "ExportResult", "Format", "build_world", "check_format",
+           "check_posed", "export", "load_scene", "write"]

@@ -6,7 +6,9 @@ UsdPreviewSurface material of its colour; the structure's boxes under /World/Str
 
 from __future__ import annotations
 
+import os
 import re
+import tempfile
 from pathlib import Path
 from typing import Any
 
@@ -39,9 +41,9 @@ def prim_name(object_id: str) -> str:
 
 
 class _Writer:
-    def __init__(self, path: Path):
+    def __init__(self) -> None:
         self.Gf, self.Sdf, self.Usd, self.UsdGeom, self.UsdShade, self.Vt = _pxr()
-        self.stage = self.Usd.Stage.CreateNew(str(path))
+        self.stage = self.Usd.Stage.CreateInMemory()
         self.UsdGeom.SetStageUpAxis(self.stage, self.UsdGeom.Tokens.z)
         self.UsdGeom.SetStageMetersPerUnit(self.stage, 1.0)
         world = self.UsdGeom.Xform.Define(self.stage, "/World")
@@ -85,8 +87,9 @@ class _Writer:
     def attributes(self, prim: Any, values: dict[str, Any]) -> None:
         vt = self.Sdf.ValueTypeNames
         for key, value in values.items():
+            # Int64: a scene's seed runs to 2**63-1, beyond a 32-bit Int
             kind = vt.Bool if isinstance(value, bool) else vt.Double if isinstance(value, float) \
-                else vt.Int if isinstance(value, int) else vt.String
+                else vt.Int64 if isinstance(value, int) else vt.String
             prim.CreateAttribute(f"{NAMESPACE}:{key}", kind, custom=True).Set(value)
 
 
@@ -101,12 +104,12 @@ def _object_attributes(obj: PosedObject) -> dict[str, Any]:
 
 
 def write_usd(posed: PosedScene, out: Path, ceiling: bool = True) -> None:
-    """Write the posed scene to `out` (.usd/.usdc binary, .usda text)."""
+    """Write the posed scene to `out` (.usd/.usdc binary, .usda text), atomically: the stage is built in memory,
+    exported to a temporary file beside `out` (of the same suffix, which picks the format) and moved onto it, so
+    a reader (or a kill) sees the old file or the new one, never none or a torn one."""
     out = Path(out)
     out.parent.mkdir(parents=True, exist_ok=True)
-    if out.exists():
-        out.unlink()  # CreateNew refuses an existing layer
-    w = _Writer(out)
+    w = _Writer()
     w.attributes(w.stage.GetPrimAtPath("/World"), {"room": posed.room, "seed": posed.seed})
     w.stage.DefinePrim("/World/Structure", "Scope")
     for i, box in enumerate(posed.structure):
@@ -128,4 +131,16 @@ def write_usd(posed: PosedScene, out: Path, ceiling: bool = True) -> None:
         w.attributes(prim.GetPrim(), _object_attributes(obj))
         for part in visual_parts(obj):
             w.mesh(f"{path}/{part.name}", part.mesh, part.rgba)
-    w.stage.GetRootLayer().Save()
+    fd, tmp = tempfile.mkstemp(dir=out.parent, prefix=f".{out.stem}.", suffix=f".tmp{out.suffix}")
+    os.close(fd)
+    try:
+        if not w.stage.GetRootLayer().Export(tmp):
+            raise LuminousError(f"{out}: USD could not write the file")
+        umask = os.umask(0)
+        os.umask(umask)
+        os.chmod(tmp, 0o666 & ~umask)  # mkstemp makes 0600; an export should read like any other file
+        os.replace(tmp, out)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise

@@ -10,7 +10,7 @@ from luminous_sim.scene.agent_grid import (
     reachable_grid,
     scene_reachable_grid,
 )
-from luminous_sim.scene.model import Layer, Scene, SceneObject
+from luminous_sim.scene.model import SCENE_STATES, Layer, Scene, SceneError, SceneObject, check_scene, read_regular
 from luminous_sim.scene.pose import (
     WallPose,
     against_wall,
@@ -39,10 +39,12 @@ from luminous_sim.scene.sight import Shade, View, in_sight, shades
 __all__ = [
     "AGENT_HEIGHT",
     "REACH",
+    "SCENE_STATES",
     "STEP",
     "Layer",
     "RegionSpot",
     "Scene",
+    "SceneError",
     "SceneObject",
     "Shade",
     "View",
@@ -50,6 +52,7 @@ __all__ = [
     "against_wall",
     "blocks_agent",
     "can_hold",
+    "check_scene",
     "distance_transform",
     "edge_slides",
     "feature_transform",
@@ -67,6 +70,7 @@ __all__ = [
     "open_tops",
     "reach_of",
     "reachable_grid",
+    "read_regular",
     "region_spots",
     "rotate",
     "sample_in_region",

@@ -6,8 +6,10 @@ wheel and is served from this process: the page fetches nothing from anywhere el
 from __future__ import annotations
 
 import contextlib
+import errno
 import io
 import math
+import socket
 import threading
 import time
 from collections.abc import Callable
@@ -300,10 +302,7 @@ class Viewer:
         self.step_md.content = (f"**step {step.index}** of {len(self.episode.steps) - 1}: `{step.action}`  \n"
                                 f"**instruction** {step.instruction or '-'}")
         if step.frame is not None:
-            from PIL import Image
-
-            with Image.open(step.frame) as im:
-                self.frame_image.image = np.asarray(im.convert("RGB"))
+            self.frame_image.image = _frame_pixels(step.frame)
         if self.follow.value:
             for client in self.server.get_clients().values():
                 with client.atomic():
@@ -328,14 +327,75 @@ class Viewer:
         self.server.stop()
 
 
+def _frame_pixels(path: Path) -> np.ndarray:
+    """A frame's pixels (checked when the episode was read; read again here without blocking and within the
+    limits, so that a file swapped since shows black instead of raising in viser's thread)."""
+    from PIL import Image
+
+    from luminous_sim.limits import MAX_FRAME_BYTES, MAX_FRAME_PIXELS
+    from luminous_sim.scene import read_regular
+
+    try:
+        raw = read_regular(path, MAX_FRAME_BYTES, "a frame image", ViewerError)
+        with Image.open(io.BytesIO(raw)) as im:
+            if im.size[0] * im.size[1] > MAX_FRAME_PIXELS:
+                raise ViewerError(f"{path}: too many pixels")
+            return np.asarray(im.convert("RGB"))
+    except (ViewerError, OSError, ValueError, Image.DecompressionBombError):
+        return np.zeros((300, 300, 3), dtype=np.uint8)
+
+
+PORT_TRIES = 1000
+"""Ports tried from the one asked for (as viser does) before `serve` gives up."""
+
+
+def free_port(host: str, port: int) -> int:
+    """The first port from `port` (at most PORT_TRIES, none beyond 65535) that `host` can listen on; `port` 0
+    stays 0 (the system picks one) once the host is known to be one to listen on.
+
+    Tried here, before the server's thread starts: viser's own search runs in that thread and, past 65535 or
+    with a host it cannot listen on, prints a traceback there and leaves its caller waiting for ever.
+
+    Raises:
+        ViewerError: `host` is not an address of this machine, or every port tried is taken.
+    """
+    try:
+        infos = socket.getaddrinfo(host, None, type=socket.SOCK_STREAM, flags=socket.AI_PASSIVE)
+    except (OSError, UnicodeError) as exc:
+        raise ViewerError(f"--host {host}: cannot listen there ({exc}); expected an address of this machine, "
+                          "e.g. 127.0.0.1") from None
+    family, _, _, _, address = infos[0]
+    last = min(port + PORT_TRIES - 1, 65535) if port else 0
+    for p in range(port, last + 1):
+        with socket.socket(family, socket.SOCK_STREAM) as s:
+            s.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)  # as the server will bind it
+            try:
+                s.bind((address[0], p, *address[2:]))
+            except OSError as exc:
+                if exc.errno in (errno.EADDRINUSE, errno.EACCES):
+                    continue
+                raise ViewerError(f"--host {host}: cannot listen there ({exc.strerror or exc}); expected an address "
+                                  "of this machine, e.g. 127.0.0.1") from None
+            return p
+    raise ViewerError(f"--port {port}: ports {port}..{last} on {host} are all in use; give another --port (or 0 "
+                      "for any free one)")
+
+
 def load_scene_for_view(scene_dir: Path) -> tuple[Scene, PosedScene]:
     """The scene of a scene folder and its bodies as PyBullet settles them (initial states applied)."""
-    from luminous_sim.export import build_world, load_scene
-    from luminous_sim.world.posed import posed_scene
+    from luminous_sim.export import load_scene
 
     scene = load_scene(Path(scene_dir))
+    return scene, posed_of(scene)
+
+
+def posed_of(scene: Scene) -> PosedScene:
+    """A scene's bodies as PyBullet settles them (initial states applied)."""
+    from luminous_sim.export import build_world
+    from luminous_sim.world.posed import posed_scene
+
     with build_world(scene) as world:
-        return scene, posed_scene(world)
+        return posed_scene(world)
 
 
 def serve(scene_dir: Path | str, trajectory: Path | str | None = None, port: int = 8080,
@@ -349,12 +409,21 @@ def serve(scene_dir: Path | str, trajectory: Path | str | None = None, port: int
         host: the interface to listen on (default: this machine only).
 
     Raises:
-        ViewerError: no scene or no episode where named, or viser is not installed (the `view` extra).
+        ViewerError: no scene or no episode where named, an episode of another scene or with a malformed field,
+            `host` not one to listen on or no free port from `port` (`free_port`), or viser is not installed
+            (the `view` extra).
+        ExportError: the scene folder holds no valid scene (`export.load_scene`).
     """
     try:
         import viser  # noqa: F401
     except ImportError:
         raise ViewerError("luminous view needs viser: pip install 'luminous-sim[view]'") from None
-    episode = load_episode(Path(trajectory)) if trajectory is not None else None
-    scene, posed = load_scene_for_view(Path(scene_dir))
-    return Viewer(scene, posed, episode, host, port)
+    if isinstance(port, bool) or not isinstance(port, int) or not 0 <= port <= 65535:
+        raise ViewerError(f"port {port!r}: expected a whole number in 0..65535")
+    free_port(host, port)  # before the scene is built: a busy port or a bad host is said at once
+    from luminous_sim.export import load_scene
+
+    scene = load_scene(Path(scene_dir))
+    episode = load_episode(Path(trajectory), scene) if trajectory is not None else None
+    posed = posed_of(scene)
+    return Viewer(scene, posed, episode, host, free_port(host, port))

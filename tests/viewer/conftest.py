@@ -32,8 +32,9 @@ def scene_dir(kitchen: Scene, tmp_path_factory: pytest.TempPathFactory) -> Path:
     return out
 
 
-def write_episode(out: Path, start: tuple[float, float], frames: bool = True) -> Path:
-    """An episode folder as `luminous demo` writes one, with ACTIONS from `start` facing north."""
+def write_episode(out: Path, start: tuple[float, float], frames: bool = True, scene: Scene | None = None) -> Path:
+    """An episode folder as `luminous demo` writes one, with ACTIONS from `start` facing north (played in
+    `scene`: its content key recorded; None: the room name "kitchen" only)."""
     from PIL import Image
 
     low = [{"api_action": {"action": a, "forceAction": True}, "discrete_action": {"action": a, "args": {}},
@@ -45,6 +46,8 @@ def write_episode(out: Path, start: tuple[float, float], frames: bool = True) ->
               "plan": {"high_pddl": [], "low_actions": low}, "images": images, "success": True,
               "task": {"task_type": "look_at_obj_in_light"}, "task_desc": "look at the apple",
               "high_descs": list(HIGH_DESCS), "goal_conditions": [1, 1], "scene": "kitchen"}
+    if scene is not None:
+        record.update(scene=scene.room.name, scene_key=scene.content_key())
     out.mkdir(parents=True, exist_ok=True)
     (out / "trajectory.json").write_text(json.dumps(record))
     (out / "instructions.txt").write_text("\n".join(["look at the apple", "", *HIGH_DESCS]) + "\n")
@@ -59,4 +62,4 @@ def write_episode(out: Path, start: tuple[float, float], frames: bool = True) ->
 @pytest.fixture(scope="package")
 def episode_dir(kitchen: Scene, tmp_path_factory: pytest.TempPathFactory) -> Path:
     x, y = (float(v) for v in scene_reachable_grid(kitchen)[0])
-    return write_episode(tmp_path_factory.mktemp("episode"), (x, y))
+    return write_episode(tmp_path_factory.mktemp("episode"), (x, y), scene=kitchen)
