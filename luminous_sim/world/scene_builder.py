@@ -10,7 +10,7 @@ import numpy as np
 
 from luminous_sim.assets.catalog import Catalog, default_catalog
 from luminous_sim.assets.materials import palette
-from luminous_sim.scene import Scene, SceneObject
+from luminous_sim.scene import Scene, SceneError, SceneObject
 from luminous_sim.world.asset_loader import (
     LoadedAsset,
     base_link_pose,
@@ -127,12 +127,73 @@ def floor_rectangles(poly) -> list[tuple[tuple[float, float], tuple[float, float
     return out
 
 
+MAX_DEEP_OVERLAPS = 8
+"""The most movable objects one movable object may lie deep inside (boxes sharing over half the smaller one's
+volume) before a scene is refused as not physical: generated scenes have none, and objects stacked into one spot
+(300 of them: about 240 s of settling, each step colliding every pair) have hundreds."""
+OVERLAP_SHARE = 0.5
+OVERLAP_CHUNK = 256
+
+
+def _world_boxes(objects: list[SceneObject], catalog: Catalog) -> tuple[np.ndarray, np.ndarray]:
+    """Axis-aligned world boxes (lo, hi; n x 3) of the objects' assets at their poses and scales."""
+    lo, hi = np.empty((len(objects), 3)), np.empty((len(objects), 3))
+    for i, obj in enumerate(objects):
+        entry = catalog.for_object(obj)
+        (x0, y0, z0), (x1, y1, z1) = entry.bbox_min, entry.bbox_max
+        c, s = np.cos(obj.yaw), np.sin(obj.yaw)
+        corners = np.array([(x, y) for x in (x0, x1) for y in (y0, y1)]) @ np.array([[c, s], [-s, c]])
+        px, py, pz = obj.position
+        lo[i] = (px + corners[:, 0].min(), py + corners[:, 1].min(), pz + z0)
+        hi[i] = (px + corners[:, 0].max(), py + corners[:, 1].max(), pz + z1)
+    return lo, hi
+
+
+def check_stacking(scene: Scene, catalog: Catalog) -> None:
+    """Refuse a scene whose movable objects are stacked into one another (deterministic, before any physics).
+
+    Raises:
+        SceneError: a movable object lies deep inside more than `MAX_DEEP_OVERLAPS` others (not its parent or
+            children): the worst one is named with how many.
+    """
+    movable = [o for o in scene.objects if not o.fixed]
+    if len(movable) <= MAX_DEEP_OVERLAPS:
+        return
+    lo, hi = _world_boxes(movable, catalog)
+    volume = np.prod(np.maximum(hi - lo, 1e-6), axis=1)
+    index = {o.id: i for i, o in enumerate(movable)}
+    family = [(i, index[o.parent]) for i, o in enumerate(movable) if o.parent in index]
+    counts = np.zeros(len(movable), dtype=int)
+    for start in range(0, len(movable), OVERLAP_CHUNK):
+        rows = slice(start, start + OVERLAP_CHUNK)
+        shared = np.prod(np.clip(np.minimum(hi[rows, None], hi[None]) - np.maximum(lo[rows, None], lo[None]), 0, None),
+                         axis=2)
+        deep = shared > OVERLAP_SHARE * np.minimum(volume[rows, None], volume[None])
+        for i in range(deep.shape[0]):
+            deep[i, start + i] = False
+        for a, b in family:  # a child inside its receptacle is designed to be there
+            for r, c in ((a, b), (b, a)):
+                if start <= r < start + deep.shape[0]:
+                    deep[r - start, c] = False
+        counts[rows] = deep.sum(axis=1)
+    worst = int(np.argmax(counts))
+    if counts[worst] > MAX_DEEP_OVERLAPS:
+        raise SceneError(f"lies deep inside {counts[worst]} other movable objects (at most {MAX_DEEP_OVERLAPS}: "
+                         "luminous_sim.world.scene_builder.MAX_DEEP_OVERLAPS); objects stacked into one another are "
+                         "not a physical scene", object_id=movable[worst].id, field="position")
+
+
 def build_scene(scene: Scene, catalog: Catalog | None = None, client: BulletClient | None = None,
                 settle_steps: int = 240, lod: bool = False, structure_last: bool = True) -> BuiltScene:
     """Create the room and objects in `client` (a new DIRECT one by default) and let them settle; `lod`
     loads the assets' level-of-detail visuals, `structure_last` paints the floor and walls after the objects
-    (`paint_structure_last`); neither changes the physics."""
+    (`paint_structure_last`); neither changes the physics.
+
+    Raises:
+        SceneError: objects stacked into one another (`check_stacking`), before anything is loaded.
+    """
     catalog = catalog or default_catalog()
+    check_stacking(scene, catalog)
     client = client or new_client()
     room = scene.room
     minx, miny, maxx, maxy = room.bounds

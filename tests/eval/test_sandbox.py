@@ -12,7 +12,6 @@ import numpy as np
 import pytest
 
 from luminous_sim.cli import eval_cmd
-from luminous_sim.cli.main import main
 from luminous_sim.env import LuminousEnv
 from luminous_sim.eval import (
     AgentContext,
@@ -25,6 +24,7 @@ from luminous_sim.eval import (
     sandbox,
 )
 from luminous_sim.eval.metrics import AGENT_FAULT, ENDS
+from tests.eval.test_cli import run
 
 EPISODES = [9, 23]
 """Two U+ entries that play fast (look_at_obj_in_light)."""
@@ -106,15 +106,6 @@ def agents_dir(tmp_path_factory):
     sys.path.remove(str(folder))
 
 
-def run_cli(argv, capsys):
-    try:
-        code = main(argv)
-    except SystemExit as exc:
-        code = exc.code
-    out = capsys.readouterr()
-    return code, out.out, out.err
-
-
 def test_the_cli_defaults_are_the_sandboxs():
     assert (eval_cmd.DEFAULT_STEP_TIMEOUT, eval_cmd.DEFAULT_AGENT_MEMORY_MB, eval_cmd.MIN_AGENT_MEMORY_MB) == (
         sandbox.DEFAULT_STEP_TIMEOUT, sandbox.DEFAULT_AGENT_MEMORY_MB, sandbox.MIN_AGENT_MEMORY_MB)
@@ -162,17 +153,17 @@ def test_a_crash_in_a_local_worker_process_is_named_and_its_workers_exit(agents_
 def test_the_cli_exits_1_with_the_cause_and_resumes(agents_dir, tmp_path, capsys):
     argv = ["eval", "--policy", f"{MODULE}:os_exit", "--split", "U+", "--live", "--episodes", "2", "--out",
             str(tmp_path / "o"), "--env", "width=64", "--env", "height=64", "--step-timeout", "1"]
-    code, _out, err = run_cli(argv, capsys)
+    code, _out, err = run(argv, capsys)
     assert code == 1
     assert "luminous eval: error: the agent exited with status 3 during act() on U+ episode 1 at step 2" in err
     assert "1 finished episode kept in" in err and not (tmp_path / "o" / "report.json").exists()
     kept = (tmp_path / "o" / "episodes" / "U+-0.json").read_text()
-    code, _out, err = run_cli(argv, capsys)  # resumes: episode 0 is read back; episode 1 is a fresh child's first
+    code, _out, err = run(argv, capsys)  # resumes: episode 0 is read back; episode 1 is a fresh child's first
     assert code == 0, err
     assert (tmp_path / "o" / "episodes" / "U+-0.json").read_text() == kept
     report = json.loads((tmp_path / "o" / "report.json").read_text())
     assert [e["end"] for e in report["episodes"]] == ["stop", "stop"]
-    code, _out, err = run_cli(["eval", "--policy", "exits_on_import:make", "--split", "U+", "--live", "--episodes",
+    code, _out, err = run(["eval", "--policy", "exits_on_import:make", "--split", "U+", "--live", "--episodes",
                                "1", "--out", str(tmp_path / "x")], capsys)
     assert code == 1 and "the agent called sys.exit(0) while starting (importing exits_on_import" in err
 
@@ -183,7 +174,7 @@ def test_the_cli_exits_1_with_the_cause_and_resumes(agents_dir, tmp_path, capsys
     (["--agent-memory", "100"], "argument --agent-memory: expected a whole number at least 1024, got 100"),
 ])
 def test_bad_limits_are_refused(argv, message, tmp_path, capsys):
-    code, _out, err = run_cli(["eval", "--policy", "random", "--split", "U+", "--live", "--out", str(tmp_path / "o"),
+    code, _out, err = run(["eval", "--policy", "random", "--split", "U+", "--live", "--out", str(tmp_path / "o"),
                                *argv], capsys)
     assert code == 2 and message in err and not (tmp_path / "o").exists()
 
@@ -247,7 +238,7 @@ def test_on_ray_a_timeout_ends_the_episode_and_each_crash_is_named(ray_backend, 
 def test_on_ray_the_cli_exits_1_with_the_cause(ray_backend, agents_dir, tmp_path, capsys, monkeypatch):
     monkeypatch.chdir(agents_dir)
     monkeypatch.setenv("PYTHONPATH", str(agents_dir))  # the command adds the current folder to it
-    code, _out, err = run_cli(["eval", "--policy", f"{MODULE}:exit", "--split", "U+", "--live", "--episodes", "2",
+    code, _out, err = run(["eval", "--policy", f"{MODULE}:exit", "--split", "U+", "--live", "--episodes", "2",
                                "--backend", "ray", "--out", str(tmp_path / "o"), "--env", "width=64", "--env",
                                "height=64"], capsys)
     assert code == 1, err
