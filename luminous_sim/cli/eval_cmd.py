@@ -209,10 +209,11 @@ def _canonical_build(args: argparse.Namespace, backend: object) -> Path:
     frames: evaluation renders its own), resumable; its folder. The output folder is checked first."""
     from luminous_sim.benchmark import benchmark_size, canonical_build_dir
     from luminous_sim.data import BuildOptions, build_split, built_count, make_backend
-    from luminous_sim.eval import check_output, data_run
+    from luminous_sim.eval import AgentLimits, check_output, data_run
 
     out = Path(args.build) if args.build is not None else canonical_build_dir(args.split)
-    check_output(Path(args.out), data_run(args.policy, out, args.split, args.seed, dict(args.env)))
+    check_output(Path(args.out), data_run(args.policy, out, args.split, args.seed, dict(args.env),
+                                          AgentLimits(step_timeout=args.step_timeout, memory_mb=args.agent_memory)))
     want = max(args.episodes or benchmark_size(args.split), built_count(out, args.split))
     options = BuildOptions(frames=False, video=False)
     if backend is None:

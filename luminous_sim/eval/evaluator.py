@@ -392,10 +392,16 @@ def _claim(out_dir: Path, run: dict[str, Any]) -> None:
         write_atomic(Path(out_dir) / RUN_FILE, json.dumps(run, indent=1) + "\n")
 
 
-def data_run(policy: str, data_dir: Path, split: str, seed: int, env_kwargs: dict[str, Any] | None) -> dict[str, Any]:
-    """What an evaluation of a dataset folder records in its `run.json` (`evaluate_data`'s arguments)."""
+def data_run(policy: str, data_dir: Path, split: str, seed: int, env_kwargs: dict[str, Any] | None,
+             limits: AgentLimits | None = None) -> dict[str, Any]:
+    """What an evaluation of a dataset folder records in its `run.json` (`evaluate_data`'s arguments; the agent's
+    limits too, since they decide which episodes end as `agent_timeout`: a resume with others is refused)."""
     return {"policy": policy, "data": str(Path(data_dir).resolve()), "split": split, "seed": seed,
-            "env": _env_config(split, env_kwargs).to_kwargs()}
+            "env": _env_config(split, env_kwargs).to_kwargs(), "limits": _limits_record(limits)}
+
+
+def _limits_record(limits: AgentLimits | None) -> dict[str, Any]:
+    return dataclasses.asdict(limits or AgentLimits())
 
 
 def check_output(out_dir: Path, run: dict[str, Any]) -> bool:
@@ -521,7 +527,8 @@ def evaluate(policy: str, split: str, episodes: int | Iterable[int], *, seed: in
     config = _env_config(split, env_kwargs)
     env_json = json.dumps(config.to_kwargs(), sort_keys=True)
     if out_dir is not None:
-        _claim(out_dir, {"policy": policy, "split": split, "seed": seed, "env": config.to_kwargs()})
+        _claim(out_dir, {"policy": policy, "split": split, "seed": seed, "env": config.to_kwargs(),
+                         "limits": _limits_record(limits)})
     jobs = [EpisodeJob(policy, split, i, seed, env_json, None if out_dir is None else str(out_dir), limits=limits)
             for i in indices]
     return _run_all(policy, split, seed, config, jobs, progress, workers, backend)
@@ -562,7 +569,7 @@ def evaluate_data(policy: str, data_dir: Path, *, split: str | None = None,
     config = _env_config(label, env_kwargs)
     env_json = json.dumps(config.to_kwargs(), sort_keys=True)
     if out_dir is not None:
-        _claim(out_dir, data_run(policy, data_dir, label, seed, env_kwargs))
+        _claim(out_dir, data_run(policy, data_dir, label, seed, env_kwargs, limits))
     jobs = [EpisodeJob(policy, r.split, r.index, seed, env_json, None if out_dir is None else str(out_dir),
                        trial="" if r.unbuilt or r.broken else str(r.path), trial_rel=r.rel, unbuilt=r.unbuilt,
                        named=r.named, broken=r.broken)

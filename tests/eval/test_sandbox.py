@@ -244,3 +244,13 @@ def test_on_ray_the_cli_exits_1_with_the_cause(ray_backend, agents_dir, tmp_path
     assert code == 1, err
     assert "luminous eval: error: the agent called sys.exit(0) during act() on U+ episode 1 at step 2" in err
     assert "Traceback" not in err and [p.name for p in (tmp_path / "o" / "episodes").iterdir()] == ["U+-0.json"]
+
+
+def test_a_resume_with_other_agent_limits_is_refused(tmp_path, capsys):
+    """The limits decide which episodes end as agent_timeout: run.json records them and a resume must match."""
+    argv = ["eval", "--policy", "random", "--split", "U+", "--episodes", "1", "--live", "--out", str(tmp_path / "o")]
+    code, _out, err = run(argv, capsys)
+    assert code == 0, err
+    assert json.loads((tmp_path / "o" / "run.json").read_text())["limits"]["step_timeout"] == 10.0
+    code, _out, err = run(argv + ["--step-timeout", "3"], capsys)
+    assert code == 2 and "another evaluation" in err
