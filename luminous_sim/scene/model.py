@@ -74,6 +74,10 @@ class SceneError(LuminousError):
         return SceneError(self.problem, where=where, object_id=self.object_id, field=self.field)
 
 
+ROOM_MARGIN_M = 1.0
+"""How far outside its room's floor box (and below the floor, above the ceiling) an object's origin may lie."""
+
+
 def _show(value: Any) -> str:
     text = repr(value)
     return text if len(text) <= 60 else text[:57] + "..."
@@ -303,6 +307,14 @@ class Scene(BaseModel):
         if max(x1 - x0, y1 - y0) > MAX_SCENE_SIDE_M:
             raise SceneError(f"the floor spans {x1 - x0:g} x {y1 - y0:g} m; a scene's room may span at most "
                              f"{MAX_SCENE_SIDE_M:g} m (luminous_sim.limits.MAX_SCENE_SIDE_M)", field="room.outline")
+        top = float(self.room.wall_height) + ROOM_MARGIN_M
+        for o in self.objects:
+            x, y, z = o.position
+            if not (x0 - ROOM_MARGIN_M <= x <= x1 + ROOM_MARGIN_M and y0 - ROOM_MARGIN_M <= y <= y1 + ROOM_MARGIN_M
+                    and -ROOM_MARGIN_M <= z <= top):
+                raise SceneError(f"expected a place in its room (x {x0:g}..{x1:g}, y {y0:g}..{y1:g}, z 0..{top - 1:g} "
+                                 f"m, give or take {ROOM_MARGIN_M:g} m), got ({x:g}, {y:g}, {z:g})", object_id=o.id,
+                                 field="position")
         return self
 
     def content_key(self) -> str:

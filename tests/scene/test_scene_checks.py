@@ -180,3 +180,9 @@ def test_the_object_limit_is_ten_times_the_largest_generated_house() -> None:
     flat = default_house().parent / "two_bedroom_flat.yaml"
     count = len(generate_house(cdf.load(flat), seed=0).scene.objects)
     assert 100 < count and 10 * count <= MAX_SCENE_OBJECTS
+
+
+@pytest.mark.parametrize("position", [[500.0, 1.0, 0.9], [1.0, -40.0, 0.9], [1.0, 1.0, -5.0], [1.0, 1.0, 30.0]])
+def test_an_object_far_outside_its_room_is_refused(tmp_path: Path, position: list[float]) -> None:
+    with pytest.raises(SceneError, match=r"object 'Apple\|0': position: expected a place in its room"):
+        Scene.load(_write(tmp_path, _doc([_object(0, position=position)])))
