@@ -228,7 +228,9 @@ def _stub_heavy_work(monkeypatch) -> None:
     monkeypatch.setattr(layouts, "train_layouts", lambda out, **kw: SimpleNamespace(
         path=out, layouts=0, examples=0, losses=[0.0], seconds=0.0))
     monkeypatch.setattr(scene_outputs, "write_scene_outputs", lambda g, out, physics=True: {"layout": {"ok": True},
-                                                                                      "satisfies_cdf": True})
+                                                                                      "satisfies_cdf": True,
+                                                                                      "unplaced_named_by_cdf": [],
+                                                                                      "unplaced_others": []})
     import luminous_sim.cli.view_cmd as view_cmd
     import luminous_sim.export as export
     import luminous_sim.viewer.app as viewer_app
