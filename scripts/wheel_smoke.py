@@ -164,9 +164,9 @@ def export(scene: Path) -> None:
         print(f"   {name}: {size / 1e6:.2f} MB")
 
 
-@step("luminous view serves its page")
+@step("luminous view serves its page (the demo's episode in its scene)")
 def view(scene: Path) -> None:
-    proc = subprocess.Popen([LUMINOUS, "view", str(scene), "--trajectory", "demo/episode", "--port", "0"],
+    proc = subprocess.Popen([LUMINOUS, "view", str(scene), "--trajectory", str(scene), "--port", "0"],
                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     try:
         assert proc.stdout is not None
@@ -197,9 +197,8 @@ def main() -> int:
     rooms()
     envs()
     evaluate()
-    scene = next(s for s in scenes if s.name == "kitchen_apple_fridge")
-    export(scene)
-    view(scene)
+    export(next(s for s in scenes if s.name == "kitchen_apple_fridge"))
+    view(Path("demo/episode"))  # the demo's episode in its own kitchen (the folder holds both)
     print("\nsmoke steps (s): " + ", ".join(f"{name.split(':')[0]} {t:.1f}" for name, t in STEPS))
     print(f"wheel smoke: all passed in {time.perf_counter() - start:.0f} s")
     return 0
