@@ -361,7 +361,7 @@ def free_port(host: str, port: int) -> int:
     """
     try:
         infos = socket.getaddrinfo(host, None, type=socket.SOCK_STREAM, flags=socket.AI_PASSIVE)
-    except (OSError, UnicodeError) as exc:
+    except (OSError, UnicodeError, ValueError) as exc:
         raise ViewerError(f"--host {host}: cannot listen there ({exc}); expected an address of this machine, "
                           "e.g. 127.0.0.1") from None
     family, _, _, _, address = infos[0]
