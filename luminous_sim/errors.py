@@ -175,16 +175,18 @@ def link_or_kind(path: str | os.PathLike[str]) -> str:
 
 
 def read_file_bytes(path: str | os.PathLike[str], limit: int, what: str,
-                    error: type[LuminousError] = LuminousError) -> bytes:
-    """The bytes of the regular file `path` (never followed through a link) of at most `limit` bytes.
+                    error: type[LuminousError] = LuminousError, follow_links: bool = False) -> bytes:
+    """The bytes of the regular file `path` (never followed through a link, unless `follow_links`) of at most
+    `limit` bytes.
 
-    What `path` is, is checked before it is opened (`os.lstat`: a FIFO would block, a device could be endless),
-    and again on the open descriptor (opened without following a link and without blocking), so that a file
-    swapped in between is refused too; at most `limit` + 1 bytes are read.
+    What `path` is, is checked before it is opened (`os.lstat`, or `os.stat` with `follow_links`: a FIFO would
+    block, a device could be endless), and again on the open descriptor (opened without blocking, and without
+    following a link unless asked), so that a file swapped in between is refused too; at most `limit` + 1 bytes
+    are read.
 
     Raises:
-        error: missing, a link, not a regular file (a folder, a FIFO, a device, a socket) or over `limit` bytes;
-            the message names the file and says it was expected to be `what`.
+        error: missing, a link (unless `follow_links`), not a regular file (a folder, a FIFO, a device, a socket)
+            or over `limit` bytes; the message names the file and says it was expected to be `what`.
     """
     import errno
 
@@ -200,7 +202,7 @@ def read_file_bytes(path: str | os.PathLike[str], limit: int, what: str,
         return error(f"{path}: over {limit} bytes; expected {what}")
 
     try:
-        before = os.lstat(path)
+        before = os.stat(path) if follow_links else os.lstat(path)
     except FileNotFoundError:
         raise refused("no such file or folder") from None
     except OSError as exc:
@@ -208,7 +210,9 @@ def read_file_bytes(path: str | os.PathLike[str], limit: int, what: str,
     problem = not_a_file(before.st_mode) or (too_big() if before.st_size > limit else None)
     if problem is not None:
         raise problem
-    flags = os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0) | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0)
+    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_CLOEXEC", 0)
+    if not follow_links:
+        flags |= getattr(os, "O_NOFOLLOW", 0)
     try:
         fd = os.open(path, flags)
     except OSError as exc:

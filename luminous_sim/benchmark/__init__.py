@@ -25,7 +25,7 @@ from luminous_sim.benchmark.frozen import (
     frozen_header,
 )
 from luminous_sim.benchmark.key import episode_key, start_fields
-from luminous_sim.benchmark.trial import TrialEpisode, TrialError, read_trial
+from luminous_sim.benchmark.trial import TrialEpisode, TrialError, read_trial, trial_folders
 
 __all__ = [
     "FROZEN",
@@ -48,5 +48,6 @@ __all__ = [
     "read_trial",
     "split_layouts",
     "start_fields",
+    "trial_folders",
     "type_counts",
 ]

@@ -172,6 +172,28 @@ def task_problems(task: TaskInstance, scene: Scene) -> list[str]:
     return out
 
 
+def trial_folders(root: Path, limit: int | None = None) -> tuple[list[Path], list[Path]]:
+    """The folders under `root` (itself included) that hold an entry named traj_data.json, sorted, found without
+    following any symbolic link to a folder; and those links (not walked). The one walk over a dataset folder
+    (`luminous eval --data`, the thor controller's scene index).
+
+    Raises:
+        TrialError: more than `limit` such folders.
+    """
+    import os
+
+    found: list[Path] = []
+    linked: list[Path] = []
+    for here, dirs, files in os.walk(root, followlinks=False):
+        dirs.sort()
+        linked += [Path(here) / d for d in dirs if os.path.islink(os.path.join(here, d))]
+        if TRAJ in files or TRAJ in dirs:
+            found.append(Path(here))
+            if limit is not None and len(found) > limit:
+                raise TrialError(f"{root}: holds more than {limit} trials")
+    return sorted(found), sorted(linked)
+
+
 def read_trial(path: Path, annotation: int = 0) -> TrialEpisode:
     """The episode of the trial folder `path` (annotation `annotation` of its `turk_annotations`).
 

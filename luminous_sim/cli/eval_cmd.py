@@ -10,10 +10,14 @@ import math
 import os
 import sys
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from luminous_sim.cli.args import int_range, output_dir, seed
 from luminous_sim.data.backends import BACKENDS
 from luminous_sim.limits import MAX_AGENT_MEMORY_MB, MAX_EVAL_EPISODES, MAX_STEP_TIMEOUT_S, MAX_WORKERS
+
+if TYPE_CHECKING:
+    from luminous_sim.eval import AgentCrashed, EvalReport
 
 SPLITS: tuple[str, ...] = ("S+", "U+", "U+test")
 """The split names (`luminous_sim.splits.PLUS_SPLITS`; a test keeps the two in step)."""
@@ -101,7 +105,6 @@ def _run(args: argparse.Namespace) -> int:
         AgentCrashed,
         AgentLimits,
         EpisodeOutcome,
-        EvalReport,
         check_policy,
         evaluate,
         evaluate_data,
@@ -167,13 +170,13 @@ def _shorten(text: str, limit: int = 200) -> str:
     return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
-def _incomplete(report: object) -> int:
+def _incomplete(report: EvalReport) -> int:
     """1 (and each cause on stderr) when entries are unavailable because of a crash, not of the task (the
     population is then incomplete), or because their trial is broken (`BROKEN_TRIAL`); else 0."""
     from luminous_sim.eval import crashed_build
     from luminous_sim.eval.metrics import BROKEN_TRIAL
 
-    outcomes = getattr(report, "outcomes", ())
+    outcomes = report.outcomes
     crashed = [o for o in outcomes if crashed_build(o)]
     unavailable = [o for o in outcomes if not o.drawn]
     for o in unavailable:
@@ -192,13 +195,13 @@ def _incomplete(report: object) -> int:
     return 0
 
 
-def _crashed(exc: Exception, out: Path) -> int:
+def _crashed(exc: AgentCrashed, out: Path) -> int:
     """1, and on stderr the cause of an agent's crash (`AgentCrashed`) and what the output folder kept: the
     evaluation stopped there, and the same command resumes it."""
     episodes = out / "episodes"
     kept = len(list(episodes.glob("*.json"))) if episodes.is_dir() else 0
     print(f"luminous eval: error: {exc}", file=sys.stderr)
-    print(f"error: the evaluation stopped: the agent crashed ({getattr(exc, 'cause', 'raised')}); {kept} finished "
+    print(f"error: the evaluation stopped: the agent crashed ({exc.cause}); {kept} finished "
           f"episode{'s' if kept != 1 else ''} kept in {episodes} (no report written); fix the agent and run the same "
           "command again to resume", file=sys.stderr)
     return 1

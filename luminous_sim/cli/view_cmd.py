@@ -30,12 +30,11 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 def wait_for_interrupt() -> None:
     """Wait until Ctrl-C (a seam: the CLI's tests replace it)."""
+    import contextlib
     import threading
 
-    try:
+    with contextlib.suppress(KeyboardInterrupt):
         threading.Event().wait()
-    except KeyboardInterrupt:
-        pass
 
 
 def _run(args: argparse.Namespace) -> int:

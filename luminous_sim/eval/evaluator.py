@@ -45,9 +45,19 @@ from luminous_sim.benchmark import benchmark_entry, benchmark_size
 from luminous_sim.data.backends import Backend
 from luminous_sim.env import EnvConfig, EpisodeUnavailable, LuminousEnv
 from luminous_sim.errors import LuminousError, link_or_kind, read_json_file
-from luminous_sim.eval.metrics import AGENT_FAULT, BROKEN_TRIAL, EpisodeOutcome, Metrics, metrics, metrics_by_type
+from luminous_sim.eval.metrics import (
+    AGENT_FAULT,
+    BROKEN_TRIAL,
+    BUILD,
+    BUILD_CRASH,
+    EpisodeOutcome,
+    Metrics,
+    metrics,
+    metrics_by_type,
+)
 from luminous_sim.eval.policies import Agent, PolicyError, ReplayAgent, check_policy, make_agent
 from luminous_sim.eval.sandbox import AgentCrashed, AgentLimits, AgentTimeout
+from luminous_sim.eval.trials import trial_problem
 from luminous_sim.eval.workers import map_local, map_ordered
 from luminous_sim.limits import MAX_EPISODE_FILE_BYTES, MAX_EVAL_EPISODES, MAX_INPUT_BYTES
 from luminous_sim.splits import plus_split
@@ -85,6 +95,8 @@ class EpisodeJob:
     """A build job that wrote no trial (its stage and cause): the outcome is `unavailable`, cause `build`."""
     named: tuple[str, str, int] | None = None
     """(task type, floor plan, layout) of an unbuilt job, as the build recorded them."""
+    stage: str = ""
+    """The build stage an unbuilt job failed at: one of `data.RETRIED_STAGES` makes its outcome `BUILD_CRASH`."""
     broken: str = ""
     """Why the listed trial folder cannot be read (`TrialRef.broken`): the outcome is `unavailable`, cause
     `broken_trial`, and nothing in the folder is read."""
@@ -170,20 +182,19 @@ def play(env: LuminousEnv, agent: Agent, split: str, index: int, seed: int = 0, 
         return EpisodeOutcome(**named, end="unavailable", cause=exc.cause, detail=exc.detail)
     assert env.episode is not None and env.episode.expert is not None, "the evaluation env proves the expert"
     key = str(info["episode_key"])
-    steps, terminated, truncated = 0, False, False
+    steps, terminated, truncated, timed_out = 0, False, False, False
     fault = ""
     try:
         steps_text = obs.get("high_descs", "")
         agent.reset(obs["instruction"], {**info, "episode_seed": own_seed,
                                          "high_descs": steps_text.split("\n") if steps_text.strip(".") else []})
     except AgentTimeout as exc:  # the agent's process was killed; the next episode gets a fresh one
-        fault, truncated = f"at reset: {exc}", True
+        fault, timed_out = f"at reset: {exc}", True
     except AgentCrashed as exc:
         raise exc.on(split, index) from None
     except Exception as exc:
         raise PolicyError(f"the agent raised on {split} episode {index} at reset: {type(exc).__name__}: {exc}") from exc
-    timed_out = bool(fault)
-    while not (terminated or truncated):
+    while not (terminated or truncated or timed_out):
         try:
             action = agent.act(obs, info)
         except AgentTimeout as exc:
@@ -315,11 +326,9 @@ def read_outcome(path: Path, split: str, index: int, job: EpisodeJob | None = No
 
 
 def crashed_build(outcome: EpisodeOutcome) -> bool:
-    """Whether an outcome is `unavailable` because its build crashed or made another episode (the installation's
-    fault, `data.RETRIED_STAGES`), not because the task could not be built."""
-    from luminous_sim.data import RETRIED_STAGES
-
-    return not outcome.drawn and outcome.cause == "build" and outcome.detail.split(":", 1)[0] in RETRIED_STAGES
+    """Whether an outcome is `unavailable` because its build crashed or made another episode (`BUILD_CRASH`: the
+    installation's fault), not because the task could not be built."""
+    return not outcome.drawn and outcome.cause == BUILD_CRASH
 
 
 def run_job(job: EpisodeJob) -> EpisodeOutcome:
@@ -345,11 +354,14 @@ def _run_job(job: EpisodeJob) -> tuple[EpisodeOutcome, str]:
                 shutil.rmtree(path)
             else:
                 path.unlink()
-    broken = job.broken or (_trial_problem(job.trial) if job.trial and not job.unbuilt else "")
+    broken = job.broken or (trial_problem(job.trial) if job.trial and not job.unbuilt else "")
     if job.unbuilt or broken:  # an unbuilt job, or a trial that cannot be read or whose task is impossible
+        from luminous_sim.data import RETRIED_STAGES
+
         task_type, floor_plan, layout = job.where()
+        cause = (BUILD_CRASH if job.stage in RETRIED_STAGES else BUILD) if job.unbuilt else BROKEN_TRIAL
         outcome = EpisodeOutcome(job.split, job.index, task_type, floor_plan, layout, end="unavailable",
-                                 cause="build" if job.unbuilt else BROKEN_TRIAL, detail=job.unbuilt or broken,
+                                 cause=cause, detail=job.unbuilt or broken,
                                  trial=job.trial_rel)
         if path is not None:
             write_atomic(path, json.dumps(outcome_record(outcome), indent=1) + "\n")
@@ -368,13 +380,6 @@ def _run_job(job: EpisodeJob) -> tuple[EpisodeOutcome, str]:
     if path is not None:
         write_atomic(path, json.dumps(outcome_record(outcome), indent=1) + "\n")
     return outcome, damaged
-
-
-def _trial_problem(trial: str) -> str:
-    """Why a trial folder cannot be played (a broken trial), or "" (`trials.trial_problem`)."""
-    from luminous_sim.eval.trials import trial_problem
-
-    return trial_problem(trial)
 
 
 def _replay_agent(trial: str) -> ReplayAgent:
@@ -572,7 +577,6 @@ def evaluate_data(policy: str, data_dir: Path, *, split: str | None = None,
         _claim(out_dir, data_run(policy, data_dir, label, seed, env_kwargs, limits))
     jobs = [EpisodeJob(policy, r.split, r.index, seed, env_json, None if out_dir is None else str(out_dir),
                        trial="" if r.unbuilt or r.broken else str(r.path), trial_rel=r.rel, unbuilt=r.unbuilt,
-                       named=r.named, broken=r.broken)
+                       named=r.named, stage=r.stage, broken=r.broken, limits=limits)
             for r in refs]
-    jobs = [dataclasses.replace(job, limits=limits) for job in jobs]
     return _run_all(policy, label, seed, config, jobs, progress, workers, backend)

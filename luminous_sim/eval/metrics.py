@@ -34,6 +34,13 @@ AGENT_FAULT = "agent_fault"
 unknown action name or arguments the env cannot decode (a malformed mask); `detail` says which, at which
 step. A mask that decodes but hits nothing is an ordinary failed action, as in ALFRED. Also the `cause` of an
 `agent_timeout` end (`detail`: the call and the step)."""
+BUILD = "build"
+"""The `cause` of an `unavailable` end for a job the build could not do (no task fits, the oracle failed): part
+of the population, a failure in SR all."""
+BUILD_CRASH = "build_crash"
+"""The `cause` of an `unavailable` end for a job whose build failed through the installation, not the task (a
+crash or another episode than the frozen split, `data.RETRIED_STAGES`): never kept as a result, its build is
+retried on the next run, and `luminous eval` exits 1 (the population is incomplete)."""
 BROKEN_TRIAL = "broken_trial"
 """The `cause` of an `unavailable` end for a trial of a dataset folder that cannot be played: a folder reached
 through a symbolic link or outside the dataset folder, a file that is missing, special, oversized or not
@@ -62,7 +69,7 @@ class EpisodeOutcome:
     failures: int = 0
     instruction: str = ""
     cause: str = ""
-    """Why an unavailable entry has no episode (`env.UNAVAILABLE_CAUSES`, "build", `BROKEN_TRIAL`),
+    """Why an unavailable entry has no episode (`env.UNAVAILABLE_CAUSES`, `BUILD`, `BUILD_CRASH`, `BROKEN_TRIAL`),
     `AGENT_FAULT` for an `invalid_action` or `agent_timeout` end; "" otherwise."""
     detail: str = ""
     episode_key: str = ""

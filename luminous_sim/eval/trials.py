@@ -12,6 +12,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from luminous_sim.data.manifest import plain_name
 from luminous_sim.errors import LuminousError, link_or_kind, read_json_file
 from luminous_sim.limits import MAX_EVAL_EPISODES, MAX_INPUT_BYTES
 
@@ -34,18 +35,12 @@ class TrialRef:
     """Why the build wrote no trial for this job (its stage and cause); "" for a trial."""
     named: tuple[str, str, int] | None = None
     """(task type, floor plan, layout) as the build recorded them (for an unbuilt job)."""
+    stage: str = ""
+    """The build stage an unbuilt job failed at (`data.JobOutcome.stage`); "" for a trial."""
     broken: str = ""
     """Why the trial folder cannot be read where it is listed (not a folder inside the dataset folder, reached
     through a symbolic link, or without its traj_data.json); "" when it can be. Its outcome is `unavailable`
     with cause `broken_trial`, and nothing in it is read."""
-
-
-def plain_name(text: object) -> bool:
-    """Whether `text` is one plain folder name (`data.manifest.plain_name`: not empty, no separator, not
-    `.`-led, no NUL, at most 255 characters)."""
-    from luminous_sim.data.manifest import plain_name as plain
-
-    return plain(text)
 
 
 def _from_splits(root: Path, doc: Any) -> list[TrialRef]:
@@ -94,21 +89,20 @@ def _from_manifest(root: Path, path: Path) -> list[TrialRef]:
                                     f"{plan!r} and {layout!r}")
             named = (str(r["task_type"]), plan, layout)
             out.append(TrialRef(r["split"], r["order"], root, "", unbuilt=f"{r.get('stage')}: {r.get('cause')}",
-                                named=named))
+                                named=named, stage=str(r.get("stage") or "")))
     return out
 
 
 def _from_tree(root: Path) -> list[TrialRef]:
     """Every folder under `root` that holds a traj_data.json, in sorted order; links are not followed (a folder
     reached through one is not listed; a traj_data.json that is a link is listed, and refused when read)."""
-    found: list[str] = []
-    for folder, dirs, files in os.walk(root, followlinks=False):
-        dirs.sort()
-        if TRAJ in files or TRAJ in dirs:
-            found.append(Path(folder).relative_to(root).as_posix())
-            if len(found) > MAX_EVAL_EPISODES:
-                raise LuminousError(f"{root}: holds more than {MAX_EVAL_EPISODES} trials "
-                                    "(luminous_sim.limits.MAX_EVAL_EPISODES)")
+    from luminous_sim.benchmark import trial_folders
+
+    try:
+        folders, _ = trial_folders(root, MAX_EVAL_EPISODES)
+    except LuminousError as exc:
+        raise LuminousError(f"{exc} (luminous_sim.limits.MAX_EVAL_EPISODES)") from None
+    found = [folder.relative_to(root).as_posix() for folder in folders]
     refs = []
     counts: dict[str, int] = {}
     for rel in sorted(found):
@@ -181,7 +175,7 @@ def list_trials(root: Path, split: str | None = None) -> list[TrialRef]:
     out = []
     for r in refs:
         broken = "" if r.unbuilt else confined(root, r.rel)
-        out.append(TrialRef(r.split, r.index, r.path, r.rel, r.unbuilt, ("", "", 0), broken) if broken else r)
+        out.append(TrialRef(r.split, r.index, r.path, r.rel, named=("", "", 0), broken=broken) if broken else r)
     return out
 
 

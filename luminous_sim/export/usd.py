@@ -6,15 +6,14 @@ UsdPreviewSurface material of its colour; the structure's boxes under /World/Str
 
 from __future__ import annotations
 
-import os
 import re
-import tempfile
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 import trimesh
 
+from luminous_sim.assets.objio import atomic_file
 from luminous_sim.errors import LuminousError
 from luminous_sim.export.meshes import RGBA, box_matrix, box_mesh, object_matrix, visual_parts
 from luminous_sim.world.posed import PosedObject, PosedScene
@@ -131,16 +130,6 @@ def write_usd(posed: PosedScene, out: Path, ceiling: bool = True) -> None:
         w.attributes(prim.GetPrim(), _object_attributes(obj))
         for part in visual_parts(obj):
             w.mesh(f"{path}/{part.name}", part.mesh, part.rgba)
-    fd, tmp = tempfile.mkstemp(dir=out.parent, prefix=f".{out.stem}.", suffix=f".tmp{out.suffix}")
-    os.close(fd)
-    try:
-        if not w.stage.GetRootLayer().Export(tmp):
+    with atomic_file(out, suffix=f".tmp{out.suffix}") as tmp:  # the suffix picks binary or text
+        if not w.stage.GetRootLayer().Export(str(tmp)):
             raise LuminousError(f"{out}: USD could not write the file")
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)  # mkstemp makes 0600; an export should read like any other file
-        os.replace(tmp, out)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise

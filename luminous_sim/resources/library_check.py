@@ -9,6 +9,7 @@ file changes.
 
 from __future__ import annotations
 
+import contextlib
 import hashlib
 import json
 import os
@@ -97,11 +98,9 @@ def verify_library(root: Path, expected: str) -> None:
     root = Path(root)
     signature = _signature(root)
     stamp = cache_root() / STAMPS / signature if signature else None
-    try:
+    with contextlib.suppress(OSError):  # an unreadable stamp only costs the hashing
         if stamp is not None and stamp.is_file() and not stamp.is_symlink() and stamp.read_text() == expected:
             return
-    except OSError:
-        pass
     got = library_digest(root)
     if got != expected:
         shipped = root.resolve() == shipped_asset_library_dir().resolve()
@@ -119,10 +118,8 @@ def verify_library(root: Path, expected: str) -> None:
 def _write_stamp(stamp: Path, digest: str) -> None:
     from luminous_sim.assets.objio import write_atomic
 
-    try:
+    with contextlib.suppress(OSError):  # a read-only cache only costs the next process the hashing
         write_atomic(stamp, digest)
-    except OSError:  # a read-only cache only costs the next process the hashing
-        pass
 
 
 def _missing(root: Path, what: str) -> str:

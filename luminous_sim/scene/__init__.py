@@ -10,7 +10,7 @@ from luminous_sim.scene.agent_grid import (
     reachable_grid,
     scene_reachable_grid,
 )
-from luminous_sim.scene.model import SCENE_STATES, Layer, Scene, SceneError, SceneObject, check_scene, read_regular
+from luminous_sim.scene.model import SCENE_STATES, Layer, Scene, SceneError, SceneObject, check_scene
 from luminous_sim.scene.pose import (
     WallPose,
     against_wall,
@@ -70,7 +70,6 @@ __all__ = [
     "open_tops",
     "reach_of",
     "reachable_grid",
-    "read_regular",
     "region_spots",
     "rotate",
     "sample_in_region",

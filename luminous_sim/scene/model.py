@@ -16,8 +16,6 @@ from __future__ import annotations
 import hashlib
 import json
 import math
-import os
-import stat
 import warnings
 from collections.abc import Iterator, Mapping
 from pathlib import Path
@@ -26,7 +24,7 @@ from typing import Any, Final, Literal
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
 from shapely.errors import ShapelyError
 
-from luminous_sim.errors import LuminousError, mode_kind
+from luminous_sim.errors import LuminousError, read_file_bytes
 from luminous_sim.limits import (
     MAX_INPUT_BYTES,
     MAX_LAYOUT_COORDINATE_M,
@@ -391,7 +389,8 @@ class Scene(BaseModel):
                 or not a valid scene.
         """
         path = Path(path)
-        raw = read_regular(path, MAX_INPUT_BYTES, "a scene file (scene.json)", SceneError, "MAX_INPUT_BYTES")
+        raw = read_file_bytes(path, MAX_INPUT_BYTES, "a scene file (scene.json; luminous_sim.limits.MAX_INPUT_BYTES)",
+                              SceneError, follow_links=True)
         try:
             text = raw.decode("utf-8")
         except UnicodeDecodeError as exc:
@@ -417,37 +416,6 @@ def check_scene(scene: Scene, where: str = "scene") -> Scene:
     Scene.from_json(text, where)
     return scene
 
-
-def read_regular(path: Path, limit: int, what: str, error: type[LuminousError] = LuminousError,
-                 limit_name: str = "") -> bytes:
-    """The bytes of the regular file `path` (links followed), at most `limit` of them.
-
-    The file is opened without blocking and checked on the open descriptor (`fstat`) before a byte is read,
-    so a FIFO, a device or a folder put there is refused, never waited on.
-
-    Raises:
-        error: missing, unreadable, not a regular file, or over `limit` bytes; naming the file and `what` was
-            expected.
-    """
-    try:
-        fd = os.open(path, os.O_RDONLY | os.O_NONBLOCK)
-    except OSError as exc:
-        raise error(f"{path}: cannot read ({exc.strerror or exc}); expected {what}") from None
-    try:
-        mode = os.fstat(fd).st_mode
-        if not stat.S_ISREG(mode):
-            raise error(f"{path}: {mode_kind(mode)}; expected {what}")
-        raw = b""
-        while len(raw) <= limit and (chunk := os.read(fd, limit + 1 - len(raw))):
-            raw += chunk
-    except OSError as exc:
-        raise error(f"{path}: cannot read ({exc.strerror or exc})") from None
-    finally:
-        os.close(fd)
-    if len(raw) > limit:
-        raise error(f"{path}: more than {limit} bytes; {what} may hold at most {limit}"
-                    f"{f' (luminous_sim.limits.{limit_name})' if limit_name else ''}")
-    return raw
 
 
 def _path(loc: tuple[Any, ...], data: Any = None) -> str:

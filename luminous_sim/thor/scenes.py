@@ -25,6 +25,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
+from luminous_sim.benchmark import trial_folders
 from luminous_sim.errors import LuminousError, link_or_kind, read_json_file
 from luminous_sim.limits import MAX_INPUT_BYTES
 from luminous_sim.scene import Scene
@@ -119,7 +120,7 @@ class SceneIndex:
             if not root.is_dir():
                 raise ThorSceneError(f"{DATA_VAR}: {root} is not a folder (expected a `luminous dataset build` "
                                      "output)")
-            folders, linked = _trial_folders(root)
+            folders, linked = trial_folders(root)
             self.refused += [one_line(f"{d}: a symbolic link to a folder; not walked (the index stays inside {root})")
                              for d in linked]
             for folder in folders:
@@ -186,19 +187,6 @@ class SceneIndex:
         if not self.refused:
             return ""
         return f" ({len(self.refused)} trial(s) left out of the index, e.g. {self.refused[0]})"
-
-
-def _trial_folders(root: Path) -> tuple[list[Path], list[Path]]:
-    """The folders under `root` (itself included) that hold an entry named traj_data.json, found without
-    following any symbolic link to a folder; and those links (not walked)."""
-    found: list[Path] = []
-    linked: list[Path] = []
-    for here, dirs, files in os.walk(root, followlinks=False):
-        dirs.sort()
-        linked += [Path(here) / d for d in dirs if os.path.islink(os.path.join(here, d))]
-        if TRAJ in files or TRAJ in dirs:
-            found.append(Path(here))
-    return sorted(found), sorted(linked)
 
 
 def _confined(path: Path, root: Path) -> None:

@@ -332,11 +332,11 @@ def _frame_pixels(path: Path) -> np.ndarray:
     limits, so that a file swapped since shows black instead of raising in viser's thread)."""
     from PIL import Image
 
+    from luminous_sim.errors import read_file_bytes
     from luminous_sim.limits import MAX_FRAME_BYTES, MAX_FRAME_PIXELS
-    from luminous_sim.scene import read_regular
 
     try:
-        raw = read_regular(path, MAX_FRAME_BYTES, "a frame image", ViewerError)
+        raw = read_file_bytes(path, MAX_FRAME_BYTES, "a frame image", ViewerError, follow_links=True)
         with Image.open(io.BytesIO(raw)) as im:
             if im.size[0] * im.size[1] > MAX_FRAME_PIXELS:
                 raise ViewerError(f"{path}: too many pixels")

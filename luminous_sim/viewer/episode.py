@@ -12,7 +12,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any, Final
 
-from luminous_sim.errors import LuminousError, mode_kind
+from luminous_sim.data.manifest import plain_name
+from luminous_sim.errors import LuminousError, mode_kind, read_file_bytes
 from luminous_sim.limits import (
     MAX_EPISODE_ACTIONS,
     MAX_FRAME_BYTES,
@@ -20,7 +21,7 @@ from luminous_sim.limits import (
     MAX_INPUT_BYTES,
     MAX_LAYOUT_COORDINATE_M,
 )
-from luminous_sim.scene import Scene, read_regular
+from luminous_sim.scene import Scene
 from luminous_sim.world.agent import HORIZON_MAX, HORIZON_MIN, AgentPose
 
 MAX_TEXT_CHARS: Final = 10_000
@@ -66,7 +67,8 @@ def _read(path: Path) -> dict[str, Any]:
     if not os.path.lexists(path):
         raise ViewerError(f"{path.parent}: no trajectory.json; expected an episode folder written by "
                           "`luminous demo` (its episode/) or `luminous run`")
-    raw = read_regular(path, MAX_INPUT_BYTES, "an episode's trajectory.json", ViewerError, "MAX_INPUT_BYTES")
+    raw = read_file_bytes(path, MAX_INPUT_BYTES, "an episode's trajectory.json (luminous_sim.limits.MAX_INPUT_BYTES)",
+                          ViewerError, follow_links=True)
     try:
         data = json.loads(raw)
     except RecursionError:
@@ -113,12 +115,6 @@ def _start(path: Path, data: dict[str, Any]) -> AgentPose:
     return AgentPose(float(init["x"]), float(init["z"]), rotation % 360, horizon)
 
 
-def _plain_name(name: Any) -> bool:
-    """A file name inside frames/ (no folder part, no `..`, no NUL): nothing outside the episode is opened."""
-    return (isinstance(name, str) and 0 < len(name) <= 255 and name not in (".", "..") and "/" not in name
-            and "\\" not in name and "\x00" not in name)
-
-
 def _frame(path: Path) -> Path | None:
     """`path` if it is a frame to show: a regular file (not a link) within MAX_FRAME_BYTES that PIL reads as an
     image of at most MAX_FRAME_PIXELS; None when there is no file; ViewerError when it is not a frame."""
@@ -156,7 +152,7 @@ def _frames(path: Path, folder: Path, data: dict[str, Any], actions: int) -> lis
             raise ViewerError(f"{path}: images: expected a list of at most {MAX_EPISODE_ACTIONS + 1} images")
         for i, image in enumerate(images):
             name = image.get("image_name") if isinstance(image, dict) else None
-            if not isinstance(name, str) or not _plain_name(name):
+            if not isinstance(name, str) or not plain_name(name):
                 raise ViewerError(f"{path}: images[{i}].image_name: expected a file name in frames/ (no folder "
                                   f"part), got {_short(name)}")
             names.append(name)

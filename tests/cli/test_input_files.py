@@ -205,7 +205,7 @@ def test_read_json_file_refuses_before_reading_and_names_the_limit(case: str, tm
     from luminous_sim.errors import LuminousError, read_json_file
 
     class Mine(LuminousError):
-        pass
+        """The caller's own error class, which the refusal must be raised as."""
 
     make, says = JSON_CASES[case]
     path = tmp_path / "x.json"

@@ -133,7 +133,7 @@ def test_a_crashed_build_is_named_exits_non_zero_and_is_retried_on_the_next_run(
         patch.setattr(benchmark, "entry_episode", broken)
         code, _out, err = run(argv, capsys)
     assert code == 1
-    assert "unavailable: U+ 0 (build): crash: RoomError: no room 'FloorPlan10'" in err
+    assert "unavailable: U+ 0 (build_crash): crash: RoomError: no room 'FloorPlan10'" in err
     assert "the population is incomplete" in err
     code, _out, err = run(argv, capsys)  # the install fixed: the same command builds and plays the entry
     assert code == 0, err
