@@ -16,6 +16,7 @@ from luminous_sim.assets.catalog import Catalog
 from luminous_sim.assets.objio import write_atomic
 from luminous_sim.cdf import AgentPoseSpec, Expr
 from luminous_sim.cdf.schema import HighLevelStep, LowLevelStep
+from luminous_sim.episodes import EpisodeSpec
 from luminous_sim.errors import Failure, FailureCode
 from luminous_sim.planning import Trajectory
 from luminous_sim.scene import Scene
@@ -92,15 +93,42 @@ def write_video(frames: list[np.ndarray], path: Path, fps: int = 6) -> Path:
 
 
 def prepared_world(scene: Scene, task_type: str, catalog: Catalog | None = None):
-    """The world as ALFRED sets a scene up for a task: for cleaning, everything dirtyable is dirty."""
-    from luminous_sim.tasks import alfred_dirty
+    """A new world of the scene set up as ALFRED sets one up for a task of the type (`episodes.alfred_set_up`)."""
+    from luminous_sim.episodes import alfred_set_up
     from luminous_sim.world import World
 
     world = World(scene, catalog=catalog)
-    dirty = alfred_dirty(world.view().state, task_type)
-    if dirty:
-        world.set_up_dirty(dirty)
+    alfred_set_up(world, task_type)
     return world
+
+
+def run_spec(spec: EpisodeSpec, seed: int, out_dir: Path | None = None, *, record_frames: bool = True,
+             extra_annotations: int = 2) -> tuple[EpisodeResult, EpisodeRecord]:
+    """Solve an episode's task with the oracle from the episode's initial state (`episodes.prepare`: ALFRED's
+    set-up and the start), evaluate it, and write the same files as `run_episode`.
+
+    Args:
+        spec: the episode (a split entry's `episodes.entry_spec`, say); its goal is a task.
+        seed: seeds the instructions' wording.
+        out_dir, record_frames, extra_annotations: as for `run_episode`.
+
+    Returns:
+        `(result, record)`, as `run_episode`.
+    """
+    from luminous_sim.episodes import prepare
+    from luminous_sim.planning import Oracle
+    from luminous_sim.world import World
+
+    task = spec.task
+    world = prepare(World(spec.scene), spec)
+    try:
+        start, start_state = world.agent, world.view().state
+        traj = Oracle(world, record_frames=record_frames).run(task.goal, names=dict(task.names) or None)
+        rng = np.random.default_rng(np.random.SeedSequence([seed, 11]))
+        return _conclude(world, spec.scene, task, traj, _Run(seed, rng, start, start_state, out_dir,
+                                                             extra_annotations))
+    finally:
+        world.close()
 
 
 def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = None,
@@ -249,22 +277,19 @@ def _conclude(world, scene: Scene, task, traj: Trajectory, run: _Run) -> tuple[E
 
 
 def _place_agent(world, start: AgentPoseSpec | None) -> tuple[str, ...]:
-    """Put the agent at `start` (unset parts from the default start); notes on what had to be moved."""
-    if start is None:
+    """Put the agent at `start` (`episodes.start_pose`: the reachable point nearest its position, unset parts
+    from the default start); notes on what had to be moved."""
+    from luminous_sim.episodes import start_pose
+
+    pose = start_pose(world, start)
+    if pose is None:
         return ()
-    pose, notes = world.agent, []
-    x, y = pose.x, pose.y
-    if start.position is not None:
-        pts = world.nav.points()
-        want = np.array(start.position, dtype=float)
-        x, y = (float(v) for v in pts[int(np.argmin(np.linalg.norm(pts - want, axis=1)))])
-        if not np.allclose((x, y), want):
-            notes.append(f"task.agent.position ({want[0]:g}, {want[1]:g}) is not on the agent's reachable grid; "
-                         f"started at the nearest reachable point ({x:g}, {y:g})")
-    rotation = pose.rotation if start.rotation is None else start.rotation
-    horizon = pose.horizon if start.horizon is None else start.horizon
-    world.set_start(AgentPose(x, y, rotation, horizon))
-    return tuple(notes)
+    world.set_start(pose)
+    if start is None or start.position is None or np.allclose((pose.x, pose.y), start.position):
+        return ()
+    want = np.array(start.position, dtype=float)
+    return (f"task.agent.position ({want[0]:g}, {want[1]:g}) is not on the agent's reachable grid; "
+            f"started at the nearest reachable point ({pose.x:g}, {pose.y:g})",)
 
 
 def _write(out: Path, scene: Scene, task, traj: Trajectory, text, start: AgentPose, view, first: str) -> None:

@@ -20,3 +20,19 @@ def lazy_getattr(package: str, where: Mapping[str, str]) -> Callable[[str], Any]
         raise AttributeError(f"module {package!r} has no attribute {name!r}")
 
     return __getattr__
+
+
+def moved_getattr(old: str, where: Mapping[str, str], until: str) -> Callable[[str], Any]:
+    """A module `__getattr__` for a path whose public names moved: `where` maps each name to its new module
+    (absolute); the name is returned from there with a `DeprecationWarning` naming the new path, which is the
+    only one after release `until`."""
+    import warnings
+
+    def __getattr__(name: str) -> Any:
+        if name in where:
+            warnings.warn(f"{old}.{name} moved to {where[name]}.{name}; the old path goes in release {until}",
+                          DeprecationWarning, stacklevel=2)
+            return getattr(import_module(where[name]), name)
+        raise AttributeError(f"module {old!r} has no attribute {name!r}")
+
+    return __getattr__

@@ -14,11 +14,15 @@ LAYER = {
     "scene": 1, "rooms": 1, "cssg": 1, "states": 1,
     "world": 2,
     "tasks": 3, "planning": 3, "language": 3, "splits": 3,
-    "env": 4, "benchmark": 4,
+    "env": 4, "benchmark": 4, "episodes": 4,
     "data": 5, "eval": 5, "export": 5, "thor": 5, "viewer": 5, "bc": 5, "cli": 5, "layouts": 5, "demo": 5, "episode": 5,
     "cdf_episode": 5,
     "scene_outputs": 5,
 }
+LAYER_4_ORDER = ("benchmark", "episodes", "env")
+"""Layer L4 in order: a package imports only those before it. The splits as data (benchmark), the episodes
+drawn from them and elsewhere (episodes), the env that plays episodes (env: its task kinds reach the episodes'
+sources through `episodes.Drawing`, so episodes need nothing of the env)."""
 PYBULLET = {"pybullet", "pybullet_utils", "pybullet_data"}
 GENERATOR = "cssg"
 """Imported by layers L4 and L5 only: the environments (L4) generate their scenes on the fly, and task-driven
@@ -81,3 +85,16 @@ def test_nothing_below_layer_4_imports_the_generator():
         problems += [f"{path.relative_to(PKG)} (L{LAYER[own]}) imports {name}" for name in sorted(_imports(path))
                      if name.split(".")[:2] == ["luminous_sim", GENERATOR]]
     assert not problems, "the generator is a producer (DESIGN.md, Layers):\n" + "\n".join(problems)
+
+
+def test_layer_4_imports_point_back_in_its_order():
+    problems = []
+    for path in sorted(PKG.rglob("*.py")):
+        own = _package(path) if not (path.parent == PKG and path.name == "__init__.py") else ""
+        if own not in LAYER_4_ORDER:
+            continue
+        later = LAYER_4_ORDER[LAYER_4_ORDER.index(own) + 1:]
+        problems += [f"{path.relative_to(PKG)} ({own}) imports {name}" for name in sorted(_imports(path))
+                     if name.split(".")[0] == "luminous_sim" and len(name.split(".")) > 1
+                     and name.split(".")[1] in later]
+    assert not problems, f"L4 is ordered {' < '.join(LAYER_4_ORDER)}:\n" + "\n".join(problems)

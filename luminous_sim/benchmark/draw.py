@@ -1,5 +1,6 @@
-"""One draw of a split's episode in a layout: a task of the type (`planning.draw_task`), a start on the
-reachable floor, ALFRED's set-up; and whether the oracle solves it (the filter ALFRED's generator applies)."""
+"""One draw of a split's episode in a layout: a task of the type (`planning.draw_task`) and a start on the
+reachable floor, in a world ALFRED's set-up was applied to (`episodes.alfred_set_up`); the freeze
+(`episodes.freeze`) keeps the draws the oracle solves."""
 
 from __future__ import annotations
 
@@ -43,17 +44,6 @@ def draw_seed(split_code: int, task_type_index: int, layout: Layout, draw: int) 
     return int(np.random.SeedSequence(words).generate_state(1, dtype=np.uint32)[0])
 
 
-def set_up(world: World, task_type: str) -> tuple[str, ...]:
-    """ALFRED's set-up of a world for a task of the type (for cleaning, every dirtyable object that can be
-    picked up is dirty); the objects it made dirty."""
-    from luminous_sim.tasks import alfred_dirty
-
-    dirty = alfred_dirty(world.view().state, task_type)
-    if dirty:
-        world.set_up_dirty(dirty)
-    return dirty
-
-
 @dataclass(frozen=True)
 class Draw:
     """A drawn episode: its task, start and initial state (the objects made dirty), and its key."""
@@ -83,30 +73,3 @@ def draw(scene: Scene, world: World, task_type: str, seed: int, dirty: tuple[str
     task = draw_task(scene, world.view(), task_type, rng)
     start = random_start(world, rng)
     return Draw(task, start, dirty, episode_key(scene, task_type, task.params.to_json(), start, dirty))
-
-
-def fresh_world(scene: Scene, task_type: str, start: AgentPose | None = None) -> tuple[World, tuple[str, ...]]:
-    """A new world of `scene` at ALFRED's camera, set up for `task_type`, the agent at `start`."""
-    world = World(scene)
-    dirty = set_up(world, task_type)
-    if start is not None:
-        world.set_start(start)
-    return world, dirty
-
-
-def oracle_solves(scene: Scene, drawn: Draw) -> str:
-    """Why the oracle does not solve the drawn episode from its start: the first failure's code
-    (`FailureCode` value), or `goal_conditions` when its plan ran but left a condition unmet; "" when it solves it
-    (every goal condition met at the end)."""
-    from luminous_sim.planning import Oracle
-
-    world, _ = fresh_world(scene, drawn.task.task_type, drawn.start)
-    try:
-        traj = Oracle(world, record_frames=False).run(drawn.task.goal)
-        view = world.view()
-        done, total = drawn.task.conditions().alfred_counts(view.state, set(view.visible_objects()))
-    finally:
-        world.close()
-    if traj.success and done == total:
-        return ""
-    return traj.failure_codes[0].value if traj.failure_codes else "goal_conditions"

@@ -29,7 +29,7 @@ MANIFEST_SHA256 = {
     "S+": "14e34e745573f7c54f2ee44efc17f17db0423a5dda048508d765eb3a85a9d550",
     "U+": "37c15c1979567ad4ce5831d5f66a9d6d8a4a77264f5524e0965c2aff1dc70122",
 }
-"""The shipped manifests' SHA-256 (of their bytes). Freezing a split again (`benchmark.freeze`) changes it: put the
+"""The shipped manifests' SHA-256 (of their bytes). Freezing a split again (`episodes.freeze`) changes it: put the
 new value here."""
 
 
@@ -85,7 +85,7 @@ def _manifest(split: str) -> tuple[dict[str, Any], tuple[BenchmarkEntry, ...]]:
     path = manifest_path(split)
     if split not in FROZEN or not path.is_file():
         raise SplitError(f"split {split} is not frozen yet (frozen: {', '.join(FROZEN)}); freeze it with "
-                         f"python -m luminous_sim.benchmark.freeze --split {split}")
+                         f"python -m luminous_sim.episodes.freeze --split {split}")
     data = path.read_bytes()
     digest = hashlib.sha256(data).hexdigest()
     if digest != MANIFEST_SHA256[split]:

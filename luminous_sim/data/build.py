@@ -2,7 +2,7 @@
 resumable and safe against a kill at any moment, on any backend (`data.backends`).
 
 Method (a) of the paper is `SplitJob`: episode `index` of a frozen S+/U+/U+test split
-(`benchmark.entry_episode`: its layout, task, initial state and start) solved by the oracle, exported in
+(`episodes.entry_spec`: its layout, task, initial state and start) solved by the oracle, exported in
 ALFRED's json_2.1.0 layout. Another job kind
 (a real ALFRED task design re-solved in its own floor plan, method (b)) plugs into the same `build`.
 
@@ -165,7 +165,7 @@ class IndexedJob:
 
 @dataclass(frozen=True)
 class SplitJob(IndexedJob):
-    """Episode `index` of frozen split `split` (method (a)): `benchmark.entry_episode` of its entry (the
+    """Episode `index` of frozen split `split` (method (a)): `episodes.entry_spec` of its entry (the
     episode `luminous eval --split` and the env's `reset(options={"split": ..., "index": ...})` play), solved
     by the oracle from the entry's start, exported in ALFRED's layout; the manifest record and the trial's
     sidecar carry its `episode_key`."""
@@ -177,9 +177,9 @@ class SplitJob(IndexedJob):
         return benchmark_entry(self.split, self.index).task_type
 
     def run(self, work: Path, options: BuildOptions) -> JobOutcome:
-        from luminous_sim.benchmark import SplitVersionError, benchmark_entry, entry_episode, start_fields
-        from luminous_sim.cdf import AgentPoseSpec
-        from luminous_sim.episode import run_task
+        from luminous_sim.benchmark import benchmark_entry, start_fields
+        from luminous_sim.episode import run_spec
+        from luminous_sim.episodes import SplitVersionError, entry_spec
 
         entry = benchmark_entry(self.split, self.index)
         details: dict[str, Any] = {"floor_plan": entry.floor_plan, "layout": entry.layout,
@@ -190,13 +190,12 @@ class SplitJob(IndexedJob):
             return JobOutcome(stage=stage, cause=cause, details=details)
 
         try:
-            made = entry_episode(entry)
+            made = entry_spec(entry)
         except SplitVersionError as exc:
             return failed("version", _failure_cause(exc))
-        start = AgentPoseSpec(position=(made.start.x, made.start.y), rotation=made.start.rotation,
-                              horizon=made.start.horizon)
-        result, record = run_task(made.scene, made.task, entry.task_seed, start=start, record_frames=options.frames,
-                                  return_record=True, extra_annotations=ANNOTATIONS - 1)
+        assert made.start is not None, "a split entry has its start"
+        result, record = run_spec(made, entry.task_seed, record_frames=options.frames,
+                                  extra_annotations=ANNOTATIONS - 1)
         traj = record.trajectory
         details.update(goal=result.goal, low_actions=len(traj.low_actions), replans=traj.replans)
         if not result.success:

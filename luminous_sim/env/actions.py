@@ -20,11 +20,13 @@ Index layout::
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
+
+from luminous_sim.errors import FailureCode
 
 NAVIGATION: tuple[str, ...] = ("MoveAhead", "RotateLeft", "RotateRight", "LookUp", "LookDown")
 STOP = "Stop"
@@ -148,3 +150,43 @@ class ActionTable:
             else:
                 out += [f"{name}@({r},{c})" for r in range(self.grid) for c in range(self.grid)]
         return out
+
+    def to_api(self, action: Any, slots: Sequence[str] = ()) -> tuple[dict[str, Any] | None, FailureCode | None, str]:
+        """The api action an env action sends (a discrete index, or an ALFRED dict passed on as it is), or None
+        with the code and message of an invalid one (outside the space, an empty slot, an unknown name, not an
+        action at all)."""
+        if isinstance(action, np.ndarray) and action.shape == () and action.dtype.kind in "iu":
+            action = int(action)
+        if isinstance(action, int | np.integer) and not isinstance(action, bool):
+            if not 0 <= int(action) < self.n:
+                return None, FailureCode.INVALID_ARGUMENT, f"action {action} is outside 0..{self.n - 1}"
+            try:
+                return self.decode(int(action), slots), None, ""
+            except EmptySlot as exc:
+                return None, FailureCode.NO_TARGET, str(exc)
+        if isinstance(action, dict) and isinstance(action.get("action"), str):
+            name = action["action"]
+            if name in STOP_NAMES or name in ALFRED_ACTIONS:
+                return dict(action), None, ""
+            return None, FailureCode.UNKNOWN_ACTION, (f"unknown action {name!r}; expected Stop or one of "
+                                                      f"{', '.join(sorted(ALFRED_ACTIONS))}")
+        return None, FailureCode.INVALID_ARGUMENT, (f"an action is an index in 0..{self.n - 1} or a dict "
+                                                    f"with an 'action' name, not {type(action).__name__}")
+
+    def from_api(self, api: dict[str, Any] | None, slots: Sequence[str],
+                 masks: Callable[[], Mapping[str, np.ndarray]]) -> int | dict[str, Any]:
+        """An api action (object ids, as the oracle sends them) in the env's action form for the current view: a
+        discrete index when one names it (an interaction's grid point on its target's mask, or its slot), else
+        the api dict itself; Stop for None. `masks` gives the view's instance masks (asked only when needed)."""
+        if api is None:
+            return self.index("Stop")
+        name = api["action"]
+        if name in NAVIGATION:
+            return self.index(name)
+        target = api.get("receptacleObjectId") if name == "PutObject" else api.get("objectId")
+        if self.slots:
+            slot = list(slots).index(target) if isinstance(target, str) and target in slots else None
+            return self.index(name, slot) if slot is not None else dict(api)
+        mask = masks().get(target) if name in INTERACTIONS and isinstance(target, str) else None
+        cell = self.cell_on(mask) if mask is not None else None
+        return self.index(name, cell) if cell is not None else dict(api)

@@ -34,10 +34,10 @@ expert's next action (`expert_action`, in this env's action form). For a goal sc
 `reset(seed=s)` is deterministic: the same seed gives the same scene, task and first observation;
 `options={"scene": scene}` plays in a given `Scene`; `options={"split": "U+", "index": 3}` plays episode 3
 of a frozen evaluation split (or `split=` at construction and `options={"index": 3}`; see `EnvConfig.split`):
-the episode `luminous_sim.benchmark.entry_episode` defines, the same one `dataset build` and `luminous eval`
+the episode `luminous_sim.episodes.entry_spec` defines, the same one `dataset build` and `luminous eval`
 play; the reset's `info["episode_key"]` is the episode's content key (`benchmark.episode_key`);
 `options={"cdf": path, "scene_seed": s}` (or `cdf=` at construction) generates the scene from a CDF file,
-whose task section, if any, is the goal (see `luminous_sim.env.cdf_scenes`). The options are checked before
+whose task section, if any, is the goal (see `luminous_sim.episodes.cdf`). The options are checked before
 anything happens (`luminous_sim.env.reset_options`): an unknown key, options of two sources, or a value of
 the wrong type is a one-line `LuminousError` naming the option and what was expected.
 
@@ -51,68 +51,35 @@ planner solves), so the population is "solvable by the expert", and redraws say 
 
 from __future__ import annotations
 
-import string
-from dataclasses import replace
 from typing import Any
 
 import gymnasium
 import numpy as np
 from gymnasium import spaces
 
-from luminous_sim.env.actions import ALFRED_ACTIONS, INTERACTIONS, NAVIGATION, STOP_NAMES, ActionTable, EmptySlot
-from luminous_sim.env.cdf_scenes import cdf_episode, cdf_paths
+from luminous_sim.env.actions import STOP_NAMES, ActionTable
 from luminous_sim.env.config import EnvConfig
-from luminous_sim.env.episodes import (
-    Episode,
-    check_rooms,
-    content_key,
-    draw_episode,
-    requested_entry,
-    split_episode,
-    trial_episode,
-)
+from luminous_sim.env.episodes import check_rooms
 from luminous_sim.env.expert import Expert
-from luminous_sim.env.goal_mask import goal_mask, goal_type
+from luminous_sim.env.goal_mask import goal_type
 from luminous_sim.env.history import Sent
-from luminous_sim.env.navscore import NavScore, nav_score
+from luminous_sim.env.measures import Failures, Measure, NavigationScore, Step, measures_for
+from luminous_sim.env.navscore import NavScore
 from luminous_sim.env.replay import episode_data, episode_from_data, history_data, replay
 from luminous_sim.env.reset_options import reset_options
-from luminous_sim.env.rewards import RewardConfig
+from luminous_sim.env.sensors import MAX_HIGH_DESCS, Reading, Sensor, clean_text, sensors_for
 from luminous_sim.env.shaping import RewardShaper
+from luminous_sim.env.sources import draw_episode
 from luminous_sim.env.worlds import WorldPool
-from luminous_sim.errors import FailureCode, LuminousError
-from luminous_sim.vocab import ALL_TYPES, abilities
+from luminous_sim.episodes import EpisodeSpec, keyed
+from luminous_sim.errors import LuminousError
 from luminous_sim.world import World
-
-INSTRUCTION_CHARSET = string.ascii_letters + string.digits + " .,;:'!?-()\n"
-MAX_INSTRUCTION = 1000
-"""Characters of `instruction` kept (a directive is under 100; step instructions add about 60 a step)."""
-MAX_HIGH_DESCS = 4000
-"""Characters of `high_descs` kept (ALFRED's longest plans have about 25 steps of under 150 characters)."""
-DEPTH_FAR = 20.0
-"""The camera's far plane (metres): the largest depth."""
-POSE_BOUND = 1000.0
 
 
 class ResetNeeded(LuminousError, gymnasium.error.ResetNeeded):
     """`step()` (or an observation) asked for with no episode going: before the first `reset()`, or after the
     episode ended (terminated or truncated); call `reset()`. Both a `LuminousError` and gymnasium's
     `ResetNeeded`."""
-
-
-def _type_index(object_type: str | None) -> int:
-    """An object type as an observation: its index in `ALL_TYPES` plus one; 0 for none."""
-    return ALL_TYPES.index(object_type) + 1 if object_type in ALL_TYPES else 0
-
-
-def _interactable(object_type: str) -> bool:
-    ab = abilities(object_type)
-    return ab.pickupable or ab.receptacle or ab.openable or ab.toggleable or ab.sliceable
-
-
-def _clean_text(text: str, limit: int = MAX_INSTRUCTION) -> str:
-    out = "".join(ch if ch in INSTRUCTION_CHARSET else " " for ch in text)[:limit]
-    return out or "."
 
 
 def _checked_seed(seed: Any) -> int | None:
@@ -133,8 +100,10 @@ def _checked_seed(seed: Any) -> int | None:
 class LuminousEnv(gymnasium.Env):
     """ALFRED's low-level actions, observations and limits in a generated room; see the module docstring.
 
-    It wires its parts together: episodes (`episodes`, `cdf_scenes`), worlds (`WorldPool`), the expert
-    (`Expert`), the reward (`RewardShaper`) and pickling by replay (`replay`).
+    It wires its parts together: episodes from the first source that applies (`env.sources`, drawing from
+    `luminous_sim.episodes`), worlds (`WorldPool`), observations from sensors (`env.sensors`), `info` from
+    measures (`env.measures`), the expert (`Expert`), the reward (`RewardShaper`) and pickling by replay
+    (`replay`).
     """
 
     metadata: dict[str, Any] = {"render_modes": ["rgb_array"], "render_fps": 6}  # noqa: RUF012  (as gymnasium.Env)
@@ -145,49 +114,32 @@ class LuminousEnv(gymnasium.Env):
         self.render_mode = render_mode
         self.config = EnvConfig.from_kwargs(kwargs)
         check_rooms(self.config)
-        self.rewards = RewardConfig.of(self.config.reward_mode, self.config.reward)
-        c = self.config
-        self.actions = ActionTable(c.width, c.height, c.grid, c.object_slots if c.targets == "objects" else 0)
+        self.rewards = self.config.rewards.config()
+        c = self.config.actions
+        self.actions = ActionTable(self.config.width, self.config.height, c.grid,
+                                   c.object_slots if c.targets == "objects" else 0)
         self.action_space = spaces.Discrete(self.actions.n)
-        obs: dict[str, spaces.Space] = {
-            "rgb": spaces.Box(0, 255, (c.height, c.width, 3), np.uint8),
-            "instruction": spaces.Text(MAX_INSTRUCTION, min_length=1, charset=INSTRUCTION_CHARSET),
-        }
-        if c.high_descs:
-            obs["high_descs"] = spaces.Text(MAX_HIGH_DESCS, min_length=1, charset=INSTRUCTION_CHARSET)
-        if c.depth:
-            obs["depth"] = spaces.Box(0.0, DEPTH_FAR, (c.height, c.width, 1), np.float32)
-        if c.segmentation:
-            obs["segmentation"] = spaces.Box(-1, np.iinfo(np.int32).max, (c.height, c.width), np.int32)
-        if c.goal_mask:
-            obs["goal_mask"] = spaces.Box(0, 255, (c.height, c.width, 1), np.uint8)
-        if c.pose:
-            obs["pose"] = spaces.Box(np.array([-POSE_BOUND, -POSE_BOUND, 0, -30], np.float32),
-                                     np.array([POSE_BOUND, POSE_BOUND, 270, 60], np.float32), dtype=np.float32)
-        if c.inventory:
-            obs["inventory"] = spaces.Discrete(len(ALL_TYPES) + 1)
-        if self.actions.slots:
-            obs["objects"] = spaces.MultiDiscrete(np.full(self.actions.slots, len(ALL_TYPES) + 1, np.int64))
-        self.observation_space = spaces.Dict(obs)
+        self.sensors: list[Sensor] = sensors_for(self.config, self.actions)
+        """The observations, one sensor each (`env.sensors`)."""
+        self.observation_space = spaces.Dict({s.key: s.space() for s in self.sensors})
+        self.measures: list[Measure] = measures_for(self)
+        """What `info` reports, one measure each (`env.measures`)."""
         self.world: World | None = None
         """The episode's world (None before the first reset and after `close`)."""
         self.worlds = WorldPool(self.config)
         """Worlds kept for reuse while episodes stay in one scene (`builds` and `reuses` count them)."""
-        self.episode: Episode | None = None
+        self.episode: EpisodeSpec | None = None
         self.history: list[Sent] = []
         self.expert: Expert | None = None
         """The episode's expert (None before the first reset)."""
         self.shaper = RewardShaper(self.rewards, self.config.navigation_reward)
         """The episode's goal scores and reward."""
-        self.navscore: NavScore | None = None
-        """The episode's navigation figures (start distance, SPL) when its goal is scored so (`navscore`)."""
         self._slots: list[str] = []
         self._texts = (".", ".")
         """The episode's `instruction` and `high_descs` texts (made at reset)."""
         self._goal_type = ""
         """The type the `goal_mask` observation shows (`goal_mask.goal_type`)."""
         self._steps = 0
-        self._failures = 0
         self._ended = False
 
     # ------------------------------------------------------------------ gymnasium API
@@ -202,30 +154,19 @@ class LuminousEnv(gymnasium.Env):
         rng = np.random.default_rng(int(self.np_random.integers(2**63)))
         self._close_world()
         self.episode = None
-        entry = requested_entry(self.config, checked, rng)
-        paths = cdf_paths(self.config, checked)
-        if entry is not None:
-            self.episode, self.world = split_episode(self.config, entry, self.worlds)
-        elif checked.trial:
-            self.episode, self.world = trial_episode(self.config, checked.trial, self.worlds)
-        elif paths:
-            self.episode, self.world = cdf_episode(self.config, paths, rng, self.worlds, checked.scene_seed)
-        else:
-            self.episode, self.world = draw_episode(self.config, rng, self.worlds, scene=checked.scene)
-        if not self.episode.key:
-            self.episode = replace(self.episode, key=content_key(self.episode, self.world))
+        self.episode, self.world = draw_episode(self.config, self.worlds, checked, rng)
+        self.episode = keyed(self.episode, self.world.agent)
         self._start(self.episode, self.world)
-        extra = self.navscore.at_start() if self.navscore is not None else {}
-        return self._observation(), {**self._info(None, ""), "redraws": self.episode.redraws,
-                                     "episode_key": self.episode.key, **extra}
+        return self._observation(), self._info(None)
 
-    def _start(self, episode: Episode, world: World) -> None:
-        self.history, self._steps, self._failures, self._ended = [], 0, 0, False
+    def _start(self, episode: EpisodeSpec, world: World) -> None:
+        self.history, self._steps, self._ended = [], 0, False
         self._texts = self._episode_texts()
         self._goal_type = goal_type(episode.goal)
         self.expert = Expert.for_episode(episode, self.worlds)
         self.shaper.start(episode.goal, world, episode.expert)
-        self.navscore = nav_score(episode.goal, world)
+        for measure in self.measures:
+            measure.reset(self)
 
     def step(self, action: Any):
         """One action (a discrete index or an ALFRED dict); see the module docstring.
@@ -237,24 +178,20 @@ class LuminousEnv(gymnasium.Env):
         if self._ended:
             raise ResetNeeded("step() after the episode ended (terminated or truncated): call reset() first")
         self._steps += 1
-        api, code, error = self._decode(action)
+        api, code, error = self.actions.to_api(action, self._slots)
         stopped = api is not None and api["action"] in STOP_NAMES
         if api is not None and not stopped:
             result = world.step(api)
             self.history.append(Sent(action, api, result.success))
             code, error = result.code, result.error
-        ok = code is None
-        if not ok:
-            self._failures += 1
-        reward = self.shaper.step(world, api["action"] if api else None, ok, self._steps)
+        for measure in self.measures:
+            measure.update(self, Step(code, error))
+        reward = self.shaper.step(world, api["action"] if api else None, code is None, self._steps)
         terminated = self.shaper.success or stopped
         truncated = not terminated and (self._steps >= self.config.max_steps
-                                        or self._failures >= self.config.max_failures)
+                                        or self.failures >= self.config.max_failures)
         self._ended = terminated or truncated
-        info = self._info(code, error)
-        if self.navscore is not None and (terminated or truncated):
-            info.update(self.navscore.at_end(world.agent, self.history, self.shaper.success))
-        return self._observation(), reward, terminated, truncated, info
+        return self._observation(), reward, terminated, truncated, self._info(Step(code, error, terminated, truncated))
 
     def render(self) -> np.ndarray | None:
         """The agent's view (rgb_array), or None without a render mode."""
@@ -287,20 +224,9 @@ class LuminousEnv(gymnasium.Env):
 
     def action_for(self, api: dict[str, Any] | None) -> int | dict[str, Any]:
         """An api action (object ids, as the oracle sends them) in this env's action form, for the current
-        observation: a discrete index when one names it, else the api dict itself; Stop for None."""
-        if api is None:
-            return self.actions.index("Stop")
-        name = api["action"]
-        if name in NAVIGATION:
-            return self.actions.index(name)
-        target = api.get("receptacleObjectId") if name == "PutObject" else api.get("objectId")
-        if self.actions.slots:
-            slot = self._slots.index(target) if target in self._slots else None
-            return self.actions.index(name, slot) if slot is not None else dict(api)
-        mask = self._world().instance_masks().get(target) if name in INTERACTIONS and isinstance(target, str) \
-            else None
-        cell = self.actions.cell_on(mask) if mask is not None else None
-        return self.actions.index(name, cell) if cell is not None else dict(api)
+        observation: a discrete index when one names it, else the api dict itself; Stop for None
+        (`ActionTable.from_api`)."""
+        return self.actions.from_api(api, self._slots, lambda: self._world().instance_masks())
 
     @property
     def slots(self) -> tuple[str, ...]:
@@ -315,61 +241,13 @@ class LuminousEnv(gymnasium.Env):
             raise ResetNeeded(f"call reset() before {caller}")
         return self.world
 
-    def _decode(self, action: Any) -> tuple[dict[str, Any] | None, FailureCode | None, str]:
-        """The api action to send, or None with the code and message of an invalid one."""
-        if isinstance(action, np.ndarray) and action.shape == () and action.dtype.kind in "iu":
-            action = int(action)
-        if isinstance(action, (int, np.integer)) and not isinstance(action, bool):
-            if not 0 <= int(action) < self.actions.n:
-                return None, FailureCode.INVALID_ARGUMENT, f"action {action} is outside 0..{self.actions.n - 1}"
-            try:
-                return self.actions.decode(int(action), self._slots), None, ""
-            except EmptySlot as exc:
-                return None, FailureCode.NO_TARGET, str(exc)
-        if isinstance(action, dict) and isinstance(action.get("action"), str):
-            name = action["action"]
-            if name in STOP_NAMES or name in ALFRED_ACTIONS:
-                return dict(action), None, ""
-            return None, FailureCode.UNKNOWN_ACTION, (f"unknown action {name!r}; expected Stop or one of "
-                                                      f"{', '.join(sorted(ALFRED_ACTIONS))}")
-        return None, FailureCode.INVALID_ARGUMENT, (f"an action is an index in 0..{self.actions.n - 1} or a dict "
-                                                    f"with an 'action' name, not {type(action).__name__}")
-
     def _observation(self) -> dict[str, Any]:
         world = self._world()
-        frame = world.frame()
-        c = self.config
-        # a copy: the World keeps the frame, and a caller may write into what it is given
-        obs: dict[str, Any] = {"rgb": np.array(frame.rgb[..., :3], dtype=np.uint8, order="C"),
-                               "instruction": self._texts[0]}
-        if c.high_descs:
-            obs["high_descs"] = self._texts[1]
-        if c.depth:
-            depth = np.nan_to_num(frame.depth, nan=DEPTH_FAR, posinf=DEPTH_FAR, neginf=0.0)  # never NaN: in the space
-            obs["depth"] = np.clip(depth, 0.0, DEPTH_FAR).astype(np.float32)[..., None]
-        if c.segmentation:
-            obs["segmentation"] = world.instance_ids().astype(np.int32)
-        if c.goal_mask:
-            obs["goal_mask"] = goal_mask(world, self._goal_type)
-        if c.pose:
-            p = world.agent
-            obs["pose"] = np.array([p.x, p.y, p.rotation % 360, p.horizon], np.float32)
-        state = world.view().state
-        if c.inventory:
-            obs["inventory"] = _type_index(state.objects[state.held].object_type if state.held else None)
+        reading = Reading(world, world.frame(), *self._texts, self._goal_type)
+        obs = {sensor.key: sensor.read(reading) for sensor in self.sensors}
         if self.actions.slots:
-            self._slots = self._visible_slots(world)
-            kinds = [_type_index(state.objects[o].object_type) for o in self._slots]
-            obs["objects"] = np.array(kinds + [0] * (self.actions.slots - len(kinds)), np.int64)
+            self._slots = reading.slots
         return obs
-
-    def _visible_slots(self, world: World) -> list[str]:
-        """Objects in view and within reach that an interaction applies to, the held one aside, most pixels
-        first (ties by id), as many as there are slots."""
-        state = world.view().state
-        seen = [(-n, o) for o, n in world.visible_objects().items()
-                if o in state.objects and o != state.held and _interactable(state.objects[o].object_type)]
-        return [o for _, o in sorted(seen)[: self.actions.slots]]
 
     def _episode_texts(self) -> tuple[str, str]:
         """The episode's `instruction` (the goal directive, then with `step_instructions` the expert plan's step
@@ -379,24 +257,24 @@ class LuminousEnv(gymnasium.Env):
         text = self.episode.goal.instruction
         if self.config.step_instructions and steps:
             text = " ".join((text.rstrip(".") + ".", *steps))
-        return _clean_text(text), _clean_text("\n".join(steps), MAX_HIGH_DESCS)
+        return clean_text(text), clean_text("\n".join(steps), MAX_HIGH_DESCS)
 
-    def _info(self, code: FailureCode | None, error: str) -> dict[str, Any]:
-        assert self.episode is not None
-        goal = self.episode.goal
-        scores = self.shaper.scores
-        info: dict[str, Any] = {
-            "success": self.shaper.success,
-            "goal_conditions": (sum(scores.values()), sum(goal.weights().values())),
-            "subgoal": goal.subgoal(scores),
-            "task_type": goal.task_type,
-            "failures": self._failures,
-            "failure_code": None if code is None else code.value,
-            "error": error,
-        }
-        if self.config.expert_in_info:
-            info["expert_action"] = self.expert_action()
+    def _info(self, step: Step | None) -> dict[str, Any]:
+        """What the measures report (`step` None at reset)."""
+        info: dict[str, Any] = {}
+        for measure in self.measures:
+            info.update(measure.info(self, step))
         return info
+
+    @property
+    def failures(self) -> int:
+        """The episode's failed actions so far."""
+        return next(m.count for m in self.measures if isinstance(m, Failures))
+
+    @property
+    def navscore(self) -> NavScore | None:
+        """The episode's navigation figures (start distance, SPL) when its goal is scored so (`navscore`)."""
+        return next((m.score for m in self.measures if isinstance(m, NavigationScore)), None)
 
     def _close_world(self) -> None:
         """Give the world back to the pool (kept, restored, for another episode in its scene)."""
@@ -413,7 +291,7 @@ class LuminousEnv(gymnasium.Env):
             "np_random": self._np_random,
             "episode": None if self.episode is None else episode_data(self.episode),
             "history": history_data(self.history),
-            "counters": (self._steps, self._failures, self.shaper.reached),
+            "counters": (self._steps, self.failures, self.shaper.reached),
             "ended": self._ended,
         }
 
@@ -426,7 +304,8 @@ class LuminousEnv(gymnasium.Env):
         world = self.world = self.worlds.get(episode.scene, episode.dirty, episode.start)
         self._start(episode, world)
         self.history = replay(world, state["history"], self.shaper)
-        self._steps, self._failures, reached = state["counters"]
+        self._steps, failures, reached = state["counters"]
+        next(m for m in self.measures if isinstance(m, Failures)).count = failures
         self.shaper.resume(world, reached)
         self._ended = bool(state.get("ended", False))
         self._observation()  # the object slots the agent saw last

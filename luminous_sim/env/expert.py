@@ -13,14 +13,13 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import TYPE_CHECKING, Any
 
-from luminous_sim.env.goals import Goal
 from luminous_sim.env.history import Sent
-from luminous_sim.env.worlds import WorldSource
+from luminous_sim.episodes import Goal, WorldSource
 from luminous_sim.scene import Scene
 from luminous_sim.world import AgentPose
 
 if TYPE_CHECKING:
-    from luminous_sim.env.episodes import Episode
+    from luminous_sim.episodes import EpisodeSpec
 
 
 def same_action(a: Any, b: Any) -> bool:
@@ -58,7 +57,7 @@ class Expert:
         """Plans computed since the start (the proved plan aside)."""
 
     @classmethod
-    def for_episode(cls, episode: Episode, worlds: WorldSource) -> Expert:
+    def for_episode(cls, episode: EpisodeSpec, worlds: WorldSource) -> Expert:
         """The expert of an env episode (its proved plan, if any, to start with)."""
         return cls(episode.scene, episode.goal, worlds, dirty=episode.dirty, start=episode.start,
                    plan=episode.expert.actions if episode.expert is not None else None)

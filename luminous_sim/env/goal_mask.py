@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from luminous_sim.env.goals import Goal
+from luminous_sim.episodes import Goal
 from luminous_sim.world import World
 
 

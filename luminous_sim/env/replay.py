@@ -9,16 +9,15 @@ from collections.abc import Iterable
 from dataclasses import astuple
 from typing import Any
 
-from luminous_sim.env.episodes import Episode
-from luminous_sim.env.goals import ExpertPlan
 from luminous_sim.env.history import Sent
 from luminous_sim.env.kinds import goal_from_dict
 from luminous_sim.env.shaping import RewardShaper
+from luminous_sim.episodes import EpisodeSpec, ExpertPlan
 from luminous_sim.scene import Scene
 from luminous_sim.world import AgentPose, World
 
 
-def episode_data(episode: Episode) -> dict[str, Any]:
+def episode_data(episode: EpisodeSpec) -> dict[str, Any]:
     """An episode as plain data (`episode_from_data` reads it back)."""
     ep = episode
     return {"scene": ep.scene.to_json(), "goal": ep.goal.to_dict(), "dirty": list(ep.dirty),
@@ -26,12 +25,12 @@ def episode_data(episode: Episode) -> dict[str, Any]:
             "redraws": ep.redraws, "start": None if ep.start is None else list(astuple(ep.start)), "key": ep.key}
 
 
-def episode_from_data(data: dict[str, Any]) -> Episode:
+def episode_from_data(data: dict[str, Any]) -> EpisodeSpec:
     """The episode of `episode_data` data."""
     plan = data["expert"]
     expert = None if plan is None else ExpertPlan(tuple(plan[0]), steps=tuple(plan[1]))
     start = None if data["start"] is None else AgentPose(*data["start"])
-    return Episode(Scene.from_json(data["scene"]), goal_from_dict(data["goal"]), tuple(data["dirty"]), expert,
+    return EpisodeSpec(Scene.from_json(data["scene"]), goal_from_dict(data["goal"]), tuple(data["dirty"]), expert,
                    data["redraws"], start, data.get("key", ""))
 
 

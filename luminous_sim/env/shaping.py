@@ -5,9 +5,9 @@ navigation term of the expert's go-to subgoals, `goto_reward.GotoReward`)."""
 from __future__ import annotations
 
 from luminous_sim.env.actions import STOP_NAMES
-from luminous_sim.env.goals import ExpertPlan, Goal
 from luminous_sim.env.goto_reward import GotoReward, goto_targets
 from luminous_sim.env.rewards import RewardConfig, step_reward
+from luminous_sim.episodes import ExpertPlan, Goal
 from luminous_sim.world import World
 
 

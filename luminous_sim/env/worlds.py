@@ -8,26 +8,15 @@ plays exactly as in a new world. Any other world is closed, and the next one is 
 
 from __future__ import annotations
 
-from typing import Literal, Protocol, cast
+from typing import Literal, cast
 
 from luminous_sim.env.config import EnvConfig
+from luminous_sim.episodes import WorldSource, set_initial
 from luminous_sim.scene import Scene
 from luminous_sim.world import AgentPose, World, WorldConfig
 
 MAX_IDLE = 2
 """Restored worlds kept for the current scene (the agent's and the expert's; each is a PyBullet client)."""
-
-
-class WorldSource(Protocol):
-    """Where worlds come from, set up for an episode, and go back to when done (`WorldPool` is one)."""
-
-    def get(self, scene: Scene, dirty: tuple[str, ...] = (), start: AgentPose | None = None) -> World:
-        """A world of the scene at its start, with `dirty` made dirty and the agent at `start` (if given)."""
-        ...
-
-    def put(self, world: World) -> None:
-        """Give a world back (the source keeps or closes it)."""
-        ...
 
 
 def world_config(config: EnvConfig) -> WorldConfig:
@@ -36,8 +25,11 @@ def world_config(config: EnvConfig) -> WorldConfig:
                        rasteriser=cast(Literal["compiled", "tinyrenderer"], config.rasteriser))
 
 
+__all__ = ["MAX_IDLE", "WorldPool", "WorldSource", "world_config"]
+
+
 class WorldPool:
-    """Worlds of one scene, at their start, ready to hand out again; `builds` and `reuses` count them."""
+    """A `WorldSource`: worlds of one scene at their start, handed out again; `builds` and `reuses` count them."""
 
     def __init__(self, config: EnvConfig):
         self.config = config
@@ -58,11 +50,7 @@ class WorldPool:
         else:
             world = World(scene, world_config(self.config))
             self.builds += 1
-        if dirty:
-            world.set_up_dirty(dirty)
-        if start is not None:
-            world.set_start(start)
-        return world
+        return set_initial(world, dirty, start)
 
     @property
     def kept(self) -> int:

@@ -499,7 +499,7 @@ def evaluate(policy: str, split: str, episodes: int | Iterable[int], *, seed: in
              progress: Callable[[EpisodeOutcome], None] | None = None,
              backend: Backend | None = None, limits: AgentLimits | None = None) -> EvalReport:
     """Run `policy` (`oracle`, `random` or `MODULE:CALLABLE`) on entries of the frozen split `split`, each
-    played live: `reset(options={"split": split, "index": i})`, the episode `benchmark.entry_episode` defines
+    played live: `reset(options={"split": split, "index": i})`, the episode `episodes.entry_spec` defines
     (the oracle is the env's expert, replanning from the env's state). `evaluate_data` plays a build's trials
     instead (the oracle then replays the recorded actions); `luminous eval --split` builds the canonical split
     and evaluates that.

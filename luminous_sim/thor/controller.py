@@ -86,6 +86,8 @@ SET_UP_KEYS: dict[str, frozenset[str]] = {
 }
 """The keys each action the controller runs itself takes (the World checks its own actions' keys)."""
 STATE_CHANGES = ("CanBeDirty", "CanBeFilled", "CanBeUsedUp")
+CLEANING = "pick_clean_then_place_in_recep"
+"""The task type whose set-up ALFRED's `SetStateOfAllObjects` `CanBeDirty` is (everything dirtyable dirty)."""
 """`SetStateOfAllObjects`'s `StateChange` values modelled."""
 SCENE_NAME = re.compile(r"FloorPlan([1-9][0-9]{0,4})(_physics)?")
 """The scene names `reset` takes: AI2-THOR's floor plans (ai2thor's `_physics` suffix is the same scene)."""
@@ -330,11 +332,10 @@ class Controller:
             self.world, self._world_scene = world, digest
         self._apply_visibility()
         self.trial = trial
-        if self._dirty:
-            from luminous_sim.vocab import abilities
+        if self._dirty:  # SetStateOfAllObjects CanBeDirty is ALFRED's set-up for cleaning
+            from luminous_sim.episodes import alfred_set_up
 
-            world.set_up_dirty([oid for oid, st in world.view().state.objects.items()
-                                if abilities(st.object_type).dirtyable and abilities(st.object_type).pickupable])
+            alfred_set_up(world, CLEANING)
         if self._toggles:
             checked = self._check_toggles(act)
             if not checked.metadata["lastActionSuccess"]:

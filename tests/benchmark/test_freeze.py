@@ -7,15 +7,15 @@ from typing import Any
 
 import pytest
 
-from luminous_sim.benchmark import freeze as freeze_module
 from luminous_sim.benchmark import type_counts
 from luminous_sim.benchmark.counts import type_layouts
-from luminous_sim.benchmark.freeze import ORACLE_FAILURES_IN_A_ROW, Capacity, Stream, freeze, run_stream
+from luminous_sim.episodes import freeze as freeze_module
+from luminous_sim.episodes.freeze import ORACLE_FAILURES_IN_A_ROW, Capacity, Stream, freeze, run_stream
 from luminous_sim.vocab import ALFRED_TASK_TYPES
 
 
 def test_a_layout_whose_oracle_keeps_failing_gives_up(monkeypatch):
-    monkeypatch.setattr(freeze_module, "oracle_solves", lambda scene, drawn: "not_visible")
+    monkeypatch.setattr(freeze_module, "oracle_cause", lambda scene, drawn: "not_visible")
     layout = type_layouts("U+", "pick_and_place_simple")[0]
     out = run_stream("U+", "pick_and_place_simple", layout, 3)
     assert out.gave_up and out.exhausted and not out.entries

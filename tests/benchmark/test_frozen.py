@@ -9,16 +9,15 @@ import pytest
 from luminous_sim.benchmark import (
     FROZEN,
     PAPER_COUNTS,
-    SplitVersionError,
     benchmark_entries,
     benchmark_entry,
     benchmark_size,
-    entry_episode,
     episode_key,
     frozen_header,
     type_counts,
 )
 from luminous_sim.benchmark.counts import allocate
+from luminous_sim.episodes import SplitVersionError, entry_spec
 from luminous_sim.splits import SplitError
 from luminous_sim.vocab import ALFRED_TASK_TYPES
 from luminous_sim.world import AgentPose
@@ -73,26 +72,26 @@ def test_an_index_outside_a_split_is_named():
 @pytest.mark.parametrize("split,index", [("U+", 0), ("U+", 3), ("S+", 5)])
 def test_an_entry_made_here_is_the_frozen_one(split, index):
     entry = benchmark_entry(split, index)
-    made = entry_episode(entry)
+    made = entry_spec(entry)
     assert made.key == entry.episode_key
     assert made.task.params.to_json() == entry.pddl_params and made.start == entry.start
     assert made.task.task_type == entry.task_type
-    again = entry_episode(entry)
+    again = entry_spec(entry)
     assert again.key == made.key and again.task.instruction == made.task.instruction
 
 
 def test_a_checkout_that_makes_another_episode_refuses_to_play_it():
     entry = benchmark_entry("U+", 0)
     with pytest.raises(SplitVersionError, match="the start differs.*new version"):
-        entry_episode(replace(entry, start=replace(entry.start, rotation=(entry.start.rotation + 90) % 360),
+        entry_spec(replace(entry, start=replace(entry.start, rotation=(entry.start.rotation + 90) % 360),
                               episode_key="0" * 20))
     with pytest.raises(SplitVersionError, match="scene or the initial state differs"):
-        entry_episode(replace(entry, episode_key="0" * 20))
+        entry_spec(replace(entry, episode_key="0" * 20))
 
 
 def test_the_key_hashes_content_not_names():
     entry = benchmark_entry("U+", 0)
-    made = entry_episode(entry)
+    made = entry_spec(entry)
     params = made.task.params.to_json()
     key = episode_key(made.scene, made.task.task_type, params, made.start, made.dirty)
     assert key == made.key

@@ -11,7 +11,7 @@ import pytest
 
 import luminous_sim  # noqa: F401  (registers the ids)
 from luminous_sim import cdf
-from luminous_sim.env.cdf_scenes import cdf_scene
+from luminous_sim.episodes import cdf_scene
 from luminous_sim.errors import LuminousError
 from luminous_sim.tasks import names_from_scene, task_from_cdf
 

@@ -18,7 +18,6 @@ from hypothesis import strategies as st
 
 import luminous_sim  # noqa: F401  (registers the ids)
 from luminous_sim.env import LuminousEnv, ResetNeeded, load_entries
-from luminous_sim.env.cdf_scenes import cdf_paths
 from luminous_sim.env.config import (
     IMAGE_SIZE,
     MAX_CDF_FILES,
@@ -29,7 +28,7 @@ from luminous_sim.env.config import (
     MAX_STEPS,
     EnvConfig,
 )
-from luminous_sim.env.episodes import check_rooms, requested_entry, room_types
+from luminous_sim.env.episodes import cdf_paths, check_rooms, requested_entry, room_types
 from luminous_sim.env.reset_options import RESET_OPTIONS, ResetOptions, reset_options
 from luminous_sim.errors import LuminousError
 

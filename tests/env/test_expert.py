@@ -8,10 +8,11 @@ import numpy as np
 import pytest
 
 from luminous_sim.env.config import EnvConfig
-from luminous_sim.env.episodes import Episode, draw_episode
+from luminous_sim.env.episodes import drawing
 from luminous_sim.env.expert import Expert
 from luminous_sim.env.history import Sent
 from luminous_sim.env.worlds import WorldPool
+from luminous_sim.episodes import EpisodeSpec, draw_generated
 from luminous_sim.scene import Scene
 from luminous_sim.world import AgentPose, World
 
@@ -36,7 +37,7 @@ class CountingSource:
 @pytest.fixture(scope="module")
 def drawn():
     pool = WorldPool(CONFIG)
-    episode, world = draw_episode(CONFIG, np.random.default_rng(0), pool)
+    episode, world = draw_generated(drawing(CONFIG), np.random.default_rng(0), pool)
     yield episode, world, pool
     world.close()
     pool.clear()
@@ -46,7 +47,7 @@ def send(world: World, history: list[Sent], api: dict) -> None:
     history.append(Sent(api, api, world.step(api).success))
 
 
-def solved(episode: Episode, world: World) -> bool:
+def solved(episode: EpisodeSpec, world: World) -> bool:
     view = world.view()
     return episode.goal.scores(view, set(view.visible_objects())) == episode.goal.weights()
 

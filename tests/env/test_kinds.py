@@ -45,7 +45,7 @@ def test_goals_read_back_from_their_data():
 
     goto = goal_from_dict(GotoGoal("Mug").to_dict())
     assert isinstance(goto, GotoGoal) and goto.object_type == "Mug" and goto.instruction == "go to the mug"
-    from luminous_sim.env.goals import TaskGoal
+    from luminous_sim.episodes import TaskGoal
 
     task = goal_from_dict(TaskGoal(pickup_task("Apple", 3)).to_dict())
     assert task.task_type == "pickup_object" and task.instruction == "pick up the apple"
@@ -57,7 +57,7 @@ def test_the_registry_loads_no_kind_module_nor_the_simulator():
             "or m in ('luminous_sim.world', 'pybullet')))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, cwd=REPO, check=False)
     assert out.returncode == 0, out.stderr
-    assert out.stdout.strip() == "['luminous_sim.env.kinds.base']"
+    assert out.stdout.strip() == "['luminous_sim.env.kinds.base', 'luminous_sim.env.kinds.options']"  # declarations
 
 
 def test_the_cleaning_kind_makes_what_it_cleans_dirty_first():

@@ -13,9 +13,9 @@ import pytest
 
 import luminous_sim  # noqa: F401  (registers the ids)
 from luminous_sim.env import EnvConfig, load_entries
-from luminous_sim.env.config import ALFRED_TASK_TYPES
 from luminous_sim.env.registration import PACKAGE_SPECS, REPO_SPECS, read_spec
 from luminous_sim.errors import LuminousError
+from luminous_sim.vocab import ALFRED_TASK_TYPES
 
 REPO = Path(__file__).resolve().parents[2]
 TASK_TYPE_IDS = {

@@ -1,4 +1,4 @@
-"""Episodes of a frozen split in the env: `benchmark.entry_episode` of the entry (its layout, task, start and
+"""Episodes of a frozen split in the env: `episodes.entry_spec` of the entry (its layout, task, start and
 initial state), the same every time; a split named at construction or at reset; clear errors; an entry the
 expert cannot solve in this env raises `EpisodeUnavailable` (cause `expert`)."""
 
@@ -9,11 +9,12 @@ import numpy as np
 import pytest
 
 import luminous_sim  # noqa: F401  (registers the ids)
+import luminous_sim.episodes.split as split_module
 from luminous_sim.benchmark import benchmark_entry, benchmark_size
 from luminous_sim.env import UNAVAILABLE_CAUSES, EnvConfig, EpisodeUnavailable
-from luminous_sim.env import episodes as episodes_module
 from luminous_sim.env.episodes import requested_entry
 from luminous_sim.env.reset_options import ResetOptions, reset_options
+from luminous_sim.episodes import Solution
 from luminous_sim.errors import LuminousError
 
 ENTRY = benchmark_entry("U+", 2)   # examine
@@ -75,7 +76,7 @@ def test_the_config_refuses_an_unknown_split():
 
 
 def test_an_entry_the_expert_cannot_solve_in_this_env_is_reported(monkeypatch):
-    monkeypatch.setattr(episodes_module, "_prove", lambda episode, worlds: None)
+    monkeypatch.setattr(split_module, "solve", lambda spec, worlds: Solution(None, "expert"))
     env = alfred()
     with pytest.raises(EpisodeUnavailable, match="the expert does not solve") as caught:
         env.reset(options={"split": "U+", "index": 2})

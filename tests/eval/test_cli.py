@@ -121,7 +121,7 @@ def test_the_step_reader_follows_the_step_instructions_in_order():
 def test_a_crashed_build_is_named_exits_non_zero_and_is_retried_on_the_next_run(tmp_path, capsys, monkeypatch):
     """A build job that crashed (missing data: an incomplete install) is the installation's failure, not the
     task's: eval prints its cause and exits 1, and neither the build nor the evaluation keeps it as a result."""
-    import luminous_sim.benchmark as benchmark
+    import luminous_sim.episodes.split as split
     from luminous_sim.errors import RoomError
 
     def broken(entry):
@@ -130,7 +130,7 @@ def test_a_crashed_build_is_named_exits_non_zero_and_is_retried_on_the_next_run(
     argv = ["eval", "--policy", "oracle", "--split", "U+", "--episodes", "1", "--build", str(tmp_path / "b"),
             "--out", str(tmp_path / "o")]
     with monkeypatch.context() as patch:
-        patch.setattr(benchmark, "entry_episode", broken)
+        patch.setattr(split, "entry_spec", broken)
         code, _out, err = run(argv, capsys)
     assert code == 1
     assert "unavailable: U+ 0 (build_crash): crash: RoomError: no room 'FloorPlan10'" in err

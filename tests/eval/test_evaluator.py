@@ -97,12 +97,12 @@ def _eval_kwargs():
 
 
 def test_an_entry_with_no_episode_is_a_reported_failure(monkeypatch):
-    import luminous_sim.env.alfred_env as alfred_env
+    import luminous_sim.env.sources as sources
 
-    def refuse(config, entry, worlds):
+    def refuse(entry, worlds, verify_expert):
         raise EpisodeUnavailable(entry, "expert", "no Spatula anywhere")
 
-    monkeypatch.setattr(alfred_env, "split_episode", refuse)
+    monkeypatch.setattr(sources, "split_spec", refuse)
     report = evaluate("random", "U+", [5])
     (o,) = report.outcomes
     assert (o.end, o.cause, o.detail, o.task_type) == ("unavailable", "expert", "no Spatula anywhere",

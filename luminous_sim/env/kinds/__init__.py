@@ -14,11 +14,12 @@ from functools import cache
 from typing import TYPE_CHECKING, Any
 
 from luminous_sim.env.kinds.base import TaskKind
+from luminous_sim.env.kinds.options import KIND_OPTIONS
 from luminous_sim.errors import LuminousError
 from luminous_sim.vocab import ALFRED_TASK_TYPES
 
 if TYPE_CHECKING:
-    from luminous_sim.env.goals import Goal
+    from luminous_sim.episodes import Goal
     from luminous_sim.world import World
 
 KINDS: dict[str, str] = {
@@ -31,13 +32,6 @@ KINDS: dict[str, str] = {
 }
 """Kind name -> `module:Class` in this package (the class is made with the name)."""
 TASK_KINDS: tuple[str, ...] = tuple(KINDS)
-KIND_OPTIONS: dict[str, tuple[str, ...]] = {
-    **{t: ("house", "cross_room_share") for t in ALFRED_TASK_TYPES},
-    "objectnav": ("success_distance", "min_start_distance"),
-    "objectnav_pickup": ("min_start_distance",),
-    "house_objectnav": ("success_distance", "min_start_distance", "cross_room_share", "front_door"),
-}
-"""Kind name -> the names of its options (`EnvConfig.task_options`; `TaskKind.defaults` holds their values)."""
 
 __all__ = ["KINDS", "KIND_OPTIONS", "TASK_KINDS", "TaskKind", "goal_from_dict", "kind_templates", "set_up", "task_kind"]
 
@@ -68,7 +62,7 @@ def set_up(world: World, task_type: str) -> tuple[str, ...]:
 def goal_from_dict(data: dict[str, Any]) -> Goal:
     """A goal from `Goal.to_dict` data: a task (`kind` "task"), else a goal of the kind it names."""
     if data["kind"] == "task":
-        from luminous_sim.env.goals import TaskGoal
+        from luminous_sim.episodes import TaskGoal
         from luminous_sim.tasks import TaskInstance
 
         return TaskGoal(TaskInstance.from_dict(data["task"]))

@@ -9,12 +9,12 @@ the house has no such task, any task of the type)."""
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, ClassVar
+from typing import TYPE_CHECKING
 
 import numpy as np
 
-from luminous_sim.env.goals import Goal, TaskGoal
 from luminous_sim.env.kinds.base import TaskKind
+from luminous_sim.episodes import Goal, TaskGoal
 from luminous_sim.tasks import alfred_dirty, task_info
 
 if TYPE_CHECKING:
@@ -23,8 +23,6 @@ if TYPE_CHECKING:
 
 class AlfredKind(TaskKind):
     """One ALFRED task type."""
-
-    defaults: ClassVar[dict[str, float]] = {"house": 0.0, "cross_room_share": 0.0}
 
     def rooms(self) -> tuple[str, ...]:
         return tuple(sorted(task_info(self.name).rooms))

@@ -11,7 +11,7 @@ from __future__ import annotations
 import copy
 from abc import ABC, abstractmethod
 from collections.abc import Callable, Mapping
-from typing import TYPE_CHECKING, Any, ClassVar
+from typing import TYPE_CHECKING, Any
 
 from luminous_sim.errors import LuminousError
 from luminous_sim.vocab import ROOM_TYPES
@@ -19,7 +19,7 @@ from luminous_sim.vocab import ROOM_TYPES
 if TYPE_CHECKING:
     import numpy as np
 
-    from luminous_sim.env.goals import Goal
+    from luminous_sim.episodes import Goal
     from luminous_sim.scene import Scene
     from luminous_sim.world import AgentPose, World
 
@@ -30,16 +30,17 @@ class TaskKind(ABC):
     Attributes:
         name: the kind's name, as `EnvConfig.task_types` and `info["task_type"]` give it.
         templates: instruction templates of the kind's own goals (their words join the token vocabulary).
-        defaults: the kind's options (`EnvConfig.task_options`) and their values when a config gives none;
-            their names are listed in `kinds.KIND_OPTIONS` too, so that checking a config imports no kind.
+        defaults: the kind's options (`EnvConfig.task_options`) and their values when a config gives none,
+            as the kind's model in `kinds.options` declares them (checking a config imports no kind).
         options: the options in force (`configured`).
     """
 
     templates: tuple[str, ...] = ()
-    defaults: ClassVar[Mapping[str, float]] = {}
-
     def __init__(self, name: str):
+        from luminous_sim.env.kinds.options import kind_defaults
+
         self.name = name
+        self.defaults: Mapping[str, float] = kind_defaults(name)
         self.options: Mapping[str, float] = dict(self.defaults)
 
     def configured(self, options: Mapping[str, float]) -> TaskKind:

@@ -8,8 +8,8 @@ from typing import Any
 
 import numpy as np
 
-from luminous_sim.env.goals import ExpertPlan, Goal
 from luminous_sim.env.kinds.base import TaskKind, unseen_type
+from luminous_sim.episodes import ExpertPlan, Goal
 from luminous_sim.errors import PlanningError
 from luminous_sim.scene import Scene
 from luminous_sim.vocab import abilities

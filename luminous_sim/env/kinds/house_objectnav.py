@@ -10,13 +10,11 @@ room the agent starts in and which rooms hold a target (`start_room`, `target_ro
 
 from __future__ import annotations
 
-from typing import ClassVar
-
 import numpy as np
 
-from luminous_sim.env.goals import Goal
-from luminous_sim.env.kinds.objectnav import MIN_START_DISTANCE, SUCCESS_DISTANCE, ObjectNav, ObjectNavGoal
+from luminous_sim.env.kinds.objectnav import ObjectNav, ObjectNavGoal
 from luminous_sim.env.navscore import start_keys
+from luminous_sim.episodes import Goal
 from luminous_sim.scene import Scene
 from luminous_sim.tasks import TaskSamplingError
 from luminous_sim.world import AgentPose, World, WorldView
@@ -37,7 +35,6 @@ scene:
       - [kitchen, living]
       - [bedroom, living]
 """
-CROSS_ROOM_SHARE = 0.75
 
 
 def house_scene(seed: int, front_door: bool = True) -> Scene:
@@ -64,10 +61,6 @@ def target_rooms(view: WorldView, instances: tuple[str, ...]) -> frozenset[str]:
 class HouseObjectNav(ObjectNav):
     """ObjectNav in a house generated per episode, starting in another room than the target for a share."""
 
-    defaults: ClassVar[dict[str, float]] = {"success_distance": SUCCESS_DISTANCE,
-                                            "min_start_distance": MIN_START_DISTANCE,
-                                            "cross_room_share": CROSS_ROOM_SHARE, "front_door": 1.0}
-    """`front_door` 0 draws the houses without a front door (as `Luminous-HouseNav-64-v1` has them)."""
 
     def rooms(self) -> tuple[str, ...]:
         return ("LivingRoom",)  # not used to lay out a room: the house has every type

@@ -19,14 +19,15 @@ from __future__ import annotations
 
 import math
 from itertools import pairwise
-from typing import Any, ClassVar
+from typing import Any
 
 import networkx as nx
 import numpy as np
 
-from luminous_sim.env.goals import ExpertPlan, Goal
 from luminous_sim.env.kinds.base import TaskKind
+from luminous_sim.env.kinds.options import SUCCESS_DISTANCE
 from luminous_sim.env.navscore import Key, footprint_distance, grid_distances, region_of, start_keys
+from luminous_sim.episodes import ExpertPlan, Goal
 from luminous_sim.scene import Scene
 from luminous_sim.states import enclosing_closed
 from luminous_sim.tasks import TaskSamplingError
@@ -35,9 +36,6 @@ from luminous_sim.world import AgentPose, World, WorldView
 from luminous_sim.world.agent import CAMERA_HEIGHT, GRID, HORIZON_MAX, HORIZON_MIN
 
 OBJECTNAV_TEMPLATE = "find the {obj}"
-SUCCESS_DISTANCE = 1.0
-"""RoboTHOR's ObjectNav success distance (m)."""
-MIN_START_DISTANCE = 2.0
 MOVE_COST, TURN_COST = 1.0, 1e-3
 """Edge costs of the oracle's path: fewest moves first (its path length is then the geodesic), then turns."""
 MAX_VIEWS = 120
@@ -185,8 +183,6 @@ class ObjectNav(TaskKind):
     """Find an object of a type and Stop where it is seen within the success distance."""
 
     templates = (OBJECTNAV_TEMPLATE,)
-    defaults: ClassVar[dict[str, float]] = {"success_distance": SUCCESS_DISTANCE,
-                                            "min_start_distance": MIN_START_DISTANCE}
 
     def draw_goal(self, world: World, scene: Scene, rng: np.random.Generator) -> Goal:
         view = world.view()

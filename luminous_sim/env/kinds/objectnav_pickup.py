@@ -9,15 +9,15 @@ that ends the episode as a failure. The expert is ALFRED's oracle (`planning.Ora
 
 from __future__ import annotations
 
-from typing import Any, ClassVar
+from typing import Any
 
 import numpy as np
 
-from luminous_sim.env.goals import Goal, TaskGoal
 from luminous_sim.env.kinds.base import TaskKind
-from luminous_sim.env.kinds.objectnav import MIN_START_DISTANCE, nav_start, seeable_instances, target_types
+from luminous_sim.env.kinds.objectnav import nav_start, seeable_instances, target_types
 from luminous_sim.env.kinds.pickup_object import PICKUP_TEMPLATE, pickup_task
 from luminous_sim.env.navscore import Key, region_of, start_keys
+from luminous_sim.episodes import Goal, TaskGoal
 from luminous_sim.scene import Scene
 from luminous_sim.tasks import TaskSamplingError
 from luminous_sim.vocab import abilities
@@ -47,7 +47,6 @@ class ObjectNavPickup(TaskKind):
     """Pick up an object of a type, starting far from every one."""
 
     templates = (PICKUP_TEMPLATE,)
-    defaults: ClassVar[dict[str, float]] = {"min_start_distance": MIN_START_DISTANCE}
 
     def draw_goal(self, world: World, scene: Scene, rng: np.random.Generator) -> Goal:
         view = world.view()

@@ -8,8 +8,8 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from luminous_sim.cdf.predicates import Atom, Exists, Param
-from luminous_sim.env.goals import Goal, TaskGoal
 from luminous_sim.env.kinds.base import TaskKind, unseen_type
+from luminous_sim.episodes import Goal, TaskGoal
 from luminous_sim.tasks import PddlParams, TaskInstance
 from luminous_sim.vocab import abilities
 
