@@ -16,7 +16,7 @@ LAYER = {
     "tasks": 3, "planning": 3, "language": 3, "splits": 3,
     "env": 4, "benchmark": 4, "episodes": 4,
     "data": 5, "eval": 5, "export": 5, "thor": 5, "viewer": 5, "bc": 5, "cli": 5, "layouts": 5, "demo": 5, "episode": 5,
-    "cdf_episode": 5,
+    "cdf_episode": 5, "agents": 5,
     "scene_outputs": 5,
 }
 LAYER_4_ORDER = ("benchmark", "episodes", "env")
@@ -98,3 +98,15 @@ def test_layer_4_imports_point_back_in_its_order():
                      if name.split(".")[0] == "luminous_sim" and len(name.split(".")) > 1
                      and name.split(".")[1] in later]
     assert not problems, f"L4 is ordered {' < '.join(LAYER_4_ORDER)}:\n" + "\n".join(problems)
+
+
+AGENT_BLIND = ("luminous_sim.world", "luminous_sim.planning", "luminous_sim.episodes", "luminous_sim.scene",
+               "luminous_sim.env.expert", "luminous_sim.env.oracle_policy", "luminous_sim.env.alfred_env")
+"""What the agents may never see: the world, the planner, the episode's spec and scene, the expert (an agent
+sees only what the env gives an agent: observations, the action's feedback, the instructions)."""
+
+
+def test_the_agents_import_no_world_no_planner_and_no_expert():
+    problems = [f"{path.relative_to(PKG)} imports {name}" for path in sorted((PKG / "agents").rglob("*.py"))
+                for name in sorted(_imports(path)) if name.startswith(AGENT_BLIND)]
+    assert not problems, "\n".join(problems)

@@ -24,6 +24,7 @@ DESCRIPTION = (
 EPILOG = "Run `luminous COMMAND --help` for a command's options; `make demo` shows the whole pipeline."
 
 SUBCOMMAND_MODULES: tuple[str, ...] = (
+    "luminous_sim.cli.agents_cmd",
     "luminous_sim.cli.alfred_cmd",
     "luminous_sim.cli.assets_cmd",
     "luminous_sim.cli.bc_cmd",
