@@ -5,13 +5,13 @@ ALFRED's valid_seen human directives), on:
   instructions;
 - the held-apart share of ALFRED's train designs the checkpoint recorded while training (the figures the
   epochs were chosen on; valid_seen is only reported);
-- the template directives of the first `--uplus` entries of U+ (each entry's own task instruction, made by
-  `episodes.entry_spec`; 0 skips it).
+- the template directives of the first `--entries` entries of each `--split` (each entry's own task
+  instruction, made by `episodes.entry_spec`; 0 skips them, `all` takes every entry).
 
 It prints one block per set: the share right of the task type, each slot, all five slots (`slots`) and
 everything (`all`), and the time to parse them.
 
-    python benchmarks/bench_parser.py --alfred ../shared/alfred/valid_seen --uplus 70
+    python benchmarks/bench_parser.py --alfred ../shared/alfred/valid_seen --split U+ S+ --entries all
 """
 
 from __future__ import annotations
@@ -24,16 +24,17 @@ from pathlib import Path
 from luminous_sim.agents import Annotated, InstructionParser, accuracy, default_parser, read_annotations
 
 
-def uplus_annotations(count: int) -> list[Annotated]:
-    """The template directive of each of U+'s first `count` entries, labelled by the entry's task."""
-    from luminous_sim.benchmark import benchmark_entry
+def split_annotations(split: str, count: int | None) -> list[Annotated]:
+    """The template directive of each of a split's first `count` entries (None: every one), labelled by the
+    entry's task."""
+    from luminous_sim.benchmark import benchmark_entries
     from luminous_sim.episodes import entry_spec
 
     out = []
-    for i in range(count):
-        entry = benchmark_entry("U+", i)
+    for entry in benchmark_entries(split)[:count]:
         task = entry_spec(entry).task
-        out.append(Annotated(task.instruction, (), entry.task_type, dict(entry.pddl_params), f"U+/{i}"))
+        out.append(Annotated(task.instruction, (), entry.task_type, dict(entry.pddl_params),
+                             f"{split}/{entry.index}"))
     return out
 
 
@@ -50,7 +51,8 @@ def main() -> int:
     parser.add_argument("--alfred", type=Path, default=Path("../shared/alfred/valid_seen"),
                         help="ALFRED annotations to score (default ../shared/alfred/valid_seen)")
     parser.add_argument("--parser", type=Path, default=None, help="a checkpoint (default: the shipped parser)")
-    parser.add_argument("--uplus", type=int, default=0, help="score the first N U+ entries' template directives")
+    parser.add_argument("--split", nargs="*", default=["U+"], help="frozen splits whose template directives to score")
+    parser.add_argument("--entries", default="0", help="the first N entries of each split ('all': every one; 0: none)")
     args = parser.parse_args()
     model = InstructionParser.load(args.parser) if args.parser else default_parser()
     examples = read_annotations(args.alfred)
@@ -61,8 +63,10 @@ def main() -> int:
         if key in last:
             print(f"training record, {key} ({model.record['held_apart_annotations']} annotations, epoch "
                   f"{last['epoch']}):\n  {json.dumps(last[key])}")
-    if args.uplus:
-        report(f"U+ first {args.uplus} entries (template directive)", model, uplus_annotations(args.uplus), False)
+    count = None if args.entries == "all" else int(args.entries)
+    for split in args.split if count != 0 else ():
+        examples = split_annotations(split, count)
+        report(f"{split}, {len(examples)} entries (template directive)", model, examples, False)
     return 0
 
 
