@@ -234,6 +234,18 @@ def read_file_bytes(path: str | os.PathLike[str], limit: int, what: str,
     return raw
 
 
+def json_field(data: Any, where: str | os.PathLike[str], *names: str,
+               error: type[LuminousError] = LuminousError) -> Any:
+    """`data[names[0]][names[1]]...` of a parsed JSON document; `error` naming the file and the dotted field
+    that is missing (or whose parent is not an object)."""
+    value = data
+    for k, name in enumerate(names):
+        if not isinstance(value, dict) or name not in value:
+            raise error(f"{os.fspath(where)}: field {'.'.join(names[:k + 1])!r} is missing")
+        value = value[name]
+    return value
+
+
 def read_json_file(path: str | os.PathLike[str], limit: int, what: str,
                    error: type[LuminousError] = LuminousError) -> Any:
     """The JSON value of the regular file `path` (read by `read_file_bytes`: never through a link, never a FIFO or

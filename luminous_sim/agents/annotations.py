@@ -11,7 +11,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from luminous_sim.errors import LuminousError, read_json_file
+from luminous_sim.errors import LuminousError, json_field, read_json_file
 from luminous_sim.limits import MAX_INPUT_BYTES
 from luminous_sim.vocab import ALFRED_TASK_TYPES
 
@@ -70,12 +70,7 @@ def trajectory_files(root: Path) -> list[Path]:
 
 
 def _field(data: Any, path: Path, *names: str) -> Any:
-    value = data
-    for k, name in enumerate(names):
-        if not isinstance(value, dict) or name not in value:
-            raise AnnotationError(f"{path}: field {'.'.join(names[:k + 1])!r} is missing")
-        value = value[name]
-    return value
+    return json_field(data, path, *names, error=AnnotationError)
 
 
 def read_trajectory(path: Path) -> list[Annotated]:
@@ -92,7 +87,7 @@ def read_trajectory(path: Path) -> list[Annotated]:
     raw = _field(data, path, "pddl_params")
     params: dict[str, Any] = {}
     for slot in SLOTS:
-        value = _field(raw, path, slot) if slot in raw or slot != "object_sliced" else False
+        value = _field(raw, path, slot)
         kind = bool if slot == "object_sliced" else str
         if not isinstance(value, kind):
             raise AnnotationError(f"{path}: field 'pddl_params.{slot}': expected a {kind.__name__}, got {value!r}")

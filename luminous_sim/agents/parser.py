@@ -25,7 +25,7 @@ from torch import nn
 from luminous_sim.agents.annotations import SLOTS, Annotated, allowed, held_apart, read_annotations
 from luminous_sim.agents.parser_model import PAD, SEP, UNK, ParserNet, ParserShape
 from luminous_sim.errors import LuminousError
-from luminous_sim.language.speaker.text import tokenize
+from luminous_sim.language.speaker import tokenize
 from luminous_sim.vocab import ALFRED_TASK_TYPES
 
 FORMAT = "luminous-instruction-parser/1"
@@ -163,11 +163,16 @@ class InstructionParser:
             raise ParserError(f"{path}: not a readable parser checkpoint ({torch_reason(exc)})") from None
         if not isinstance(data, dict) or data.get("format") != FORMAT:
             raise ParserError(f"{path}: not an instruction parser checkpoint (expected format {FORMAT})")
-        shape = data["shape"]
-        net = ParserNet(ParserShape(shape["words"], tuple(shape["answers"]), shape["embedding"], shape["hidden"],
-                                    shape["dropout"]))
-        net.load_state_dict(data["model"])
-        return cls(list(data["vocab"]), {h: list(a) for h, a in data["answers"].items()}, net, data["record"])
+        try:
+            shape = data["shape"]
+            net = ParserNet(ParserShape(shape["words"], tuple(shape["answers"]), shape["embedding"],
+                                        shape["hidden"], shape["dropout"]))
+            net.load_state_dict(data["model"])
+            answers = {h: list(data["answers"][h]) for h in HEADS}
+            return cls(list(data["vocab"]), answers, net, dict(data["record"]))
+        except (KeyError, TypeError, ValueError, RuntimeError) as exc:  # RuntimeError: weights of other shapes
+            raise ParserError(f"{path}: a parser checkpoint with a missing or damaged part "
+                              f"({type(exc).__name__}: {str(exc)[:120]})") from None
 
 
 _DEFAULT: InstructionParser | None = None

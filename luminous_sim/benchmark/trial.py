@@ -13,7 +13,7 @@ from pathlib import Path
 from typing import Any
 
 from luminous_sim.cdf.predicates import to_sexpr
-from luminous_sim.errors import LuminousError, read_json_file
+from luminous_sim.errors import LuminousError, json_field, read_json_file
 from luminous_sim.limits import MAX_INPUT_BYTES, MAX_LAYOUT_COORDINATE_M
 from luminous_sim.scene import Scene
 from luminous_sim.tasks import PddlParams, TaskInstance, goal_for, params_problems
@@ -59,12 +59,7 @@ def _read_json(path: Path) -> Any:
 
 
 def _field(data: Any, where: Path, *names: str) -> Any:
-    value = data
-    for k, name in enumerate(names):
-        if not isinstance(value, dict) or name not in value:
-            raise TrialError(f"{where}: field {'.'.join(names[:k + 1])!r} is missing")
-        value = value[name]
-    return value
+    return json_field(data, where, *names, error=TrialError)
 
 
 def _shown(value: Any) -> str:

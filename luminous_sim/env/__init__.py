@@ -22,7 +22,6 @@ if TYPE_CHECKING:
     from luminous_sim.env.actions import ActionTable
     from luminous_sim.env.alfred_env import LuminousEnv, ResetNeeded
     from luminous_sim.env.config import EnvConfig
-    from luminous_sim.env.episodes import UNAVAILABLE_CAUSES, EpisodeUnavailable
     from luminous_sim.env.expert import Expert
     from luminous_sim.env.grouped_vector import GroupedVectorEnv, VectorWorkerError
     from luminous_sim.env.kinds import TASK_KINDS, TaskKind
@@ -39,12 +38,13 @@ if TYPE_CHECKING:
         NewPlaceBonus,
         SceneRepeat,
     )
+    from luminous_sim.episodes import UNAVAILABLE_CAUSES, EpisodeUnavailable
 
 _WHERE = {
     "ActionTable": "actions",
     "LuminousEnv": "alfred_env", "ResetNeeded": "alfred_env",
     "EnvConfig": "config",
-    "EpisodeUnavailable": "episodes", "UNAVAILABLE_CAUSES": "episodes",
+    "EpisodeUnavailable": "luminous_sim.episodes", "UNAVAILABLE_CAUSES": "luminous_sim.episodes",
     "Expert": "expert",
     "TaskKind": "kinds", "TASK_KINDS": "kinds",
     "OraclePolicy": "oracle_policy",

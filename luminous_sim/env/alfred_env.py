@@ -124,6 +124,8 @@ class LuminousEnv(gymnasium.Env):
         self.observation_space = spaces.Dict({s.key: s.space() for s in self.sensors})
         self.measures: list[Measure] = measures_for(self)
         """What `info` reports, one measure each (`env.measures`)."""
+        self._failures = next(m for m in self.measures if isinstance(m, Failures))
+        """The failure count, which cuts an episode off at `max_failures`."""
         self.world: World | None = None
         """The episode's world (None before the first reset and after `close`)."""
         self.worlds = WorldPool(self.config)
@@ -269,7 +271,7 @@ class LuminousEnv(gymnasium.Env):
     @property
     def failures(self) -> int:
         """The episode's failed actions so far."""
-        return next(m.count for m in self.measures if isinstance(m, Failures))
+        return self._failures.count
 
     @property
     def navscore(self) -> NavScore | None:
@@ -305,7 +307,7 @@ class LuminousEnv(gymnasium.Env):
         self._start(episode, world)
         self.history = replay(world, state["history"], self.shaper)
         self._steps, failures, reached = state["counters"]
-        next(m for m in self.measures if isinstance(m, Failures)).count = failures
+        self._failures.count = failures
         self.shaper.resume(world, reached)
         self._ended = bool(state.get("ended", False))
         self._observation()  # the object slots the agent saw last

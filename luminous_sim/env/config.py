@@ -174,13 +174,10 @@ class EnvConfig:
         return f"EnvConfig({', '.join(f'{k}={v!r}' for k, v in self.to_kwargs().items())})"
 
     def __reduce__(self) -> tuple[Any, ...]:
-        return (_from_kwargs, (self.to_kwargs(),))
+        return (EnvConfig.from_kwargs, (self.to_kwargs(),))
 
     @property
     def visible_pixels(self) -> int:
         """Pixels an object needs to be visible: ALFRED's 10 at 300x300, scaled to this image's area."""
         return self.observations.visible_pixels
 
-
-def _from_kwargs(kwargs: dict[str, Any]) -> EnvConfig:
-    return EnvConfig(**kwargs)

@@ -16,7 +16,7 @@ from typing import Any, Literal, get_args
 from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_validator, model_validator
 
 from luminous_sim.env.kinds import TASK_KINDS
-from luminous_sim.env.kinds.options import check_task_options
+from luminous_sim.env.kinds.options import check_task_options, field_bounds
 from luminous_sim.env.rewards import RewardConfig
 from luminous_sim.errors import LuminousError
 from luminous_sim.vocab import ALFRED_TASK_TYPES, ROOM_TYPES
@@ -228,8 +228,7 @@ def settings_error(exc: ValidationError, values: dict[str, Any]) -> LuminousErro
         return LuminousError(f"env config {(error.get('ctx') or {}).get('error', error['msg'])}")
     field = PARTS[FIELD_PART[name]].model_fields[name] if name in FIELD_PART else None
     if kind in ("greater_than_equal", "less_than_equal") and field is not None:
-        low = next(r.ge for r in field.metadata if hasattr(r, "ge"))
-        high = next(r.le for r in field.metadata if hasattr(r, "le"))
+        low, high = field_bounds(field)
         return LuminousError(f"env config {name}: expected an integer in {low}..{high}, got {short_repr(value)}")
     if kind == "literal_error" and field is not None:
         return LuminousError(f"env config {name}: {short_repr(value)}; expected one of {get_args(field.annotation)}")

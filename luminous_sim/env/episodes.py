@@ -11,13 +11,10 @@ from luminous_sim.benchmark import BenchmarkEntry, benchmark_entries, benchmark_
 from luminous_sim.env.config import EnvConfig
 from luminous_sim.env.kinds import set_up, task_kind
 from luminous_sim.env.reset_options import ResetOptions
-from luminous_sim.episodes import Drawing, EpisodeSpec, EpisodeUnavailable, set_initial
+from luminous_sim.episodes import Drawing, set_initial
 from luminous_sim.errors import LuminousError
 from luminous_sim.lazy import moved_getattr
 from luminous_sim.world import World
-
-Episode = EpisodeSpec
-"""The env's episode is an `episodes.EpisodeSpec` (this name stays as the env's word for it)."""
 
 
 def set_up_world(world: World, task_type: str) -> tuple[str, ...]:
@@ -113,7 +110,8 @@ def cdf_paths(config: EnvConfig, options: ResetOptions) -> tuple[str, ...]:
     return config.cdf if options.source == "" else ()
 
 
-__all__ = ["Episode", "EpisodeUnavailable", "cdf_paths", "check_rooms", "drawing", "requested_entry", "room_types",
+__all__ = ["cdf_paths", "check_rooms", "drawing", "requested_entry", "room_types",
            "set_up_world"]
 
-__getattr__ = moved_getattr(__name__, {"UNAVAILABLE_CAUSES": "luminous_sim.episodes"}, "0.3.0")
+__getattr__ = moved_getattr(__name__, dict.fromkeys(("UNAVAILABLE_CAUSES", "EpisodeUnavailable"),
+                                                   "luminous_sim.episodes"), "0.3.0")

@@ -104,6 +104,12 @@ def test_bad_files_are_named(tmp_path):
     junk.write_bytes(b"not a checkpoint")
     with pytest.raises(ParserError, match="junk.pt: not a readable parser checkpoint"):
         InstructionParser.load(junk)
+    import torch
+
+    hollow = tmp_path / "hollow.pt"
+    torch.save({"format": "luminous-instruction-parser/1", "vocab": ["<pad>"]}, hollow)
+    with pytest.raises(ParserError, match="hollow.pt: a parser checkpoint with a missing or damaged part"):
+        InstructionParser.load(hollow)
     with pytest.raises(AnnotationError, match="holds no traj_data.json"):
         read_annotations(tmp_path)
     trial = tmp_path / "t" / "trial" / "traj_data.json"

@@ -115,6 +115,7 @@ def test_alfreds_set_up_is_written_once():
     ("luminous_sim.env.cdf_scenes", "cdf_scene", "luminous_sim.episodes"),
     ("luminous_sim.env.cdf_scenes", "cdf_paths", "luminous_sim.env.episodes"),
     ("luminous_sim.env.episodes", "UNAVAILABLE_CAUSES", "luminous_sim.episodes"),
+    ("luminous_sim.env.episodes", "EpisodeUnavailable", "luminous_sim.episodes"),
 ])
 def test_an_old_path_warns_and_gives_the_moved_name(old, name, new):
     import importlib

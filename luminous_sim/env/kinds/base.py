@@ -36,6 +36,7 @@ class TaskKind(ABC):
     """
 
     templates: tuple[str, ...] = ()
+
     def __init__(self, name: str):
         from luminous_sim.env.kinds.options import kind_defaults
 

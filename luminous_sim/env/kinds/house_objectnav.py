@@ -61,7 +61,6 @@ def target_rooms(view: WorldView, instances: tuple[str, ...]) -> frozenset[str]:
 class HouseObjectNav(ObjectNav):
     """ObjectNav in a house generated per episode, starting in another room than the target for a share."""
 
-
     def rooms(self) -> tuple[str, ...]:
         return ("LivingRoom",)  # not used to lay out a room: the house has every type
 

@@ -5,8 +5,10 @@ against them without importing a kind's module (which loads the simulator)."""
 from __future__ import annotations
 
 from collections.abc import Mapping
+from typing import Any
 
 from pydantic import BaseModel, ConfigDict, Field, ValidationError
+from pydantic.fields import FieldInfo
 
 from luminous_sim.errors import LuminousError
 from luminous_sim.vocab import ALFRED_TASK_TYPES
@@ -91,17 +93,15 @@ def check_task_options(task_types: tuple[str, ...], options: Mapping[str, float]
         try:
             model(**mine)
         except ValidationError as exc:
-            error = exc.errors()[0]
-            name = error["loc"][0]
-            field = model.model_fields[str(name)]
-            low, high = _bounds(field)
+            name = str(exc.errors()[0]["loc"][0])
+            field = model.model_fields[name]
+            low, high = field_bounds(field)
             raise LuminousError(f"env config task_options.{name}: expected a number in {low:g}..{high:g} "
-                                f"({field.description}), got {mine[str(name)]:g}") from None
+                                f"({field.description}), got {mine[name]:g}") from None
 
 
-def _bounds(field: object) -> tuple[float, float]:
-    low, high = 0.0, MAX_TASK_DISTANCE
-    for rule in getattr(field, "metadata", ()):
-        low = getattr(rule, "ge", low)
-        high = getattr(rule, "le", high)
+def field_bounds(field: FieldInfo) -> tuple[Any, Any]:
+    """The `ge` and `le` bounds a pydantic field declares (None where it declares none)."""
+    low = next((rule.ge for rule in field.metadata if hasattr(rule, "ge")), None)
+    high = next((rule.le for rule in field.metadata if hasattr(rule, "le")), None)
     return low, high
