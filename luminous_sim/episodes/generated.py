@@ -35,10 +35,6 @@ class Kind(Protocol):
         """
         ...
 
-    def set_up(self, world: World) -> tuple[str, ...]:
-        """The objects to make dirty before the episode (ALFRED's set-up for cleaning; none for most kinds)."""
-        ...
-
     def draw_goal(self, world: World, scene: Scene, rng: np.random.Generator) -> Goal:
         """A goal of the kind that fits `world`.
 
