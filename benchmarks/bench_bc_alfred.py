@@ -109,7 +109,7 @@ def main() -> int:
         for split in SPLITS:
             start = time.perf_counter()
             report = evaluate(policy, split, held[split], workers=args.workers, env_kwargs=ALFRED_ENV,
-                              out_dir=args.out / f"eval-{label}-{split.replace('+', 'plus')}")
+                              track="privileged", out_dir=args.out / f"eval-{label}-{split.replace('+', 'plus')}")
             report = replace(report, policy=label)
             steps = sum(o.steps for o in report.outcomes)
             ends = dict(Counter(o.end for o in report.outcomes).most_common())

@@ -1,7 +1,9 @@
-"""Layer L5: agents for the benchmark (the modular reference agent of issue 43, part by part). Its first part is
-the instruction parser: a goal directive (and step instructions) to ALFRED's task type and `pddl_params`
-(`InstructionParser`, `default_parser` ships trained on ALFRED's train annotations; `train_parser` makes it
-again). Torch loads only when a parser is used.
+"""Layer L5: agents for the benchmark. The modular reference agent (`ModularAgent`; `modular` is its factory for
+`luminous eval --policy luminous_sim.agents:modular --track privileged`) is made of swappable parts, one module
+each: the instruction parser (`InstructionParser`; `default_parser` ships trained on ALFRED's train
+annotations, `train_parser` makes it again), the camera (`Intrinsics`, `unproject`), its own pose (`OwnPose`),
+the semantic map (`SemanticMap`), A* over that map (`plan_path`), the search priors (`SearchPriors`) and the
+task type's subgoals (`subgoals`). Torch loads only when a parser is used.
 
 Typical use::
 
@@ -17,6 +19,10 @@ from luminous_sim.lazy import lazy_getattr
 
 if TYPE_CHECKING:
     from luminous_sim.agents.annotations import SLOTS, Annotated, AnnotationError, read_annotations
+    from luminous_sim.agents.camera import FOV_DEGREES, Intrinsics, unproject
+    from luminous_sim.agents.modular_agent import AgentSettings, ModularAgent, TrackError, modular, modular_no_steps
+    from luminous_sim.agents.navigation import plan_path
+    from luminous_sim.agents.own_pose import OwnPose
     from luminous_sim.agents.parser import (
         InstructionParser,
         ParsedTask,
@@ -26,15 +32,25 @@ if TYPE_CHECKING:
         default_parser,
         train_parser,
     )
+    from luminous_sim.agents.priors import SearchPriors, default_priors
+    from luminous_sim.agents.semantic_map import SemanticMap
+    from luminous_sim.agents.subgoals import Subgoal, subgoals
 
 _WHERE = {
     "SLOTS": "annotations", "Annotated": "annotations", "AnnotationError": "annotations",
     "read_annotations": "annotations",
     "InstructionParser": "parser", "ParsedTask": "parser", "ParserError": "parser", "TrainSettings": "parser",
     "accuracy": "parser", "default_parser": "parser", "train_parser": "parser",
+    "FOV_DEGREES": "camera", "Intrinsics": "camera", "unproject": "camera",
+    "AgentSettings": "modular_agent", "ModularAgent": "modular_agent", "TrackError": "modular_agent",
+    "modular": "modular_agent", "modular_no_steps": "modular_agent", "plan_path": "navigation", "OwnPose": "own_pose",
+    "SearchPriors": "priors", "default_priors": "priors", "SemanticMap": "semantic_map",
+    "Subgoal": "subgoals", "subgoals": "subgoals",
 }
 
-__all__ = ["SLOTS", "Annotated", "AnnotationError", "InstructionParser", "ParsedTask", "ParserError",
-           "TrainSettings", "accuracy", "default_parser", "read_annotations", "train_parser"]
+__all__ = ["FOV_DEGREES", "SLOTS", "AgentSettings", "Annotated", "AnnotationError", "InstructionParser", "Intrinsics",
+           "ModularAgent", "OwnPose", "ParsedTask", "ParserError", "SearchPriors", "SemanticMap", "Subgoal",
+           "TrackError", "TrainSettings", "accuracy", "default_parser", "default_priors", "modular",
+           "modular_no_steps", "plan_path", "read_annotations", "subgoals", "train_parser", "unproject"]
 
 __getattr__ = lazy_getattr(__name__, _WHERE)

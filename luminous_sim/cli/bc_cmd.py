@@ -101,7 +101,8 @@ def _eval(args: argparse.Namespace) -> int:
     check_policy(args.policy)
     indices = list(range(args.start, args.start + args.episodes))
     if args.family == "alfred":
-        outcomes = list(evaluate(args.policy, args.split, indices, seed=args.seed, env_kwargs=ALFRED_ENV).outcomes)
+        outcomes = list(evaluate(args.policy, args.split, indices, seed=args.seed, env_kwargs=ALFRED_ENV,
+                                 track="privileged").outcomes)  # object slots: the privileged track
     else:
         outcomes = evaluate_pickup(args.policy, args.split, indices, seed=args.seed)
     result = metrics(outcomes)

@@ -20,6 +20,9 @@ if TYPE_CHECKING:
     from luminous_sim.eval import AgentCrashed, EvalReport
 
 SPLITS: tuple[str, ...] = ("S+", "U+", "U+test")
+TRACKS: tuple[str, ...] = ("rgb", "privileged")
+"""`luminous_sim.eval.tracks.TRACKS` (kept here so that `luminous --help` imports no simulator; a test keeps the
+two in step)."""
 """The split names (`luminous_sim.splits.PLUS_SPLITS`; a test keeps the two in step)."""
 DEFAULT_STEP_TIMEOUT, DEFAULT_AGENT_MEMORY_MB, MIN_AGENT_MEMORY_MB = 10.0, 16384, 1024
 """`luminous_sim.eval.sandbox`'s (kept here so that `luminous --help` imports no simulator; a test keeps them in
@@ -69,6 +72,9 @@ def register(sub: argparse._SubParsersAction) -> None:
                         type=int_range(MIN_AGENT_MEMORY_MB, MAX_AGENT_MEMORY_MB, "MAX_AGENT_MEMORY_MB"),
                         metavar="MB", help="memory limit (address space, MiB) of your agent's process; going past "
                                        f"it stops the evaluation (default {DEFAULT_AGENT_MEMORY_MB})")
+    parser.add_argument("--track", choices=TRACKS, default="rgb",
+                        help="rgb: ALFRED's rules (RGB and language in; the default); privileged: with the "
+                             "simulator's depth, instance segmentation and instance types (docs/evaluation.md)")
     parser.add_argument("--env", type=env_option, action="append", default=[], metavar="KEY=VALUE",
                         help="an env option over ALFRED's (EnvConfig's fields; VALUE as JSON, else a string), "
                              "e.g. --env width=64 --env targets=objects; repeatable")
@@ -138,7 +144,7 @@ def _run(args: argparse.Namespace) -> int:
 
     def run(backend: Backend | None) -> EvalReport:
         common = {"seed": args.seed, "workers": args.workers, "out_dir": Path(args.out), "progress": show,
-                  "env_kwargs": dict(args.env), "backend": backend, "limits": limits}
+                  "env_kwargs": dict(args.env), "backend": backend, "limits": limits, "track": args.track}
         if args.live:
             from luminous_sim.benchmark import benchmark_size
 
@@ -216,7 +222,8 @@ def _canonical_build(args: argparse.Namespace, backend: object) -> Path:
 
     out = Path(args.build) if args.build is not None else canonical_build_dir(args.split)
     check_output(Path(args.out), data_run(args.policy, out, args.split, args.seed, dict(args.env),
-                                          AgentLimits(step_timeout=args.step_timeout, memory_mb=args.agent_memory)))
+                                          AgentLimits(step_timeout=args.step_timeout, memory_mb=args.agent_memory),
+                                          args.track))
     want = max(args.episodes or benchmark_size(args.split), built_count(out, args.split))
     options = BuildOptions(frames=False, video=False)
     if backend is None:

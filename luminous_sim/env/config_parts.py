@@ -72,6 +72,7 @@ class ObservationSettings(Settings):
     height: int = _count(300, *IMAGE_SIZE)
     depth: bool = False
     segmentation: bool = False
+    instance_types: bool = False
     goal_mask: bool = False
     pose: bool = False
     inventory: bool = False

@@ -150,6 +150,29 @@ class Segmentation(Sensor):
         return reading.world.instance_ids().astype(np.int32)
 
 
+class InstanceTypes(Sensor):
+    """Each pixel's object type (`type_index`; 0 for structure, the background and none), (H, W) int32: the
+    types of the instances in this frame only, as a detector would give them."""
+
+    key = "instance_types"
+
+    def space(self) -> spaces.Space:
+        o = self.config.observations
+        return spaces.Box(0, len(ALL_TYPES), (o.height, o.width), np.int32)
+
+    def read(self, reading: Reading) -> np.ndarray:
+        ids = reading.world.instance_ids()
+        state = reading.state
+        lookup = {body: type_index(state.objects[oid].object_type)
+                  for body, oid in reading.world.body_to_object().items() if oid in state.objects}
+        out = np.zeros(ids.shape, np.int32)
+        for body in np.unique(ids):
+            kind = lookup.get(int(body), 0)
+            if kind:
+                out[ids == body] = kind
+        return out
+
+
 class GoalMask(Sensor):
     """(H, W, 1) uint8, 255 on the goal type's pixels (`env.goal_mask`)."""
 
@@ -222,8 +245,8 @@ class ObjectSlots(Sensor):
         return [o for _, o in sorted(seen)[: self.actions.slots]]
 
 
-SENSORS: tuple[type[Sensor], ...] = (Rgb, Instruction, HighDescs, Depth, Segmentation, GoalMask, Pose, Inventory,
-                                     ObjectSlots)
+SENSORS: tuple[type[Sensor], ...] = (Rgb, Instruction, HighDescs, Depth, Segmentation, InstanceTypes, GoalMask, Pose,
+                                     Inventory, ObjectSlots)
 """Every sensor, in the order of an observation's keys."""
 
 

@@ -39,10 +39,16 @@ from luminous_sim.eval.policies import (
 )
 from luminous_sim.eval.report import TABLE4_ROWS, markdown_table, plot, write_reports
 from luminous_sim.eval.sandbox import AgentCrashed, AgentLimits, AgentProcess, AgentTimeout
+from luminous_sim.eval.tracks import AGENT_INFO, PRIVILEGED_OPTIONS, TRACKS, agent_info, track_env
 from luminous_sim.eval.trials import TrialRef, list_trials
 from luminous_sim.eval.workers import map_local, map_ordered
 
 __all__ = [
+    "AGENT_INFO",
+    "PRIVILEGED_OPTIONS",
+    "TRACKS",
+    "agent_info",
+    "track_env",
     "BUILT_IN",
     "EVAL_ENV",
     "TABLE4_ROWS",

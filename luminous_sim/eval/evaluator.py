@@ -57,6 +57,7 @@ from luminous_sim.eval.metrics import (
 )
 from luminous_sim.eval.policies import Agent, PolicyError, ReplayAgent, check_policy, make_agent
 from luminous_sim.eval.sandbox import AgentCrashed, AgentLimits, AgentTimeout
+from luminous_sim.eval.tracks import agent_info, check_track, object_id_action, track_env
 from luminous_sim.eval.trials import trial_problem
 from luminous_sim.eval.workers import map_local, map_ordered
 from luminous_sim.limits import MAX_EPISODE_FILE_BYTES, MAX_EVAL_EPISODES, MAX_INPUT_BYTES
@@ -128,6 +129,8 @@ class EvalReport:
     outcomes: tuple[EpisodeOutcome, ...]
     replayed: tuple[str, ...] = ()
     """Episode files found damaged on resume and played again (each with why)."""
+    track: str = "rgb"
+    """The evaluation's track (`tracks.TRACKS`)."""
     per_type: dict[str, Metrics] = field(init=False)
     overall: Metrics = field(init=False)
 
@@ -141,7 +144,7 @@ class EvalReport:
 
     def to_dict(self) -> dict[str, Any]:
         return {
-            "policy": self.policy, "split": self.split, "seed": self.seed, "env": self.env_kwargs,
+            "policy": self.policy, "split": self.split, "track": self.track, "seed": self.seed, "env": self.env_kwargs,
             "entries": len(self.outcomes), "drawn": self.overall.episodes, "unavailable": self.unavailable(),
             "overall": self.overall.to_dict(),
             "per_type": {t: m.to_dict() for t, m in self.per_type.items()},
@@ -151,7 +154,7 @@ class EvalReport:
     @classmethod
     def from_dict(cls, data: dict[str, Any]) -> EvalReport:
         return cls(data["policy"], data["split"], data["seed"], data["env"],
-                   tuple(EpisodeOutcome.from_dict(o) for o in data["episodes"]))
+                   tuple(EpisodeOutcome.from_dict(o) for o in data["episodes"]), track=data.get("track", "rgb"))
 
 
 def episode_seed(seed: int, split: str, index: int) -> int:
@@ -164,9 +167,11 @@ def episode_seed(seed: int, split: str, index: int) -> int:
 
 
 def play(env: LuminousEnv, agent: Agent, split: str, index: int, seed: int = 0, *, trial: str = "",
-         trial_rel: str = "") -> EpisodeOutcome:
+         trial_rel: str = "", object_ids: bool = False) -> EpisodeOutcome:
     """One episode played by `agent` in `env` to its end: entry `index` of the frozen split `split`, or with
-    `trial` the built trial in that folder (restored from its files; `split` and `index` then name it).
+    `trial` the built trial in that folder (restored from its files; `split` and `index` then name it). The
+    agent reads only `tracks.agent_info` of the env's `info`; an action naming an object id ends the episode
+    as an invalid action unless `object_ids` (the built-in oracle's).
 
     Raises:
         PolicyError: the agent raised (the message names the episode; the agent's error is chained).
@@ -186,8 +191,8 @@ def play(env: LuminousEnv, agent: Agent, split: str, index: int, seed: int = 0, 
     fault = ""
     try:
         steps_text = obs.get("high_descs", "")
-        agent.reset(obs["instruction"], {**info, "episode_seed": own_seed,
-                                         "high_descs": steps_text.split("\n") if steps_text.strip(".") else []})
+        agent.reset(obs["instruction"], agent_info(info, episode_seed=own_seed,
+                                                   high_descs=steps_text.split("\n") if steps_text.strip(".") else []))
     except AgentTimeout as exc:  # the agent's process was killed; the next episode gets a fresh one
         fault, timed_out = f"at reset: {exc}", True
     except AgentCrashed as exc:
@@ -196,7 +201,7 @@ def play(env: LuminousEnv, agent: Agent, split: str, index: int, seed: int = 0, 
         raise PolicyError(f"the agent raised on {split} episode {index} at reset: {type(exc).__name__}: {exc}") from exc
     while not (terminated or truncated or timed_out):
         try:
-            action = agent.act(obs, info)
+            action = agent.act(obs, agent_info(info))
         except AgentTimeout as exc:
             fault, timed_out = f"step {steps + 1}: {exc}", True
             break
@@ -206,6 +211,8 @@ def play(env: LuminousEnv, agent: Agent, split: str, index: int, seed: int = 0, 
             raise PolicyError(f"the agent raised on {split} episode {index} at step {steps}: "
                               f"{type(exc).__name__}: {exc}") from exc
         fault = _not_an_action(action)
+        if not fault and not object_ids and object_id_action(action):
+            fault = "an evaluated agent names its target by a mask or a point, not by object id"
         if not fault:
             obs, _, terminated, truncated, info = env.step(action)
             if info.get("failure_code") in NOT_AN_ACTION:
@@ -374,7 +381,8 @@ def _run_job(job: EpisodeJob) -> tuple[EpisodeOutcome, str]:
     if job.trial and job.policy == "oracle":
         agent = _replay_agent(job.trial)
     try:
-        outcome = play(env, agent, job.split, job.index, job.seed, trial=job.trial, trial_rel=job.trial_rel)
+        outcome = play(env, agent, job.split, job.index, job.seed, trial=job.trial, trial_rel=job.trial_rel,
+                       object_ids=job.policy == "oracle")
     finally:
         env.close()  # frees the episode's simulator; the next reset builds a new one
     if path is not None:
@@ -398,11 +406,11 @@ def _claim(out_dir: Path, run: dict[str, Any]) -> None:
 
 
 def data_run(policy: str, data_dir: Path, split: str, seed: int, env_kwargs: dict[str, Any] | None,
-             limits: AgentLimits | None = None) -> dict[str, Any]:
+             limits: AgentLimits | None = None, track: str = "rgb") -> dict[str, Any]:
     """What an evaluation of a dataset folder records in its `run.json` (`evaluate_data`'s arguments; the agent's
     limits too, since they decide which episodes end as `agent_timeout`: a resume with others is refused)."""
-    return {"policy": policy, "data": str(Path(data_dir).resolve()), "split": split, "seed": seed,
-            "env": _env_config(split, env_kwargs).to_kwargs(), "limits": _limits_record(limits)}
+    return {"policy": policy, "data": str(Path(data_dir).resolve()), "split": split, "track": track, "seed": seed,
+            "env": _env_config(split, env_kwargs, track).to_kwargs(), "limits": _limits_record(limits)}
 
 
 def _limits_record(limits: AgentLimits | None) -> dict[str, Any]:
@@ -447,8 +455,10 @@ def check_output(out_dir: Path, run: dict[str, Any]) -> bool:
     return True
 
 
-def _env_config(split: str, env_kwargs: dict[str, Any] | None) -> EnvConfig:
-    """ALFRED's env (`EVAL_ENV`) with the user's options, refusing the ones the evaluation sets itself."""
+def _env_config(split: str, env_kwargs: dict[str, Any] | None, track: str = "rgb") -> EnvConfig:
+    """ALFRED's env (`EVAL_ENV`) with the user's options and the track's observations, refusing the ones the
+    evaluation sets itself and those the track does not allow (`tracks.track_env`)."""
+    env_kwargs = track_env(track, env_kwargs)
     for name in EVAL_SETS:
         value = (env_kwargs or {}).get(name)
         if name == "split" and value not in (None, "", split):
@@ -482,7 +492,7 @@ def _indices(episodes: int | Iterable[int], size: int, split: str) -> Sequence[i
 
 def _run_all(policy: str, split: str, seed: int, config: EnvConfig, jobs: list[EpisodeJob],
              progress: Callable[[EpisodeOutcome], None] | None, workers: int,
-             backend: Backend | None) -> EvalReport:
+             backend: Backend | None, track: str) -> EvalReport:
     outcomes, replayed = [], []
     runs = map_local(_run_job, jobs, workers) if backend is None else map_ordered(_run_job, jobs, backend)
     for outcome, damaged in runs:
@@ -491,13 +501,13 @@ def _run_all(policy: str, split: str, seed: int, config: EnvConfig, jobs: list[E
             replayed.append(damaged)
         if progress is not None:
             progress(outcome)
-    return EvalReport(policy, split, seed, config.to_kwargs(), tuple(outcomes), tuple(replayed))
+    return EvalReport(policy, split, seed, config.to_kwargs(), tuple(outcomes), tuple(replayed), track)
 
 
 def evaluate(policy: str, split: str, episodes: int | Iterable[int], *, seed: int = 0, workers: int = 1,
              out_dir: Path | None = None, env_kwargs: dict[str, Any] | None = None,
              progress: Callable[[EpisodeOutcome], None] | None = None,
-             backend: Backend | None = None, limits: AgentLimits | None = None) -> EvalReport:
+             backend: Backend | None = None, limits: AgentLimits | None = None, track: str = "rgb") -> EvalReport:
     """Run `policy` (`oracle`, `random` or `MODULE:CALLABLE`) on entries of the frozen split `split`, each
     played live: `reset(options={"split": split, "index": i})`, the episode `episodes.entry_spec` defines
     (the oracle is the env's expert, replanning from the env's state). `evaluate_data` plays a build's trials
@@ -518,6 +528,8 @@ def evaluate(policy: str, split: str, episodes: int | Iterable[int], *, seed: in
             be importable by the workers (on `PYTHONPATH`, or installed on every node).
         limits: a user's agent's limits (`sandbox.AgentLimits`: seconds per call, memory); it runs in a child
             process of each worker, and its module is never imported in this process.
+        track: `rgb` (ALFRED's rules) or `privileged` (with the simulator's depth and segmentation;
+            `luminous_sim.eval.tracks`).
 
     Raises:
         PolicyError, SplitError, LuminousError: a bad policy spec, split, index or env option (before any work).
@@ -526,24 +538,26 @@ def evaluate(policy: str, split: str, episodes: int | Iterable[int], *, seed: in
             episode ends as `agent_timeout` and the evaluation goes on.
     """
     limits = limits or AgentLimits()
+    check_track(track)
     check_policy(policy, limits)
     plus_split(split)
     indices = _indices(episodes, benchmark_size(split), split)
-    config = _env_config(split, env_kwargs)
+    config = _env_config(split, env_kwargs, track)
     env_json = json.dumps(config.to_kwargs(), sort_keys=True)
     if out_dir is not None:
-        _claim(out_dir, {"policy": policy, "split": split, "seed": seed, "env": config.to_kwargs(),
+        _claim(out_dir, {"policy": policy, "split": split, "track": track, "seed": seed, "env": config.to_kwargs(),
                          "limits": _limits_record(limits)})
     jobs = [EpisodeJob(policy, split, i, seed, env_json, None if out_dir is None else str(out_dir), limits=limits)
             for i in indices]
-    return _run_all(policy, split, seed, config, jobs, progress, workers, backend)
+    return _run_all(policy, split, seed, config, jobs, progress, workers, backend, track)
 
 
 def evaluate_data(policy: str, data_dir: Path, *, split: str | None = None,
                   episodes: int | Iterable[int] | None = None, seed: int = 0, workers: int = 1,
                   out_dir: Path | None = None, env_kwargs: dict[str, Any] | None = None,
                   progress: Callable[[EpisodeOutcome], None] | None = None,
-                  backend: Backend | None = None, limits: AgentLimits | None = None) -> EvalReport:
+                  backend: Backend | None = None, limits: AgentLimits | None = None,
+                  track: str = "rgb") -> EvalReport:
     """Run `policy` on the trials of a built dataset folder, as ALFRED's evaluation iterates over a split's
     traj_data.json files: each trial restored from its files alone (`reset(options={"trial": folder})`), the
     agent reading annotation 0; the `oracle` replays the trial's recorded low-level actions through the agent
@@ -562,6 +576,7 @@ def evaluate_data(policy: str, data_dir: Path, *, split: str | None = None,
     from luminous_sim.eval.trials import list_trials
 
     limits = limits or AgentLimits()
+    check_track(track)
     check_policy(policy, limits)
     refs = list_trials(Path(data_dir), split)
     if not refs:
@@ -571,12 +586,12 @@ def evaluate_data(policy: str, data_dir: Path, *, split: str | None = None,
         refs = [r for k, r in enumerate(refs) if k in chosen]
     names = sorted({r.split for r in refs})
     label = split or "+".join(names)
-    config = _env_config(label, env_kwargs)
+    config = _env_config(label, env_kwargs, track)
     env_json = json.dumps(config.to_kwargs(), sort_keys=True)
     if out_dir is not None:
-        _claim(out_dir, data_run(policy, data_dir, label, seed, env_kwargs, limits))
+        _claim(out_dir, data_run(policy, data_dir, label, seed, env_kwargs, limits, track))
     jobs = [EpisodeJob(policy, r.split, r.index, seed, env_json, None if out_dir is None else str(out_dir),
                        trial="" if r.unbuilt or r.broken else str(r.path), trial_rel=r.rel, unbuilt=r.unbuilt,
                        named=r.named, stage=r.stage, broken=r.broken, limits=limits)
             for r in refs]
-    return _run_all(policy, label, seed, config, jobs, progress, workers, backend)
+    return _run_all(policy, label, seed, config, jobs, progress, workers, backend, track)

@@ -49,7 +49,7 @@ def markdown_table(reports: Sequence[EvalReport]) -> str:
     undrawn entries below it."""
     head = ["Task"]
     for r in reports:
-        head += [f"{r.policy} {r.split} {label}" for label in ("n", *(c for _, c in COLUMNS))]
+        head += [f"{r.policy} {r.split} ({r.track}) {label}" for label in ("n", *(c for _, c in COLUMNS))]
     lines = ["| " + " | ".join(head) + " |", "|" + "---|" * len(head)]
     for task_type, label in TABLE4_ROWS:
         row = [label]

@@ -65,7 +65,8 @@ def test_the_checkpoint_records_the_env_of_its_demos_and_the_clone_plays_alfred_
     _, meta = load_checkpoint(path)
     assert meta["env"] == demos_env(demos)
     monkeypatch.setenv(CHECKPOINT_VAR, str(path))
-    (episode,) = evaluate("luminous_sim.bc:bc_agent", "U+", [3], env_kwargs={**ALFRED_ENV, "max_steps": 12}).outcomes
+    (episode,) = evaluate("luminous_sim.bc:bc_agent", "U+", [3], env_kwargs={**ALFRED_ENV, "max_steps": 12},
+                          track="privileged").outcomes
     assert episode.task_type == benchmark_entry("U+", 3).task_type
     assert episode.episode_key == benchmark_entry("U+", 3).episode_key
     assert episode.end in {"success", "stop", "max_failures", "max_steps"} and episode.steps > 0

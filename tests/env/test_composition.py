@@ -24,9 +24,9 @@ from luminous_sim.errors import LuminousError
 
 FLAT_FIELDS = {
     "task_types", "room_types", "width", "height", "targets", "grid", "object_slots", "depth", "segmentation",
-    "goal_mask", "pose", "inventory", "step_instructions", "high_descs", "max_steps", "max_failures", "reward_mode",
-    "reward", "navigation_reward", "expert_in_info", "verify_expert", "scene_attempts", "min_visible_pixels",
-    "rasteriser", "split", "cdf", "task_options"}
+    "instance_types", "goal_mask", "pose", "inventory", "step_instructions", "high_descs", "max_steps", "max_failures",
+    "reward_mode", "reward", "navigation_reward", "expert_in_info", "verify_expert", "scene_attempts",
+    "min_visible_pixels", "rasteriser", "split", "cdf", "task_options"}
 """The keyword arguments an env took before its config was split by concern (evaluations resume from them)."""
 SMALL = {"task_types": ["pickup_object"], "width": 32, "height": 32, "room_types": ["Bathroom"], "grid": 3,
          "max_steps": 20, "rasteriser": "compiled"}

@@ -1,0 +1,394 @@
+"""The modular reference agent (FILM's and HLSM's design, with the simulator's depth and segmentation in the
+privileged track): the instruction parser reads the task, the semantic map is built from the agent's own
+frames and pose, frontier search with receptacle priors finds what is not yet seen, and the task type's
+subgoals are acted out with A* over its own map and interactions on the target's pixels.
+
+It sees only what the env gives an agent: the observation (`rgb`, `depth`, `segmentation`, `instance_types`,
+`instruction`), the last action's `failure_code`, and the instructions at reset (docs/agents.md).
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from luminous_sim.agents.camera import Intrinsics
+from luminous_sim.agents.navigation import State, plan_path
+from luminous_sim.agents.own_pose import HEADINGS, HORIZON_RANGE, STEP, OwnPose
+from luminous_sim.agents.priors import SearchPriors, default_priors
+from luminous_sim.agents.semantic_map import Instance, Node, SemanticMap
+from luminous_sim.agents.subgoals import Subgoal, subgoals
+from luminous_sim.errors import LuminousError
+from luminous_sim.vocab import ALL_TYPES, abilities
+from luminous_sim.vocab.agent_body import CAMERA_HEIGHT
+
+NEEDS = ("depth", "segmentation", "instance_types")
+"""The observations the agent maps with (the privileged track's)."""
+REACH = 1.48
+"""Metres from the eye to a pixel's point within which the agent interacts (ALFRED's 1.5 is measured to the
+object's nearest point, which is never farther than a point seen on it)."""
+POSE_TRIES = 4
+"""Interaction poses tried for one instance before it counts as out of reach."""
+OPEN_STANDOFF = 0.5
+"""Metres on the floor to stand from what opens (a door swings towards the agent), at first."""
+FRONTIER_AWAY = 3
+"""Nodes a frontier must be from every node stood on (nearer floor is below the camera's view)."""
+STOP = {"action": "Stop"}
+
+
+class TrackError(LuminousError):
+    """The agent was given an env without the observations its track needs."""
+
+
+def type_index(name: str) -> int:
+    return ALL_TYPES.index(name) + 1 if name in ALL_TYPES else 0
+
+
+def type_name(index: int) -> str:
+    return ALL_TYPES[index - 1] if 0 < index <= len(ALL_TYPES) else ""
+
+
+@dataclass
+class AgentSettings:
+    """The agent's choices (the defaults are the reference agent's)."""
+
+    use_steps: bool = True
+    """Parse the step instructions with the directive (ALFRED's `high_descs`)."""
+    given_task: dict[str, Any] | None = None
+    """The task's type and `pddl_params` given instead of parsed (the parser ablation; None: parsed)."""
+
+
+@dataclass
+class _Episode:
+    plan: list[Subgoal]
+    map: SemanticMap
+    pose: OwnPose = field(default_factory=OwnPose)
+    index: int = 0
+    queue: list[str] = field(default_factory=list)
+    last: dict[str, Any] | None = None
+    target: int | None = None
+    roles: dict[str, int] = field(default_factory=dict)
+    opened: set[int] = field(default_factory=set)
+    tried: dict[int, set[Node]] = field(default_factory=dict)
+    standoff: dict[int, float] = field(default_factory=dict)
+    """Per instance, the least distance (metres, on the floor) to stand from it: raised each time opening it
+    failed because its door would hit the agent."""
+    out_of_reach: set[int] = field(default_factory=set)
+    searched: set[int] = field(default_factory=set)
+    looked_around: set[Node] = field(default_factory=set)
+    held: int | None = None
+    turn: str = "RotateRight"
+    """Which way it looks around (drawn from the episode's seed: the search's randomness)."""
+    seen_types: set[int] = field(default_factory=set)
+    searching: bool = False
+    """The last interaction opened a receptacle to look inside (search), not a subgoal's."""
+
+
+class ModularAgent:
+    """The agent (see the module docstring); `reset` and `act` are the evaluation's agent interface."""
+
+    def __init__(self, width: int, height: int, parser: Any = None, priors: SearchPriors | None = None,
+                 settings: AgentSettings | None = None):
+        self.intrinsics = Intrinsics(width, height)
+        self.parser = parser
+        self.priors = priors or default_priors()
+        self.settings = settings or AgentSettings()
+        self.task: dict[str, Any] = {}
+        self.ep = _Episode([], SemanticMap(self.intrinsics))
+
+    def reset(self, instruction: str, info: dict[str, Any]) -> None:
+        given = self.settings.given_task
+        if given is None:
+            if self.parser is None:
+                from luminous_sim.agents.parser import default_parser
+
+                self.parser = default_parser()
+            steps = list(info.get("high_descs") or []) if self.settings.use_steps else []
+            directive = instruction.split("\n")[0]
+            self.task = self.parser.parse(directive, steps).to_dict()
+        else:
+            self.task = {"task_type": given["task_type"], "pddl_params": dict(given["pddl_params"])}
+        self.ep = _Episode(subgoals(self.task["task_type"], self.task["pddl_params"]), SemanticMap(self.intrinsics))
+        rng = np.random.default_rng(int(info.get("episode_seed") or 0))
+        self.ep.turn = "RotateRight" if rng.random() < 0.5 else "RotateLeft"
+
+    def diagnosis(self) -> dict[str, Any]:
+        """Where the episode stands, in the agent's own terms (for an error breakdown): the parsed task, the
+        subgoal reached, and whether that subgoal's target was ever seen."""
+        ep = self.ep
+        current = ep.plan[ep.index] if ep.index < len(ep.plan) else None
+        return {"task": self.task, "subgoal": ep.index, "subgoals": len(ep.plan),
+                "action": current.action if current else "",
+                "target_seen": bool(current) and any(type_index(t) in ep.seen_types for t in current.types)}
+
+    def act(self, observation: dict[str, Any], info: dict[str, Any]) -> dict[str, Any]:
+        ep = self.ep
+        self._feedback(info)
+        depth = np.asarray(observation["depth"], np.float32)[..., 0]
+        seg = np.asarray(observation["segmentation"])
+        types = np.asarray(observation["instance_types"])
+        ep.map.update(depth, seg, types, ep.pose, ep.held)
+        ep.seen_types.update(int(t) for t in np.unique(types) if t)
+        action = self._decide(depth, seg)
+        ep.last = action
+        return action
+
+    # --- feedback -------------------------------------------------------------------------------------------
+
+    def _feedback(self, info: dict[str, Any]) -> None:
+        ep, last = self.ep, self.ep.last
+        if last is None:
+            return
+        ok = info.get("failure_code") in (None, "")
+        name = last["action"]
+        if name in ("MoveAhead", "RotateLeft", "RotateRight", "LookUp", "LookDown"):
+            if ok:
+                ep.pose = ep.pose.after(name)
+            else:
+                if name == "MoveAhead":
+                    ep.map.blocked_moves.add((ep.pose.node, ep.pose.heading))
+                ep.queue.clear()
+            return
+        ep.queue.clear()
+        body = ep.target
+        if body is None:
+            return
+        if not ok:
+            if name == "OpenObject" and info.get("failure_code") == "blocked":
+                target = ep.map.instances.get(body)
+                if target is not None:
+                    ep.standoff[body] = _flat_distance(ep.pose.node, target.points) + STEP
+            if ep.searching and ep.tried.get(body) and len(ep.tried[body]) + 1 >= POSE_TRIES:
+                ep.searched.add(body)
+            ep.tried.setdefault(body, set()).add(ep.pose.node)
+            if len(ep.tried[body]) >= POSE_TRIES:
+                ep.out_of_reach.add(body)
+            return
+        if name == "OpenObject":
+            ep.opened.add(body)
+        elif name == "CloseObject":
+            ep.opened.discard(body)
+        if ep.searching:  # look inside at other horizons too
+            ep.searched.add(body)
+            ep.searching = False
+            h = ep.pose.horizon
+            ep.queue = (["LookDown", "LookUp"] if h + 15 <= HORIZON_RANGE[1] else []) + (
+                ["LookUp", "LookDown"] if h - 15 >= HORIZON_RANGE[0] else [])
+            return
+        if ep.index >= len(ep.plan):
+            return
+        sg = ep.plan[ep.index]
+        if sg.role:
+            ep.roles[sg.role] = body
+        if name in ("PickupObject", "SliceObject"):
+            ep.map.forget_instance(body)
+        if name == "PickupObject":
+            ep.held = body
+        elif name == "PutObject":
+            ep.held = None
+        ep.index += 1
+        ep.tried.clear()
+        ep.out_of_reach.clear()
+
+    # --- decisions ------------------------------------------------------------------------------------------
+
+    def _decide(self, depth: np.ndarray, seg: np.ndarray) -> dict[str, Any]:
+        ep = self.ep
+        for _ in range(len(ep.plan) + 4):
+            if ep.index >= len(ep.plan):
+                return STOP
+            if not ep.looked_around:  # look around where it starts
+                ep.looked_around.add(ep.pose.node)
+                ep.queue = [ep.turn] * 4
+            if ep.queue:
+                return self._nav(ep.queue.pop(0))
+            sg = ep.plan[ep.index]
+            if sg.action == "OpenObject" and ep.roles.get(sg.role) in ep.opened and sg.role:
+                ep.index += 1
+                continue
+            target = self._choose(sg)
+            ep.searching = False
+            if target is None:
+                return self._explore(sg, depth, seg)
+            action = self._interact(sg.action, target, depth, seg)
+            if action is not None:
+                return action
+            step = self._approach(target)
+            if step is not None:
+                return step
+        return STOP
+
+    def _nav(self, name: str) -> dict[str, Any]:
+        self.ep.target = None
+        return {"action": name}
+
+    def _choose(self, sg: Subgoal) -> Instance | None:
+        ep = self.ep
+        wanted = {type_index(t) for t in sg.types}
+        mine = ep.roles.get(sg.role) if sg.role and sg.role != "other" else None
+        if mine is not None and mine in ep.map.instances and mine not in ep.out_of_reach:
+            return ep.map.instances[mine]
+        first = ep.roles.get("object")
+        found = [i for i in ep.map.instances.values() if i.type_index in wanted and i.body not in ep.out_of_reach
+                 and not (sg.role == "other" and i.body == first)]
+        if not found:
+            return None
+        here = np.array([ep.pose.x, ep.pose.y])
+        return min(found, key=lambda i: (float(np.linalg.norm(i.centre[:2] - here)), i.body))
+
+    def _interact(self, name: str, target: Instance, depth: np.ndarray, seg: np.ndarray) -> dict[str, Any] | None:
+        """The interaction on the target's pixels if it is in view and within reach now."""
+        rows, cols = np.nonzero(seg == target.body)
+        if len(rows) == 0 or self.ep.pose.node in self.ep.tried.get(target.body, set()):
+            return None
+        right, up = self.intrinsics.rays(rows, cols)
+        dist = depth[rows, cols] * np.sqrt(1 + right**2 + up**2)
+        near = dist < REACH
+        if near.sum() == 0:
+            return None
+        rows, cols = rows[near], cols[near]
+        k = int(np.argmin((rows - rows.mean()) ** 2 + (cols - cols.mean()) ** 2))
+        self.ep.target = target.body
+        return {"action": name, "point": [int(cols[k]), int(rows[k])]}
+
+    def _approach(self, target: Instance) -> dict[str, Any] | None:
+        """The first move towards a pose from which the target is within reach (None: there is none left)."""
+        ep = self.ep
+        goals = self._poses(target)
+        path = plan_path(ep.map, (ep.pose.node, ep.pose.heading), goals)
+        if path is None:
+            ep.out_of_reach.add(target.body)
+            return None
+        node = ep.pose.node if not path else _end(ep.pose, path)
+        if not path and ep.pose.horizon == _horizon(node, target):
+            ep.tried.setdefault(target.body, set()).add(node)  # here, facing it, and still not in reach
+            if len(ep.tried[target.body]) >= POSE_TRIES:
+                ep.out_of_reach.add(target.body)
+            return None
+        looks = _horizon(node, target) - ep.pose.horizon
+        ep.queue = path + ["LookDown" if looks > 0 else "LookUp"] * (abs(looks) // 15)
+        if not ep.queue:
+            return None
+        return self._nav(ep.queue.pop(0))
+
+    def _poses(self, target: Instance) -> list[State]:
+        """Nodes (with the heading towards the target) from which its nearest seen point is within reach."""
+        ep = self.ep
+        c = target.centre
+        cx, cy = round(c[0] / STEP), round(c[1] / STEP)
+        out: list[State] = []
+        tried = ep.tried.get(target.body, set())
+        standoff = ep.standoff.get(target.body, OPEN_STANDOFF if _opens(target) else 0.0)
+        for dx in range(-6, 7):
+            for dy in range(-6, 7):
+                node = (cx + dx, cy + dy)
+                if node in tried or ep.map.blocked(node) or _flat_distance(node, target.points) < standoff:
+                    continue
+                if 0.3 < ep.map.eye_distance(node, target.points) < REACH - 0.05:
+                    out.append((node, _facing(node, c)))
+        return out
+
+    def _explore(self, sg: Subgoal, depth: np.ndarray, seg: np.ndarray) -> dict[str, Any]:
+        """A step of search for the subgoal's types: the nearest frontier, else the likeliest closed receptacle
+        (by the priors) opened to look inside, else Stop."""
+        ep = self.ep
+        frontier = self._frontier()
+        if frontier:
+            path = plan_path(ep.map, (ep.pose.node, ep.pose.heading), [(n, h) for n in frontier for h in range(4)])
+            if path:
+                ep.queue = path + [ep.turn] * 3  # and look around there
+                ep.looked_around.add(_end(ep.pose, path))
+                return self._nav(ep.queue.pop(0))
+        if not any(abilities(t).pickupable for t in sg.types):
+            return STOP  # what cannot be put away is found by exploring alone
+        return self._search_receptacles(sg, depth, seg)
+
+    def _search_receptacles(self, sg: Subgoal, depth: np.ndarray, seg: np.ndarray) -> dict[str, Any]:
+        """Go to the receptacle likeliest to hold one of the subgoal's types (the priors, then nearness), look
+        at it, and open it if it is closed; Stop when every receptacle has been searched."""
+        ep = self.ep
+        here = np.array([ep.pose.x, ep.pose.y])
+        for _ in range(64):
+            left = [i for i in ep.map.instances.values() if abilities(type_name(i.type_index)).receptacle
+                    and i.body not in ep.searched and i.body not in ep.out_of_reach and i.body != ep.held]
+            if not left:
+                return STOP
+
+            def score(i: Instance) -> tuple[float, float, int]:
+                chance = max(self.priors.chance(t, type_name(i.type_index)) for t in sg.types)
+                return (chance, -float(np.linalg.norm(i.centre[:2] - here)), -i.body)
+
+            likely = max(left, key=score)
+            closed = abilities(type_name(likely.type_index)).openable and likely.body not in ep.opened
+            if closed:
+                action = self._interact("OpenObject", likely, depth, seg)
+                if action is not None:
+                    ep.searching = True
+                    return action
+            step = self._approach(likely)
+            if step is not None:
+                return step
+            if not closed or likely.body in ep.out_of_reach:
+                ep.searched.add(likely.body)  # looked at from within reach, or out of reach from everywhere
+        return STOP
+
+    def _frontier(self) -> list[Node]:
+        ep = self.ep
+        visited = ep.map.visited
+        out: list[Node] = []
+        known = [n for n in ep.map.known_nodes() if not ep.map.blocked(n)]
+        for n in known:
+            if min(max(abs(n[0] - v[0]), abs(n[1] - v[1])) for v in visited) < FRONTIER_AWAY:
+                continue
+            if any(not ep.map.known((n[0] + dx, n[1] + dy)) for dx, dy in HEADINGS):
+                out.append(n)
+        return out
+
+
+def _flat_distance(node: Node, points: np.ndarray) -> float:
+    """The least distance on the floor from a node to any of `points`."""
+    return float(np.min(np.hypot(points[:, 0] - node[0] * STEP, points[:, 1] - node[1] * STEP)))
+
+
+def _opens(target: Instance) -> bool:
+    return abilities(type_name(target.type_index)).openable
+
+
+def _end(pose: OwnPose, path: list[str]) -> Node:
+    for name in path:
+        pose = pose.after(name)
+    return pose.node
+
+
+def _facing(node: Node, point: np.ndarray) -> int:
+    angle = math.degrees(math.atan2(point[0] - node[0] * STEP, point[1] - node[1] * STEP)) % 360
+    return round(angle / 90) % 4
+
+
+def _horizon(node: Node, target: Instance) -> int:
+    c = target.centre
+    flat = math.hypot(c[0] - node[0] * STEP, c[1] - node[1] * STEP)
+    down = math.degrees(math.atan2(CAMERA_HEIGHT - c[2], max(flat, 0.05)))
+    h = round(down / 15) * 15
+    return min(max(h, HORIZON_RANGE[0]), HORIZON_RANGE[1])
+
+
+def modular(context: Any) -> ModularAgent:
+    """The evaluation's factory (`luminous eval --policy luminous_sim.agents:modular --track privileged`)."""
+    obs = context.config.observations
+    missing = [k for k in NEEDS if not getattr(obs, k)]
+    if missing:
+        raise TrackError(f"the modular agent maps with {', '.join(NEEDS)}, which this env does not observe "
+                         f"({', '.join(missing)} off): evaluate it with --track privileged (its perception "
+                         "for the rgb track is the issue 'Agents that see')")
+    return ModularAgent(obs.width, obs.height)
+
+
+def modular_no_steps(context: Any) -> ModularAgent:
+    """The modular agent parsing the goal directive alone (the step-instructions ablation)."""
+    agent = modular(context)
+    agent.settings = AgentSettings(use_steps=False)
+    return agent
