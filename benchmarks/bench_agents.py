@@ -95,13 +95,26 @@ def play_job(args: tuple[Job, str]) -> dict[str, Any]:
     truth = _truth(job)
     settings = AgentSettings(use_steps=job.variant != "no-steps", given_task=truth if job.variant == "given" else None)
     agent = ModularAgent(300, 300, parser=parser, settings=settings)
+    acting = [0.0, 0]
+    act = agent.act
+
+    def timed(observation: dict[str, Any], info: dict[str, Any]) -> Any:
+        t = time.process_time()
+        try:
+            return act(observation, info)
+        finally:
+            acting[0] += time.process_time() - t
+            acting[1] += 1
+
+    agent.act = timed  # type: ignore[method-assign]
     start = time.perf_counter()
     try:
         outcome = play(env, agent, job.split, job.index, job.seed, trial=job.trial)
     finally:
         env.close()
     row = {"job": asdict(job), "outcome": outcome.to_dict(), "diagnosis": agent.diagnosis() if outcome.drawn else {},
-           "truth": truth, "seconds": round(time.perf_counter() - start, 2)}
+           "truth": truth, "seconds": round(time.perf_counter() - start, 2),
+           "act_cpu_s": round(acting[0], 3), "acts": acting[1]}
     write_atomic(path, json.dumps(row, indent=1) + "\n")
     return row
 
@@ -275,6 +288,20 @@ def breakdown(results: dict[tuple[str, str], list[dict[str, Any]]], split: str, 
     return "\n".join(lines) + "\n"
 
 
+def _cpu() -> str:
+    try:
+        lines = Path("/proc/cpuinfo").read_text().splitlines()
+    except OSError:
+        return platform.processor() or "?"
+    return next((line.split(":", 1)[1].strip() for line in lines if line.startswith("model name")), "?")
+
+
+def _act_ms(results: dict[tuple[str, str], list[dict[str, Any]]]) -> float | None:
+    """The agent's own CPU time per step (ms), over every episode that recorded it."""
+    rows = [r for v in results.values() for r in v if r.get("acts")]
+    return 1000 * sum(r["act_cpu_s"] for r in rows) / sum(r["acts"] for r in rows) if rows else None
+
+
 def paper_rows() -> str:
     lines = ["\nThe paper's Table 4 (SR; AI2-THOR, models trained on ALFRED; quoted, not measured here)",
              "| Task | " + " | ".join(f"{m} {s}" for m in PAPER_SR for s in ("S", "S+", "U", "U+")) + " |",
@@ -321,7 +348,7 @@ def main() -> int:
     for variant in args.variants:
         for seed in args.seeds if variant == "parsed" else args.ablation_seeds:
             jobs += [Job(split, i, variant, seed, trial, parser_file(seed)) for split, i, trial in places]
-    print(f"{len(jobs)} episodes: {len(places)} entries x variants x seeds; CPU {platform.processor() or '?'}, "
+    print(f"{len(jobs)} episodes: {len(places)} entries x variants x seeds; CPU {_cpu()}, "
           f"{os.cpu_count()} cores, load {os.getloadavg()[0]:.1f}", file=sys.stderr)
     start = time.perf_counter()
     results: dict[tuple[str, str], list[dict[str, Any]]] = defaultdict(list)
@@ -335,8 +362,10 @@ def main() -> int:
     wall = time.perf_counter() - start
     splits = (["S"] if args.s_data is not None else []) + args.splits
     report: dict[str, Any] = {"per_type": args.per_type, "seeds": args.seeds, "wall_s": round(wall, 1),
+                              "cpu": _cpu(), "load_end": round(os.getloadavg()[0], 1),
                               "episode_s_median": float(np.median([r["seconds"] for v in results.values()
                                                                    for r in v])),
+                              "act_ms_per_step": _act_ms(results),
                               "tables": {}, "differences": {}}
     text = []
     for variant in args.variants:

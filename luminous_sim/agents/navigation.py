@@ -14,6 +14,8 @@ State = tuple[Node, int]
 UNKNOWN_COST = 4
 """A move onto a node the map has no evidence of costs this much (known floor is preferred: a blocked move is a
 failed action, and ALFRED allows 10)."""
+MARGIN = 2
+"""Nodes beyond the known part of the map the search may plan through."""
 MAX_EXPANDED = 40_000
 """States one search expands at most (a 15 m house has under 15,000)."""
 
@@ -27,7 +29,14 @@ def plan_path(world_map: SemanticMap, start: State, goals: Iterable[State],
         return None
     if start in goal_set:
         return []
-    is_open = open_node or (lambda n: not world_map.blocked(n))
+    known = world_map.known_nodes() + [g[0] for g in goal_set] + [start[0]]
+    lo_x, hi_x = min(n[0] for n in known) - MARGIN, max(n[0] for n in known) + MARGIN
+    lo_y, hi_y = min(n[1] for n in known) - MARGIN, max(n[1] for n in known) + MARGIN
+
+    def is_open(n: Node) -> bool:  # within the known part of the map and its margin: a search that ends
+        if not (lo_x <= n[0] <= hi_x and lo_y <= n[1] <= hi_y):
+            return False
+        return open_node(n) if open_node is not None else not world_map.blocked(n)
     goal_nodes = {g[0] for g in goal_set}
     targets = sorted(goal_nodes)
 

@@ -22,7 +22,7 @@ OBSTACLE_BELOW = 1.7
 """Points between the floor and this height block the agent's body (a cylinder up to its camera)."""
 SEEN_WITHIN = 5.0
 """Depth (metres) beyond which the map does not trust a point."""
-BODY_RADIUS = 0.2
+BODY_RADIUS = 0.15
 """Obstacle evidence this close to a node's centre blocks it (the body's 0.2 m, and the env's margin)."""
 POINTS_KEPT = 600
 """Most points kept per instance (the latest frames' first)."""
