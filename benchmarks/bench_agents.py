@@ -344,10 +344,11 @@ def main() -> int:
         places += [("S", i, path) for i, _, path in _s_sample(args.s_data, args.per_type)]
     for split in args.splits:
         places += [(split, i, "") for i in _sample(split, args.per_type)]
-    jobs: list[Job] = []
-    for variant in args.variants:
-        for seed in args.seeds if variant == "parsed" else args.ablation_seeds:
-            jobs += [Job(split, i, variant, seed, trial, parser_file(seed)) for split, i, trial in places]
+    jobs: list[Job] = []  # seed by seed, so that a run stopped early has every variant of its first seeds
+    for seed in sorted(set(args.seeds) | set(args.ablation_seeds)):
+        for variant in args.variants:
+            if seed in (args.seeds if variant == "parsed" else args.ablation_seeds):
+                jobs += [Job(split, i, variant, seed, trial, parser_file(seed)) for split, i, trial in places]
     print(f"{len(jobs)} episodes: {len(places)} entries x variants x seeds; CPU {_cpu()}, "
           f"{os.cpu_count()} cores, load {os.getloadavg()[0]:.1f}", file=sys.stderr)
     start = time.perf_counter()

@@ -122,7 +122,7 @@ class ModularAgent:
         current = ep.plan[ep.index] if ep.index < len(ep.plan) else None
         return {"task": self.task, "subgoal": ep.index, "subgoals": len(ep.plan),
                 "action": current.action if current else "",
-                "target_seen": bool(current) and any(type_index(t) in ep.seen_types for t in current.types)}
+                "target_seen": current is not None and any(type_index(t) in ep.seen_types for t in current.types)}
 
     def act(self, observation: dict[str, Any], info: dict[str, Any]) -> dict[str, Any]:
         ep = self.ep

@@ -236,9 +236,9 @@ def freeze(split: str, workers: int = 1, log: Callable[[str], None] = print,
                 for i, s in zip(redo, again, strict=True):
                     streams[i] = s
             per_type[t] = _interleave([s.entries for s in streams])
-            rejected = sum((s.rejected for s in streams), Counter())
+            rejected: Counter[str] = sum((s.rejected for s in streams), Counter())
             rejected["layout"] += sum(1 for c in mine if c.cause == "layout")
-            causes = sum((s.oracle_causes for s in streams), Counter())
+            causes: Counter[str] = sum((s.oracle_causes for s in streams), Counter())
             stats[t] = {
                 "asked": counts[t], "built": len(per_type[t]), "layouts": len(mine),
                 "layouts_without_task": [c.layout.name for c in mine if c.distinct == 0],

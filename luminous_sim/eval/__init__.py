@@ -45,13 +45,11 @@ from luminous_sim.eval.workers import map_local, map_ordered
 
 __all__ = [
     "AGENT_INFO",
-    "PRIVILEGED_OPTIONS",
-    "TRACKS",
-    "agent_info",
-    "track_env",
     "BUILT_IN",
     "EVAL_ENV",
+    "PRIVILEGED_OPTIONS",
     "TABLE4_ROWS",
+    "TRACKS",
     "Agent",
     "AgentContext",
     "AgentCrashed",
@@ -65,6 +63,7 @@ __all__ = [
     "PolicyError",
     "ReplayAgent",
     "TrialRef",
+    "agent_info",
     "check_output",
     "check_policy",
     "crashed_build",
@@ -82,6 +81,7 @@ __all__ = [
     "plot",
     "resolve_factory",
     "run_job",
+    "track_env",
     "type_average",
     "write_reports",
 ]

@@ -139,15 +139,6 @@ def test_the_factory_refuses_an_env_without_its_observations():
     assert isinstance(modular(Context()), ModularAgent)
 
 
-def test_it_solves_an_entry_in_the_privileged_track():
-    env = _env(300)
-    try:
-        outcome = play(env, ModularAgent(300, 300), "S+", 2)
-    finally:
-        env.close()
-    assert outcome.success, outcome
-
-
 def test_its_actions_depend_on_its_observations_only(first):
     """Episode A's observations, replayed to a fresh agent while the env holds episode B, give A's actions."""
     env = _env()
@@ -172,3 +163,19 @@ def test_its_actions_depend_on_its_observations_only(first):
         assert [fresh.act(o, i) for o, i in seen] == actions
     finally:
         env.close()
+
+
+def test_luminous_eval_runs_it_in_its_own_process_in_the_privileged_track():
+    """`luminous eval --policy luminous_sim.agents:modular --track privileged` (the agent in the sandbox's child
+    process) plays an entry as the agent does in this process."""
+    from luminous_sim.eval import evaluate
+
+    (outcome,) = evaluate("luminous_sim.agents:modular", "S+", [2], track="privileged").outcomes
+    env = _env(300)
+    try:
+        here = play(env, ModularAgent(300, 300), "S+", 2)
+    finally:
+        env.close()
+    assert (outcome.success, outcome.steps, outcome.goal_conditions) == (here.success, here.steps,
+                                                                         here.goal_conditions)
+    assert outcome.success
