@@ -36,6 +36,8 @@ class BCAgent:
         have = {k: getattr(config, k) for k in wanted}
         if have != wanted:
             options = " ".join(f"--env {k}={v}" for k, v in wanted.items())
+            if wanted["targets"] == "objects":  # object slots are privileged
+                options = f"--track privileged {options}"
             raise LuminousError(f"the behaviour-cloning policy was trained in an env with {wanted}, this one has "
                                 f"{have}; evaluate it with {options}")
         self.model, self.meta, self.greedy = model, meta, greedy

@@ -107,7 +107,7 @@ def test_logits_follow_the_env_indices_and_skip_empty_slots():
 def test_the_clone_acts_through_luminous_eval(checkpoint, tmp_path, capsys, monkeypatch):
     monkeypatch.setenv(CHECKPOINT_VAR, str(checkpoint))
     code = main(["eval", "--policy", "luminous_sim.bc:bc_agent", "--split", "S+", "--episodes", "1",
-                 "--out", str(tmp_path / "eval"), *SMALL_ENV, "--env", "max_steps=30"])
+                 "--out", str(tmp_path / "eval"), "--track", "privileged", *SMALL_ENV, "--env", "max_steps=30"])
     err = capsys.readouterr().err
     assert code == 0, err
     (episode,) = json.loads((tmp_path / "eval" / "report.json").read_text())["episodes"]
@@ -131,7 +131,7 @@ def test_a_clone_in_the_wrong_env_says_which_options_to_pass(checkpoint, tmp_pat
     code = main(["eval", "--policy", "luminous_sim.bc:bc_agent", "--split", "S+", "--episodes", "1",
                  "--out", str(tmp_path / "eval")])
     err = capsys.readouterr().err
-    assert code == 2 and "--env width=64" in err and "--env targets=objects" in err
+    assert code == 2 and "--env width=64" in err and "--env targets=objects" in err and "--track privileged" in err
 
 
 def test_a_missing_checkpoint_is_a_clear_error(tmp_path):
