@@ -152,6 +152,16 @@ def _s_sample(data: Path, per_type: int) -> list[tuple[int, str, str]]:
     return sorted(x for v in chosen.values() for x in v)
 
 
+def build_s(alfred_split: Path, out: Path, workers: int) -> None:
+    """`luminous dataset build --from-alfred` of an ALFRED split into `out` (what is built already is kept)."""
+    from luminous_sim.cli.main import main as luminous
+
+    code = luminous(["dataset", "build", "--from-alfred", str(alfred_split), "--out", str(out), "--no-frames",
+                     "--no-video", "--no-progress", "--workers", str(workers)])
+    if code:
+        raise SystemExit(f"building S from {alfred_split} into {out} failed (exit {code})")
+
+
 def cause(row: dict[str, Any]) -> str:
     """The first cause that applies to a failed episode (`CAUSES`)."""
     o, d, truth = row["outcome"], row["diagnosis"], row["truth"]
@@ -316,6 +326,9 @@ def main() -> int:
     parser.add_argument("--splits", nargs="+", default=["S+", "U+"], choices=["S+", "U+"])
     parser.add_argument("--s-data", type=Path, default=None, metavar="DIR",
                         help="a `luminous dataset build --from-alfred .../valid_seen` folder: the S setting")
+    parser.add_argument("--s-from", type=Path, default=None, metavar="ALFRED_SPLIT",
+                        help="an ALFRED split folder (<task>/<trial>/traj_data.json) to build into --s-data where "
+                             "it is missing (the build resumes)")
     parser.add_argument("--per-type", type=int, default=2, help="the first N entries of each type (0: all)")
     parser.add_argument("--seeds", type=int, nargs="+", default=[0])
     parser.add_argument("--parsers", type=Path, default=None, metavar="DIR",
@@ -328,6 +341,10 @@ def main() -> int:
     parser.add_argument("--out", type=Path, required=True)
     args = parser.parse_args()
     (args.out / "rows").mkdir(parents=True, exist_ok=True)
+    if args.s_from is not None:
+        if args.s_data is None:
+            raise SystemExit("--s-from builds into --s-data: give both")
+        build_s(args.s_from, args.s_data, args.workers)
 
     def parser_file(seed: int) -> str:
         if seed == 0:

@@ -7,8 +7,9 @@
 
 In every track the agent's `info` carries only `failure_code` and `error` (at reset also `episode_seed` and
 `high_descs`), never `task_type`, `success`, `goal_conditions`, `subgoal` or the expert's action; the
-`objectId` action form is refused (the built-in oracle aside, which is the reference, not an agent); and the
-env options that add privileged observations are refused outside `privileged` (docs/evaluation.md).
+`objectId` action form is refused (the built-in oracle aside, which is the reference, not an agent); the env
+options that add privileged observations are refused outside `privileged`, and the `pose` observation and the
+expert's action in every track (docs/evaluation.md).
 """
 
 from __future__ import annotations
@@ -20,8 +21,11 @@ from luminous_sim.errors import LuminousError
 TRACKS: tuple[str, ...] = ("rgb", "privileged")
 TRACK_OBSERVATIONS: dict[str, tuple[str, ...]] = {"rgb": (), "privileged": ("depth", "segmentation", "instance_types")}
 """The observations each track switches on in the evaluation env."""
-PRIVILEGED_OPTIONS: tuple[str, ...] = ("depth", "segmentation", "instance_types", "goal_mask", "pose")
+PRIVILEGED_OPTIONS: tuple[str, ...] = ("depth", "segmentation", "instance_types", "goal_mask")
 """Env options (observation flags) that only the privileged track may switch on."""
+NO_TRACK_OPTIONS: tuple[str, ...] = ("pose", "expert_in_info")
+"""Env options no track allows: the pose from the simulator (an agent keeps its own, as ALFRED's agents do) and
+the expert's action."""
 AGENT_INFO: tuple[str, ...] = ("failure_code", "error")
 """What the agent reads of the env's `info` each step."""
 OBJECT_ID_KEYS = frozenset({"objectId", "receptacleObjectId"})
@@ -39,13 +43,14 @@ def track_env(track: str, env_kwargs: dict[str, Any] | None) -> dict[str, Any]:
 
     Raises:
         LuminousError: a privileged observation outside the privileged track, object-slot targets outside it,
-            or the expert's action in `info` (no track allows it).
+            or the pose or the expert's action (`NO_TRACK_OPTIONS`: no track allows them).
     """
     check_track(track)
     given = dict(env_kwargs or {})
-    if given.get("expert_in_info"):
-        raise LuminousError("env option expert_in_info=true: an evaluated agent never reads the expert's action; "
-                            "leave the option out")
+    for name in NO_TRACK_OPTIONS:
+        if given.get(name):
+            raise LuminousError(f"env option {name}=true: no track gives an agent the simulator's pose or the "
+                                "expert's action (an agent keeps its own pose); leave the option out")
     if track != "privileged":
         wrong = [k for k in PRIVILEGED_OPTIONS if given.get(k)]
         if given.get("targets") == "objects":

@@ -65,3 +65,17 @@ def test_a_job_plays_its_entry_through_the_evaluations_play(bench, tmp_path):
     assert row["acts"] == row["outcome"]["steps"] + (row["outcome"]["end"] == "stop")
     assert json.loads(bench._row_path(tmp_path, job).read_text()) == row  # resumable: written as it finished
     assert bench.play_job((job, str(tmp_path))) == row
+
+
+def test_s_is_built_from_an_alfred_split_where_missing_and_sampled_per_type(bench, tmp_path):
+    import shutil
+    from pathlib import Path
+
+    source = sorted(Path("../shared/alfred/valid_seen").glob("look_at_obj_in_light-*/*/traj_data.json"))[0]
+    split = tmp_path / "vs"
+    (split / source.parent.parent.name / source.parent.name).mkdir(parents=True)
+    shutil.copy(source, split / source.parent.parent.name / source.parent.name / "traj_data.json")
+    bench.build_s(split, tmp_path / "S", 1)
+    bench.build_s(split, tmp_path / "S", 1)  # resumes: nothing to do
+    ((index, name, trial),) = bench._s_sample(tmp_path / "S", 1)
+    assert (index, name) == (0, "vs") and Path(trial, "traj_data.json").is_file()

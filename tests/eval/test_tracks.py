@@ -83,17 +83,18 @@ def test_the_cli_tracks_are_the_evaluations():
 
 
 @pytest.mark.parametrize("option", [{"depth": True}, {"segmentation": True}, {"instance_types": True},
-                                    {"goal_mask": True}, {"pose": True}, {"targets": "objects"}])
+                                    {"goal_mask": True}, {"targets": "objects"}])
 def test_privileged_options_are_refused_outside_the_privileged_track(option):
     with pytest.raises(LuminousError, match="--track privileged"):
         track_env("rgb", option)
     assert track_env("privileged", option)["depth"] is True
 
 
-def test_the_experts_action_is_refused_in_every_track():
+def test_the_pose_and_the_experts_action_are_refused_in_every_track():
     for track in TRACKS:
-        with pytest.raises(LuminousError, match="expert_in_info"):
-            track_env(track, {"expert_in_info": True})
+        for name in ("pose", "expert_in_info"):
+            with pytest.raises(LuminousError, match=f"{name}=true"):
+                track_env(track, {name: True})
     with pytest.raises(LuminousError, match="track 'oracle'"):
         track_env("oracle", {})
 
