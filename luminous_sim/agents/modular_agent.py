@@ -78,7 +78,8 @@ class _Episode:
     failed because its door would hit the agent."""
     out_of_reach: set[int] = field(default_factory=set)
     searched: set[int] = field(default_factory=set)
-    looked_around: set[Node] = field(default_factory=set)
+    started: bool = False
+    """Whether it has looked around where it started."""
     held: int | None = None
     turn: str = "RotateRight"
     """Which way it looks around (drawn from the episode's seed: the search's randomness)."""
@@ -161,11 +162,11 @@ class ModularAgent:
                 target = ep.map.instances.get(body)
                 if target is not None:
                     ep.standoff[body] = _flat_distance(ep.pose.node, target.points) + STEP
-            if ep.searching and ep.tried.get(body) and len(ep.tried[body]) + 1 >= POSE_TRIES:
-                ep.searched.add(body)
             ep.tried.setdefault(body, set()).add(ep.pose.node)
             if len(ep.tried[body]) >= POSE_TRIES:
                 ep.out_of_reach.add(body)
+                if ep.searching:
+                    ep.searched.add(body)
             return
         if name == "OpenObject":
             ep.opened.add(body)
@@ -200,8 +201,8 @@ class ModularAgent:
         for _ in range(len(ep.plan) + 4):
             if ep.index >= len(ep.plan):
                 return STOP
-            if not ep.looked_around:  # look around where it starts
-                ep.looked_around.add(ep.pose.node)
+            if not ep.started:  # look around where it starts
+                ep.started = True
                 ep.queue = [ep.turn] * 4
             if ep.queue:
                 return self._nav(ep.queue.pop(0))
@@ -292,15 +293,14 @@ class ModularAgent:
         return out
 
     def _explore(self, sg: Subgoal, depth: np.ndarray, seg: np.ndarray) -> dict[str, Any]:
-        """A step of search for the subgoal's types: the nearest frontier, else the likeliest closed receptacle
-        (by the priors) opened to look inside, else Stop."""
+        """A step of search for the subgoal's types: the nearest frontier; else, for what can be put away, the
+        receptacles by the priors (`_search_receptacles`); else Stop."""
         ep = self.ep
         frontier = self._frontier()
         if frontier:
             path = plan_path(ep.map, (ep.pose.node, ep.pose.heading), [(n, h) for n in frontier for h in range(4)])
             if path:
                 ep.queue = path + [ep.turn] * 3  # and look around there
-                ep.looked_around.add(_end(ep.pose, path))
                 return self._nav(ep.queue.pop(0))
         if not any(abilities(t).pickupable for t in sg.types):
             return STOP  # what cannot be put away is found by exploring alone
@@ -311,16 +311,16 @@ class ModularAgent:
         at it, and open it if it is closed; Stop when every receptacle has been searched."""
         ep = self.ep
         here = np.array([ep.pose.x, ep.pose.y])
+
+        def score(i: Instance) -> tuple[float, float, int]:
+            chance = max(self.priors.chance(t, type_name(i.type_index)) for t in sg.types)
+            return (chance, -float(np.linalg.norm(i.centre[:2] - here)), -i.body)
+
         for _ in range(64):
             left = [i for i in ep.map.instances.values() if abilities(type_name(i.type_index)).receptacle
                     and i.body not in ep.searched and i.body not in ep.out_of_reach and i.body != ep.held]
             if not left:
                 return STOP
-
-            def score(i: Instance) -> tuple[float, float, int]:
-                chance = max(self.priors.chance(t, type_name(i.type_index)) for t in sg.types)
-                return (chance, -float(np.linalg.norm(i.centre[:2] - here)), -i.body)
-
             likely = max(left, key=score)
             closed = abilities(type_name(likely.type_index)).openable and likely.body not in ep.opened
             if closed:

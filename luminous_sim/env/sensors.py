@@ -163,14 +163,11 @@ class InstanceTypes(Sensor):
     def read(self, reading: Reading) -> np.ndarray:
         ids = reading.world.instance_ids()
         state = reading.state
-        lookup = {body: type_index(state.objects[oid].object_type)
-                  for body, oid in reading.world.body_to_object().items() if oid in state.objects}
-        out = np.zeros(ids.shape, np.int32)
-        for body in np.unique(ids):
-            kind = lookup.get(int(body), 0)
-            if kind:
-                out[ids == body] = kind
-        return out
+        lookup = np.zeros(int(ids.max(initial=-1)) + 2, np.int32)  # body id + 1 -> type index (-1: none)
+        for body, oid in reading.world.body_to_object().items():
+            if oid in state.objects and body + 1 < len(lookup):
+                lookup[body + 1] = type_index(state.objects[oid].object_type)
+        return lookup[ids + 1]
 
 
 class GoalMask(Sensor):

@@ -179,3 +179,12 @@ def test_luminous_eval_runs_it_in_its_own_process_in_the_privileged_track():
     assert (outcome.success, outcome.steps, outcome.goal_conditions) == (here.success, here.steps,
                                                                          here.goal_conditions)
     assert outcome.success
+
+
+@pytest.mark.slow
+def test_the_shipped_priors_are_what_the_script_counts():
+    """`scripts/learn_search_priors.py --episodes 60 --seed 1000000` remakes the shipped file (about 45 s)."""
+    from tests.conftest import load_script
+
+    for script in load_script("scripts/learn_search_priors.py"):
+        assert SearchPriors(script.count_parents(60, 1_000_000)).to_json() == PRIORS_FILE.read_text()

@@ -57,8 +57,10 @@ def privileged_spy(context):
     return Spy(True)
 
 class ById:
+    """Names its target by object id, the form no evaluated agent may use."""
+
     def reset(self, instruction, info):
-        pass
+        """Nothing to reset: it always asks for the same object."""
 
     def act(self, observation, info):
         return {"action": "PickupObject", "objectId": "Apple|+00.10|+00.90|+00.20"}
