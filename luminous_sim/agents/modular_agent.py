@@ -36,6 +36,12 @@ OPEN_STANDOFF = 0.5
 """Metres on the floor to stand from what opens (a door swings towards the agent), at first."""
 FRONTIER_AWAY = 3
 """Nodes a frontier must be from every node stood on (nearer floor is below the camera's view)."""
+NEAREST_SLACK = 0.3
+"""Metres beyond the nearest pose's eye distance a pose may be when the agent looks at a site (from close,
+the eye sees over a sink's rim and a shelf's lip)."""
+SEARCH_ROUNDS = 4096
+"""Receptacles and sites one search decision may pass over (each is marked searched or acted on: a bound, not
+a budget)."""
 STOP = {"action": "Stop"}
 
 
@@ -77,7 +83,14 @@ class _Episode:
     """Per instance, the least distance (metres, on the floor) to stand from it: raised each time opening it
     failed because its door would hit the agent."""
     out_of_reach: set[int] = field(default_factory=set)
+    closed_points: dict[int, np.ndarray] = field(default_factory=dict)
+    put_at: dict[int, OwnPose] = field(default_factory=dict)
+    """Per instance put down, the pose it was put from (where to look for it again: in the fridge it cooled in)."""
+    """Per instance opened, the points it was seen at before (restored when it is closed again)."""
     searched: set[int] = field(default_factory=set)
+    """Receptacles that open, looked into."""
+    searched_sites: set[tuple[int, tuple[int, int]]] = field(default_factory=set)
+    """(receptacle, site) looked at from close: a receptacle that does not open is searched site by site."""
     started: bool = False
     """Whether it has looked around where it started."""
     held: int | None = None
@@ -168,10 +181,15 @@ class ModularAgent:
                 if ep.searching:
                     ep.searched.add(body)
             return
+        seen = ep.map.instances.get(body)
         if name == "OpenObject":
             ep.opened.add(body)
+            if seen is not None:  # its points as it stands closed (the door will be seen where it swings)
+                ep.closed_points[body] = seen.points.copy()
         elif name == "CloseObject":
             ep.opened.discard(body)
+            if seen is not None and body in ep.closed_points:
+                seen.points = ep.closed_points.pop(body)
         if ep.searching:  # look inside at other horizons too
             ep.searched.add(body)
             ep.searching = False
@@ -189,6 +207,8 @@ class ModularAgent:
         if name == "PickupObject":
             ep.held = body
         elif name == "PutObject":
+            if ep.held is not None:
+                ep.put_at[ep.held] = ep.pose
             ep.held = None
         ep.index += 1
         ep.tried.clear()
@@ -213,7 +233,12 @@ class ModularAgent:
             target = self._choose(sg)
             ep.searching = False
             if target is None:
-                return self._explore(sg, depth, seg)
+                return self._back_to_put(sg) or self._explore(sg, depth, seg)
+            if sg.action == "OpenObject" and target.body in ep.opened:  # opened while searching
+                if sg.role:
+                    ep.roles[sg.role] = target.body
+                ep.index += 1
+                continue
             action = self._interact(sg.action, target, depth, seg)
             if action is not None:
                 return action
@@ -255,19 +280,22 @@ class ModularAgent:
         self.ep.target = target.body
         return {"action": name, "point": [int(cols[k]), int(rows[k])]}
 
-    def _approach(self, target: Instance) -> dict[str, Any] | None:
-        """The first move towards a pose from which the target is within reach (None: there is none left)."""
+    def _approach(self, target: Instance, looking: bool = False) -> dict[str, Any] | None:
+        """The first move towards a pose from which the target is within reach (None: there is none left, or it
+        is there). `looking`: the nearest such poses, and no reach bookkeeping (it looks, it does not act)."""
         ep = self.ep
-        goals = self._poses(target)
+        goals = self._poses(target, nearest=looking)
         path = plan_path(ep.map, (ep.pose.node, ep.pose.heading), goals)
         if path is None:
-            ep.out_of_reach.add(target.body)
+            if not looking:
+                ep.out_of_reach.add(target.body)
             return None
         node = ep.pose.node if not path else _end(ep.pose, path)
         if not path and ep.pose.horizon == _horizon(node, target):
-            ep.tried.setdefault(target.body, set()).add(node)  # here, facing it, and still not in reach
-            if len(ep.tried[target.body]) >= POSE_TRIES:
-                ep.out_of_reach.add(target.body)
+            if not looking:
+                ep.tried.setdefault(target.body, set()).add(node)  # here, facing it, and still not in reach
+                if len(ep.tried[target.body]) >= POSE_TRIES:
+                    ep.out_of_reach.add(target.body)
             return None
         looks = _horizon(node, target) - ep.pose.horizon
         ep.queue = path + ["LookDown" if looks > 0 else "LookUp"] * (abs(looks) // 15)
@@ -275,12 +303,29 @@ class ModularAgent:
             return None
         return self._nav(ep.queue.pop(0))
 
-    def _poses(self, target: Instance) -> list[State]:
-        """Nodes (with the heading towards the target) from which its nearest seen point is within reach."""
+    def _back_to_put(self, sg: Subgoal) -> dict[str, Any] | None:
+        """For a pick-up of the task's object, unseen since it was put down, the next move back to the pose it
+        was put from (None: there is none, or it is there and the object is still unseen)."""
+        ep = self.ep
+        body = ep.roles.get(sg.role) if sg.action == "PickupObject" and sg.role == "object" else None
+        then = ep.put_at.get(body) if body is not None else None
+        if then is None:
+            return None
+        path = plan_path(ep.map, (ep.pose.node, ep.pose.heading), [(then.node, then.heading)])
+        looks = then.horizon - ep.pose.horizon
+        if path is None or (not path and not looks):
+            ep.put_at.pop(body)
+            return None
+        ep.queue = path + ["LookDown" if looks > 0 else "LookUp"] * (abs(looks) // 15)
+        return self._nav(ep.queue.pop(0))
+
+    def _poses(self, target: Instance, nearest: bool = False) -> list[State]:
+        """Nodes (with the heading towards the target) from which its nearest seen point is within reach
+        (`nearest`: only those within `NEAREST_SLACK` of the nearest)."""
         ep = self.ep
         c = target.centre
         cx, cy = round(c[0] / STEP), round(c[1] / STEP)
-        out: list[State] = []
+        found: list[tuple[float, State]] = []
         tried = ep.tried.get(target.body, set())
         standoff = ep.standoff.get(target.body, OPEN_STANDOFF if _opens(target) else 0.0)
         for dx in range(-6, 7):
@@ -288,9 +333,13 @@ class ModularAgent:
                 node = (cx + dx, cy + dy)
                 if node in tried or ep.map.blocked(node) or _flat_distance(node, target.points) < standoff:
                     continue
-                if 0.3 < ep.map.eye_distance(node, target.points) < REACH - 0.05:
-                    out.append((node, _facing(node, c)))
-        return out
+                eye = ep.map.eye_distance(node, target.points)
+                if 0.3 < eye < REACH - 0.05:
+                    found.append((eye, (node, _facing(node, c))))
+        if nearest and found:
+            least = min(e for e, _ in found)
+            found = [f for f in found if f[0] <= least + NEAREST_SLACK]
+        return [state for _, state in found]
 
     def _explore(self, sg: Subgoal, depth: np.ndarray, seg: np.ndarray) -> dict[str, Any]:
         """A step of search for the subgoal's types: the nearest frontier; else, for what can be put away, the
@@ -307,22 +356,42 @@ class ModularAgent:
         return self._search_receptacles(sg, depth, seg)
 
     def _search_receptacles(self, sg: Subgoal, depth: np.ndarray, seg: np.ndarray) -> dict[str, Any]:
-        """Go to the receptacle likeliest to hold one of the subgoal's types (the priors, then nearness), look
-        at it, and open it if it is closed; Stop when every receptacle has been searched."""
+        """Go to the receptacle likeliest to hold one of the subgoal's types (the priors, then nearness): open
+        and look into one that opens; look at one that does not from close, site by site (`semantic_map.SITE`),
+        and a step lower. Stop when every receptacle has been searched."""
         ep = self.ep
         here = np.array([ep.pose.x, ep.pose.y])
 
-        def score(i: Instance) -> tuple[float, float, int]:
+        def score(item: tuple[Instance, tuple[int, int] | None]) -> tuple[float, float, int]:
+            i, site = item
             chance = max(self.priors.chance(t, type_name(i.type_index)) for t in sg.types)
-            return (chance, -float(np.linalg.norm(i.centre[:2] - here)), -i.body)
+            where = i.centre if site is None else i.site_point(site)
+            return (chance, -float(np.linalg.norm(where[:2] - here)), -i.body)
 
-        for _ in range(64):
-            left = [i for i in ep.map.instances.values() if abilities(type_name(i.type_index)).receptacle
-                    and i.body not in ep.searched and i.body not in ep.out_of_reach and i.body != ep.held]
+        for _ in range(SEARCH_ROUNDS):
+            left: list[tuple[Instance, tuple[int, int] | None]] = []
+            for i in ep.map.instances.values():
+                kind = abilities(type_name(i.type_index))
+                if not kind.receptacle or i.body in ep.out_of_reach or i.body == ep.held:
+                    continue
+                if kind.openable:
+                    left += [] if i.body in ep.searched else [(i, None)]
+                else:
+                    left += [(i, site) for site in sorted(i.sites) if (i.body, site) not in ep.searched_sites]
             if not left:
                 return STOP
-            likely = max(left, key=score)
-            closed = abilities(type_name(likely.type_index)).openable and likely.body not in ep.opened
+            likely, site = max(left, key=score)
+            if site is not None:
+                spot = Instance(likely.body, likely.type_index, likely.site_point(site)[None])
+                step = self._approach(spot, looking=True)
+                if step is not None:
+                    return step
+                ep.searched_sites.add((likely.body, site))
+                if ep.pose.horizon + 15 <= HORIZON_RANGE[1] and self._poses(spot, nearest=True):
+                    ep.queue = ["LookUp"]  # after one look a step lower
+                    return self._nav("LookDown")
+                continue
+            closed = likely.body not in ep.opened
             if closed:
                 action = self._interact("OpenObject", likely, depth, seg)
                 if action is not None:

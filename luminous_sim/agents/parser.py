@@ -23,10 +23,11 @@ import torch
 from torch import nn
 
 from luminous_sim.agents.annotations import SLOTS, Annotated, allowed, held_apart, read_annotations
+from luminous_sim.agents.mentions import Mention, mentions
 from luminous_sim.agents.parser_model import PAD, SEP, UNK, ParserNet, ParserShape
 from luminous_sim.errors import LuminousError
 from luminous_sim.language.speaker import tokenize
-from luminous_sim.vocab import ALFRED_TASK_TYPES
+from luminous_sim.vocab import ALFRED_TASK_TYPES, LAMPS, abilities
 
 FORMAT = "luminous-instruction-parser/1"
 PARSER_FILE = Path(__file__).with_name("data") / "instruction_parser.pt"
@@ -36,6 +37,12 @@ MAX_WORDS = 160
 """Words read of one input (a directive is under 40; the longest step instructions add about 120)."""
 MIN_COUNT = 2
 """A word seen fewer times in training is read as unknown."""
+POINTER_SLOTS: tuple[str, ...] = SLOTS[:4]
+"""The slots the pointer may fill from a name in the input (all but `object_sliced`)."""
+MAX_MENTIONS = 32
+"""Names of one input the pointer reads (the directive's come first)."""
+EPSILON = 1e-3
+"""A type's floor when a name's probability is shared among the types it may mean ("sink": Sink, SinkBasin)."""
 
 
 class ParserError(LuminousError):
@@ -63,37 +70,20 @@ class TrainSettings:
     lr: float = 2e-3
     held_apart: float = 0.1
     """The share of ALFRED's train task designs held apart to report (and choose the epochs on)."""
+    pointer: bool = True
+    """Learn the pointer head (copy a named type into a slot)."""
+    recurrent: bool = True
+    """A bidirectional GRU after the convolutions."""
 
 
-COPY_BONUS = 2.0
-"""Log-probability added to a slot's value when the directive names it ("the bowl" for `Bowl`): a copy
-mechanism, so that a receptacle ALFRED's train split rarely uses as a parent can still be read where it is named.
-Chosen on the held-apart part of ALFRED's train split (docs/benchmarks.md, "The instruction parser")."""
-_NAMES: list[tuple[str, list[str]]] | None = None
-
-
-def named_types(directive: str) -> frozenset[str]:
-    """The object types a directive names, by their spoken names and plurals ("dish sponge", "knives", "counter"),
-    the longest name first, so that "butter knife" is not also a knife."""
-    global _NAMES
-    if _NAMES is None:
-        from luminous_sim.language.names import plural, spoken
-        from luminous_sim.vocab import OBJECTS
-
-        pairs = {(spoken(t).lower(), t) for t in OBJECTS} | {(plural(t).lower(), t) for t in OBJECTS}
-        pairs |= {(t.lower(), t) for t in OBJECTS}  # ALFRED's own form: "countertop", "sinkbasin"
-        by_name: dict[str, list[str]] = {}
-        for name, object_type in sorted(pairs):
-            by_name.setdefault(name, []).append(object_type)  # "sink": Sink and SinkBasin
-        _NAMES = sorted(by_name.items(), key=lambda p: (-len(p[0]), p[0]))
-    text = f" {' '.join(tokenize(directive))} "
-    found: set[str] = set()
-    for name, types in _NAMES:
-        needle = f" {name} "
-        if needle in text:
-            found.update(types)
-            text = text.replace(needle, "  ")
-    return frozenset(found)
+def slot_may_hold(slot: str, object_type: str) -> bool:
+    """Whether a named type the classifier never learnt for `slot` may still fill it: a receptacle as the
+    parent, something pickupable as the object, a movable receptacle, a lamp."""
+    if slot == "toggle_target":
+        return object_type in LAMPS
+    a = abilities(object_type)
+    return {"object_target": a.pickupable, "parent_target": a.receptacle,
+            "mrecep_target": a.movable_receptacle}.get(slot, False)
 
 
 def words(directive: str, steps: Sequence[str] = ()) -> list[str]:
@@ -102,6 +92,17 @@ def words(directive: str, steps: Sequence[str] = ()) -> list[str]:
     if steps:
         out += [SEP, *(w for s in steps for w in tokenize(s))]
     return out[:MAX_WORDS]
+
+
+@dataclass(frozen=True)
+class Encoded:
+    """A batch as the network reads it: word ids, each name's words (to average), which names are real, and
+    the names."""
+
+    ids: torch.Tensor
+    spans: torch.Tensor
+    present: torch.Tensor
+    found: list[list[Mention]]
 
 
 @dataclass
@@ -115,18 +116,23 @@ class InstructionParser:
     """How it was trained: settings, examples, the held-apart accuracy per epoch."""
 
     def __post_init__(self) -> None:
-        self.copy_bonus = COPY_BONUS
         self._index = {w: i for i, w in enumerate(self.vocab)}
         self.net.eval()
 
-    def encode(self, batch: Sequence[list[str]]) -> torch.Tensor:
-        """Word ids, padded to the longest input (0 is padding)."""
+    def encode(self, batch: Sequence[list[str]]) -> Encoded:
+        """Word ids, padded to the longest input (0 is padding), and the names each input contains."""
         width = max(1, *(len(w) for w in batch))
         ids = np.zeros((len(batch), width), np.int64)
         unk = self._index[UNK]
+        found = [mentions(ws)[:MAX_MENTIONS] for ws in batch]
+        spans = np.zeros((len(batch), max(1, *(len(f) for f in found)), width), np.float32)
+        present = np.zeros(spans.shape[:2], bool)
         for r, ws in enumerate(batch):
             ids[r, :len(ws)] = [self._index.get(w, unk) for w in ws]
-        return torch.from_numpy(ids)
+            for j, m in enumerate(found[r]):
+                spans[r, j, m.start:m.end] = 1.0 / (m.end - m.start)
+                present[r, j] = True
+        return Encoded(torch.from_numpy(ids), torch.from_numpy(spans), torch.from_numpy(present), found)
 
     def parse(self, directive: str, steps: Sequence[str] = ()) -> ParsedTask:
         """The task one instruction asks for."""
@@ -139,20 +145,42 @@ class InstructionParser:
         with torch.no_grad():
             for start in range(0, len(items), batch_size):
                 part = items[start:start + batch_size]
-                chunk = [words(d, s) for d, s in part]
-                logits = [torch.log_softmax(lg, -1).numpy() for lg in self.net(self.encode(chunk))]
-                out += [self._decode([lg[r] for lg in logits], named_types(part[r][0])) for r in range(len(chunk))]
+                enc = self.encode([words(d, s) for d, s in part])
+                logits, pointer = self.net(enc.ids, enc.spans, enc.present)
+                probs = [torch.softmax(lg, -1).numpy() for lg in logits]
+                point = None if pointer is None else torch.softmax(pointer, 1).numpy()
+                out += [self._decode([p[r] for p in probs], None if point is None else point[r], enc.found[r])
+                        for r in range(len(part))]
         return out
 
-    def _decode(self, scores: list[np.ndarray], named: frozenset[str] = frozenset()) -> ParsedTask:
-        """The best task type with, for each slot, its best value the type allows (a value the directive
-        names scores `copy_bonus` more)."""
+    def slot_scores(self, probs: list[np.ndarray], point: np.ndarray | None, found: Sequence[Mention]
+                    ) -> dict[str, dict[Any, float]]:
+        """Each slot's values and their log-probabilities: the classifier's, mixed, where the pointer is
+        learnt, with the pointer's choice of a name (its share of a name that may mean several types goes by
+        the classifier)."""
+        out: dict[str, dict[Any, float]] = {}
+        for k, slot in enumerate(SLOTS, start=1):
+            dist = {v: float(probs[k][i]) for i, v in enumerate(self.answers[slot])}
+            if point is not None and slot in POINTER_SLOTS:
+                j = POINTER_SLOTS.index(slot)
+                mixed = {v: float(point[0, j]) * q for v, q in dist.items()}
+                for i, m in enumerate(found[:point.shape[0] - 1]):
+                    types = [t for t in sorted(m.types) if t in dist or slot_may_hold(slot, t)]
+                    weights = [dist.get(t, 0.0) + EPSILON for t in types]
+                    for t, w in zip(types, weights, strict=True):
+                        mixed[t] = mixed.get(t, 0.0) + float(point[1 + i, j]) * w / sum(weights)
+                dist = mixed
+            out[slot] = {v: float(np.log(max(q, 1e-12))) for v, q in dist.items()}
+        return out
+
+    def _decode(self, probs: list[np.ndarray], point: np.ndarray | None, found: Sequence[Mention]) -> ParsedTask:
+        """The best task type with, for each slot, its best value the type allows."""
+        slots = self.slot_scores(probs, point, found)
         best: tuple[float, str, dict[str, Any]] | None = None
         for t, task_type in enumerate(self.answers["task_type"]):
-            total, picks = float(scores[0][t]), {}
-            for k, slot in enumerate(SLOTS, start=1):
-                options = [(float(scores[k][i]) + (self.copy_bonus if v in named else 0.0), v)
-                           for i, v in enumerate(self.answers[slot]) if allowed(task_type, slot, v)]
+            total, picks = float(np.log(max(float(probs[0][t]), 1e-12))), {}
+            for slot in SLOTS:
+                options = [(score, v) for v, score in slots[slot].items() if allowed(task_type, slot, v)]
                 if not options:
                     break
                 score, value = max(options, key=lambda o: o[0])
@@ -199,8 +227,9 @@ class InstructionParser:
             raise ParserError(f"{path}: not an instruction parser checkpoint (expected format {FORMAT})")
         try:
             shape = data["shape"]
-            net = ParserNet(ParserShape(shape["words"], tuple(shape["answers"]), shape["embedding"],
-                                        shape["hidden"], shape["dropout"]))
+            net = ParserNet(ParserShape(shape["words"], tuple(shape["answers"]), shape.get("pointers", 0),
+                                        shape.get("recurrent", False), shape["embedding"], shape["hidden"],
+                                        shape["dropout"]))
             net.load_state_dict(data["model"])
             answers = {h: list(data["answers"][h]) for h in HEADS}
             return cls(list(data["vocab"]), answers, net, dict(data["record"]))
@@ -283,7 +312,8 @@ def train_parser(alfred: Path, settings: TrainSettings | None = None, progress: 
 def _fit(kept: list[Annotated], apart: list[Annotated], settings: TrainSettings, progress: bool,
          source: str) -> InstructionParser:
     vocab, answers = _vocab(kept), _labels(kept)
-    net = ParserNet(ParserShape(len(vocab), tuple(len(answers[h]) for h in HEADS)))
+    net = ParserNet(ParserShape(len(vocab), tuple(len(answers[h]) for h in HEADS),
+                                len(POINTER_SLOTS) if settings.pointer else 0, settings.recurrent))
     parser = InstructionParser(vocab, answers, net)
     pairs = list(_inputs(kept))
     ids = [{v: i for i, v in enumerate(answers[h])} for h in HEADS]
@@ -297,9 +327,12 @@ def _fit(kept: list[Annotated], apart: list[Annotated], settings: TrainSettings,
         net.train()
         total = 0.0
         for batch in _batches(pairs, settings.batch_size, order):
-            x = parser.encode([pairs[int(i)][0] for i in batch])
-            logits = net(x)
+            chosen = [pairs[int(i)] for i in batch]
+            enc = parser.encode([ws for ws, _ in chosen])
+            logits, pointer = net(enc.ids, enc.spans, enc.present)
             loss = sum(loss_fn(lg, targets[batch, k]) for k, lg in enumerate(logits))
+            if pointer is not None:
+                loss = loss + _pointer_loss(pointer, enc.found, [e for _, e in chosen])
             optimiser.zero_grad()
             loss.backward()  # type: ignore[union-attr]
             optimiser.step()
@@ -314,6 +347,19 @@ def _fit(kept: list[Annotated], apart: list[Annotated], settings: TrainSettings,
     parser.record = {"source": Path(source).name, "settings": settings.__dict__, "annotations": len(kept),
                      "held_apart_annotations": len(apart), "epochs": history}
     return parser
+
+
+def _pointer_loss(pointer: torch.Tensor, found: Sequence[Sequence[Mention]], labels: Sequence[Annotated]
+                  ) -> torch.Tensor:
+    """The pointer's negative log-likelihood: of every name that may mean the slot's answer, or of "none of
+    them" where the answer is "" or unnamed."""
+    target = torch.zeros(pointer.shape, dtype=torch.bool)
+    for r, (names, e) in enumerate(zip(found, labels, strict=True)):
+        for j, slot in enumerate(POINTER_SLOTS):
+            hits = [1 + i for i, m in enumerate(names) if e.params[slot] and e.params[slot] in m.types]
+            target[r, hits or [0], j] = True
+    chosen = torch.logsumexp(pointer.masked_fill(~target, -1e4), dim=1)
+    return (torch.logsumexp(pointer, dim=1) - chosen).sum(-1).mean()
 
 
 def _batches(pairs: Sequence[tuple[list[str], Annotated]], size: int, order: torch.Generator) -> list[torch.Tensor]:

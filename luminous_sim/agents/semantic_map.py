@@ -28,6 +28,9 @@ POINTS_KEPT = 600
 """Most points kept per instance (the latest frames' first)."""
 STRIDE = 2
 """Every STRIDE-th pixel each way is mapped."""
+SITE = 1.0
+"""Metres a side of the floor squares an instance is seen in (its sites: a long counter is searched site by
+site)."""
 
 
 @dataclass
@@ -38,6 +41,14 @@ class Instance:
     type_index: int
     points: np.ndarray = field(default_factory=lambda: np.zeros((0, 3)))
     last_seen: int = 0
+    sites: dict[tuple[int, int], tuple[np.ndarray, int]] = field(default_factory=dict)
+    """Per `SITE` square it was seen in: the sum of its points seen there, and their number (every frame's,
+    where `points` keeps only the latest)."""
+
+    def site_point(self, site: tuple[int, int]) -> np.ndarray:
+        """The mean of the points seen in one site."""
+        total, count = self.sites[site]
+        return total / count
 
     @property
     def centre(self) -> np.ndarray:
@@ -95,6 +106,7 @@ class SemanticMap:
                 found = self.instances[int(body)] = Instance(int(body), int(kinds[mine][0]))
             found.points = np.concatenate([pts[mine], found.points])[:POINTS_KEPT]
             found.last_seen = self.frame
+            _add_sites(found, pts[mine])
 
     def forget_instance(self, body: int) -> None:
         """An instance that moved (it is in the agent's hand, or was sliced): where it was is no longer known."""
@@ -148,6 +160,16 @@ class SemanticMap:
         """The least distance from the eye standing at `node` to `points`."""
         eye = np.array([node[0] * STEP, node[1] * STEP, CAMERA_HEIGHT])
         return float(np.min(np.linalg.norm(points - eye, axis=1))) if len(points) else float("inf")
+
+
+def _add_sites(instance: Instance, points: np.ndarray) -> None:
+    squares, which = np.unique(np.floor(points[:, :2] / SITE).astype(np.int64), axis=0, return_inverse=True)
+    sums = np.zeros((len(squares), 3))
+    np.add.at(sums, which.ravel(), points)
+    counts = np.bincount(which.ravel(), minlength=len(squares))
+    for (i, j), total, n in zip(squares.tolist(), sums, counts.tolist(), strict=True):
+        old = instance.sites.get((i, j))
+        instance.sites[(i, j)] = (total, n) if old is None else (old[0] + total, old[1] + n)
 
 
 def _box_sums(grid: np.ndarray, centres: np.ndarray, radius: int) -> np.ndarray:

@@ -131,3 +131,38 @@ def test_luminous_agents_parse_prints_one_json_line_per_directive(tmp_path):
     bad = subprocess.run([sys.executable, "-m", "luminous_sim.cli.main", "agents", "parse", str(tmp_path / "no")],
                          capture_output=True, text=True, cwd=REPO, timeout=300)
     assert bad.returncode != 0 and "no" in bad.stderr and "Traceback" not in bad.stderr
+
+
+def test_names_are_found_longest_first_with_every_type_they_may_mean():
+    from luminous_sim.agents.mentions import mentions
+    from luminous_sim.language.speaker import tokenize
+
+    found = mentions(tokenize("Put the butter knife and two knives by the sink, on the table."))
+    assert [(m.start, m.end, sorted(m.types)) for m in found] == [
+        (2, 4, ["ButterKnife"]), (6, 7, ["Knife"]), (9, 10, ["Sink", "SinkBasin"]),
+        (13, 14, ["CoffeeTable", "DiningTable", "SideTable"])]
+
+
+def test_the_pointer_fills_a_slot_with_a_named_type_the_classifier_never_learnt():
+    """ALFRED's train split never has a bowl as a parent; pointed at, "the bowl" still fills the slot, and the
+    pointer's "none of them" leaves the classifier's answer."""
+    import numpy as np
+
+    from luminous_sim.agents.mentions import mentions
+    from luminous_sim.agents.parser import POINTER_SLOTS
+    from luminous_sim.language.speaker import tokenize
+
+    parser = default_parser()
+    assert parser.net.shape.pointers == len(POINTER_SLOTS) and "Bowl" not in parser.answers["parent_target"]
+    found = mentions(tokenize("heat a tomato and put it in the bowl"))
+    assert [sorted(m.types) for m in found] == [["Tomato"], ["Bowl"]]
+    probs = [np.full(len(parser.answers[h]), 1.0 / len(parser.answers[h])) for h in ("task_type", *SLOTS)]
+    parent = POINTER_SLOTS.index("parent_target")
+    to_bowl = np.zeros((1 + len(found), len(POINTER_SLOTS)))
+    to_bowl[0, :], to_bowl[0, parent], to_bowl[2, parent] = 1.0, 0.1, 0.9
+    scores = parser.slot_scores(probs, to_bowl, found)["parent_target"]
+    assert max(scores, key=lambda v: scores[v]) == "Bowl"
+    nowhere = np.zeros_like(to_bowl)
+    nowhere[0, :] = 1.0
+    unpointed = parser.slot_scores(probs, nowhere, found)["parent_target"]
+    assert unpointed.get("Bowl", -np.inf) < -20 < unpointed["CounterTop"]
