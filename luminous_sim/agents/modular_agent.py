@@ -308,9 +308,9 @@ class ModularAgent:
         was put from (None: there is none, or it is there and the object is still unseen)."""
         ep = self.ep
         body = ep.roles.get(sg.role) if sg.action == "PickupObject" and sg.role == "object" else None
-        then = ep.put_at.get(body) if body is not None else None
-        if then is None:
+        if body is None or body not in ep.put_at:
             return None
+        then = ep.put_at[body]
         path = plan_path(ep.map, (ep.pose.node, ep.pose.heading), [(then.node, then.heading)])
         looks = then.horizon - ep.pose.horizon
         if path is None or (not path and not looks):
