@@ -84,9 +84,9 @@ class _Episode:
     failed because its door would hit the agent."""
     out_of_reach: set[int] = field(default_factory=set)
     closed_points: dict[int, np.ndarray] = field(default_factory=dict)
+    """Per instance opened, the points it was seen at before (restored when it is closed again)."""
     put_at: dict[int, OwnPose] = field(default_factory=dict)
     """Per instance put down, the pose it was put from (where to look for it again: in the fridge it cooled in)."""
-    """Per instance opened, the points it was seen at before (restored when it is closed again)."""
     searched: set[int] = field(default_factory=set)
     """Receptacles that open, looked into."""
     searched_sites: set[tuple[int, tuple[int, int]]] = field(default_factory=set)
@@ -297,11 +297,7 @@ class ModularAgent:
                 if len(ep.tried[target.body]) >= POSE_TRIES:
                     ep.out_of_reach.add(target.body)
             return None
-        looks = _horizon(node, target) - ep.pose.horizon
-        ep.queue = path + ["LookDown" if looks > 0 else "LookUp"] * (abs(looks) // 15)
-        if not ep.queue:
-            return None
-        return self._nav(ep.queue.pop(0))
+        return self._walk(path, _horizon(node, target))
 
     def _back_to_put(self, sg: Subgoal) -> dict[str, Any] | None:
         """For a pick-up of the task's object, unseen since it was put down, the next move back to the pose it
@@ -316,8 +312,13 @@ class ModularAgent:
         if path is None or (not path and not looks):
             ep.put_at.pop(body)
             return None
-        ep.queue = path + ["LookDown" if looks > 0 else "LookUp"] * (abs(looks) // 15)
-        return self._nav(ep.queue.pop(0))
+        return self._walk(path, then.horizon)
+
+    def _walk(self, path: list[str], horizon: int) -> dict[str, Any] | None:
+        """The first of `path` then the tilts to `horizon` (None: nothing to do)."""
+        looks = horizon - self.ep.pose.horizon
+        self.ep.queue = path + ["LookDown" if looks > 0 else "LookUp"] * (abs(looks) // 15)
+        return self._nav(self.ep.queue.pop(0)) if self.ep.queue else None
 
     def _poses(self, target: Instance, nearest: bool = False) -> list[State]:
         """Nodes (with the heading towards the target) from which its nearest seen point is within reach
