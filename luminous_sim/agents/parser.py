@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import io
 import os
+import random
 import tempfile
 from collections import Counter
 from collections.abc import Iterator, Sequence
@@ -25,6 +26,7 @@ from torch import nn
 from luminous_sim.agents.annotations import SLOTS, Annotated, allowed, held_apart, read_annotations
 from luminous_sim.agents.mentions import Mention, mentions
 from luminous_sim.agents.parser_model import PAD, SEP, UNK, ParserNet, ParserShape
+from luminous_sim.agents.swaps import receptacles, swap_parent
 from luminous_sim.errors import LuminousError
 from luminous_sim.language.speaker import tokenize
 from luminous_sim.vocab import ALFRED_TASK_TYPES, LAMPS, abilities
@@ -74,6 +76,9 @@ class TrainSettings:
     """Learn the pointer head (copy a named type into a slot)."""
     recurrent: bool = True
     """A bidirectional GRU after the convolutions."""
+    swap: float = 0.5
+    """The share of inputs, drawn afresh each epoch, whose parent's name is swapped for another receptacle's
+    (`swaps.swap_parent`; 0: ALFRED's sentences only)."""
 
 
 def slot_may_hold(slot: str, object_type: str) -> bool:
@@ -249,11 +254,13 @@ def default_parser() -> InstructionParser:
     return _DEFAULT
 
 
-def _labels(examples: Sequence[Annotated]) -> dict[str, list[Any]]:
-    """Each head's answers: ALFRED's task types in their order; each slot's values seen, sorted ("" first)."""
+def _labels(examples: Sequence[Annotated], parents: Sequence[str] = ()) -> dict[str, list[Any]]:
+    """Each head's answers: ALFRED's task types in their order; each slot's values seen (and, as the parent,
+    `parents`), sorted ("" first)."""
     answers: dict[str, list[Any]] = {"task_type": list(ALFRED_TASK_TYPES)}
     for slot in SLOTS:
-        answers[slot] = sorted({e.params[slot] for e in examples}, key=lambda v: (str(type(v)), v))
+        seen = {e.params[slot] for e in examples} | (set(parents) if slot == "parent_target" else set())
+        answers[slot] = sorted(seen, key=lambda v: (str(type(v)), v))
     return answers
 
 
@@ -311,26 +318,27 @@ def train_parser(alfred: Path, settings: TrainSettings | None = None, progress: 
 
 def _fit(kept: list[Annotated], apart: list[Annotated], settings: TrainSettings, progress: bool,
          source: str) -> InstructionParser:
-    vocab, answers = _vocab(kept), _labels(kept)
+    vocab, answers = _vocab(kept), _labels(kept, receptacles() if settings.swap else ())
     net = ParserNet(ParserShape(len(vocab), tuple(len(answers[h]) for h in HEADS),
                                 len(POINTER_SLOTS) if settings.pointer else 0, settings.recurrent))
     parser = InstructionParser(vocab, answers, net)
     pairs = list(_inputs(kept))
     ids = [{v: i for i, v in enumerate(answers[h])} for h in HEADS]
-    targets = torch.tensor([[ids[k][e.task_type if h == "task_type" else e.params[h]] for k, h in enumerate(HEADS)]
-                            for _, e in pairs], dtype=torch.long)
     optimiser = torch.optim.Adam(net.parameters(), lr=settings.lr)
     loss_fn = nn.CrossEntropyLoss()
     order = torch.Generator().manual_seed(settings.seed)
+    swaps = random.Random(settings.seed)
     history = []
     for epoch in range(settings.epochs):
         net.train()
         total = 0.0
         for batch in _batches(pairs, settings.batch_size, order):
-            chosen = [pairs[int(i)] for i in batch]
+            chosen = [_swapped(pairs[int(i)], settings.swap, swaps) for i in batch]
             enc = parser.encode([ws for ws, _ in chosen])
+            targets = torch.tensor([[ids[k][e.task_type if h == "task_type" else e.params[h]]
+                                     for k, h in enumerate(HEADS)] for _, e in chosen], dtype=torch.long)
             logits, pointer = net(enc.ids, enc.spans, enc.present)
-            loss = sum(loss_fn(lg, targets[batch, k]) for k, lg in enumerate(logits))
+            loss = sum(loss_fn(lg, targets[:, k]) for k, lg in enumerate(logits))
             if pointer is not None:
                 loss = loss + _pointer_loss(pointer, enc.found, [e for _, e in chosen])
             optimiser.zero_grad()
@@ -347,6 +355,15 @@ def _fit(kept: list[Annotated], apart: list[Annotated], settings: TrainSettings,
     parser.record = {"source": Path(source).name, "settings": settings.__dict__, "annotations": len(kept),
                      "held_apart_annotations": len(apart), "epochs": history}
     return parser
+
+
+def _swapped(pair: tuple[list[str], Annotated], share: float, rng: random.Random) -> tuple[list[str], Annotated]:
+    """The input as it is, or (a `share` of the time, where its parent is named) with the parent swapped."""
+    if share and rng.random() < share:
+        swapped = swap_parent(*pair, rng)
+        if swapped is not None:
+            return swapped[0][:MAX_WORDS], swapped[1]
+    return pair
 
 
 def _pointer_loss(pointer: torch.Tensor, found: Sequence[Sequence[Mention]], labels: Sequence[Annotated]
