@@ -1,6 +1,7 @@
 """Learn the modular agent's search priors (`luminous_sim/agents/data/search_priors.json`): for each object type,
 how many of its instances each receptacle type holds, counted in the initial states of ALFRED episodes the env
-generates on the fly (seeds from `--seed` on), which belong to no split.
+generates on the fly (seeds from `--seed` on), which belong to no split: they are laid out in CSSG's own room
+shapes, and every split (S, U, S+, U+) is in one of ALFRED's floor plans, which the count refuses.
 
     python scripts/learn_search_priors.py --episodes 60 --seed 1000000 --out luminous_sim/agents/data/search_priors.json
 """
@@ -14,6 +15,13 @@ from pathlib import Path
 from luminous_sim.agents.priors import SearchPriors
 from luminous_sim.assets.objio import write_atomic
 from luminous_sim.env import LuminousEnv
+from luminous_sim.scene import Scene
+
+
+def check_outside_splits(scene: Scene) -> None:
+    """Raise ValueError where `scene` is laid out in one of ALFRED's floor plans, the rooms of every split."""
+    if scene.room.name.startswith("FloorPlan"):
+        raise ValueError(f"a priors episode is in {scene.room.name}, an ALFRED floor plan that splits use")
 
 
 def count_parents(episodes: int, seed: int) -> dict[str, dict[str, int]]:
@@ -22,7 +30,8 @@ def count_parents(episodes: int, seed: int) -> dict[str, dict[str, int]]:
     env = LuminousEnv(width=32, height=32, verify_expert=False)
     for k in range(episodes):
         env.reset(seed=seed + k)
-        assert env.world is not None
+        assert env.world is not None and env.episode is not None
+        check_outside_splits(env.episode.scene)
         state = env.world.view().state
         for obj in state.objects.values():
             if obj.parent in state.objects:

@@ -266,19 +266,17 @@ class ModularAgent:
         return min(found, key=lambda i: (float(np.linalg.norm(i.centre[:2] - here)), i.body))
 
     def _interact(self, name: str, target: Instance, depth: np.ndarray, seg: np.ndarray) -> dict[str, Any] | None:
-        """The interaction on the target's pixels if it is in view and within reach now."""
-        rows, cols = np.nonzero(seg == target.body)
+        """The interaction with the target's mask (ALFRED's form) if it is in view and some of it within reach."""
+        mask = seg == target.body
+        rows, cols = np.nonzero(mask)
         if len(rows) == 0 or self.ep.pose.node in self.ep.tried.get(target.body, set()):
             return None
         right, up = self.intrinsics.rays(rows, cols)
         dist = depth[rows, cols] * np.sqrt(1 + right**2 + up**2)
-        near = dist < REACH
-        if near.sum() == 0:
+        if not (dist < REACH).any():
             return None
-        rows, cols = rows[near], cols[near]
-        k = int(np.argmin((rows - rows.mean()) ** 2 + (cols - cols.mean()) ** 2))
         self.ep.target = target.body
-        return {"action": name, "point": [int(cols[k]), int(rows[k])]}
+        return {"action": name, "mask": mask}
 
     def _approach(self, target: Instance, looking: bool = False) -> dict[str, Any] | None:
         """The first move towards a pose from which the target is within reach (None: there is none left, or it

@@ -139,6 +139,12 @@ def test_the_factory_refuses_an_env_without_its_observations():
     assert isinstance(modular(Context()), ModularAgent)
 
 
+def _comparable(action: dict) -> tuple:
+    """An action as a value `==` can compare (its mask, an array, as bytes)."""
+    mask = action.get("mask")
+    return action["action"], None if mask is None else (mask.shape, np.packbits(mask).tobytes())
+
+
 def test_its_actions_depend_on_its_observations_only(first):
     """Episode A's observations, replayed to a fresh agent while the env holds episode B, give A's actions."""
     env = _env()
@@ -160,7 +166,7 @@ def test_its_actions_depend_on_its_observations_only(first):
         env.reset(seed=0, options={"split": "S+", "index": 5})  # the env now holds another episode
         fresh = ModularAgent(SIDE, SIDE)
         fresh.reset(seen[0][0]["instruction"], agent_info({}, episode_seed=1, high_descs=steps))
-        assert [fresh.act(o, i) for o, i in seen] == actions
+        assert [_comparable(fresh.act(o, i)) for o, i in seen] == [_comparable(a) for a in actions]
     finally:
         env.close()
 
@@ -179,6 +185,19 @@ def test_luminous_eval_runs_it_in_its_own_process_in_the_privileged_track():
     assert (outcome.success, outcome.steps, outcome.goal_conditions) == (here.success, here.steps,
                                                                          here.goal_conditions)
     assert outcome.success
+
+
+def test_the_priors_episodes_are_in_no_split_room():
+    """The priors are counted in CSSG's own rooms: the script's first episodes pass its check, and a layout of a
+    frozen split (in an ALFRED floor plan, as every split is) is refused."""
+    from luminous_sim.benchmark import layout_scene, split_layouts
+    from tests.conftest import load_script
+
+    for script in load_script("scripts/learn_search_priors.py"):
+        assert script.count_parents(2, 1_000_000)  # each episode's scene checked on the way
+        layout = split_layouts("U+")[0]
+        with pytest.raises(ValueError, match=layout.floor_plan):
+            script.check_outside_splits(layout_scene(layout.floor_plan, layout.room_type, layout.layout_seed))
 
 
 @pytest.mark.slow

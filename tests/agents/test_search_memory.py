@@ -22,7 +22,7 @@ def test_sites_are_the_squares_an_instance_was_seen_in_with_their_mean_points():
 
 
 def _agent_after(agent: ModularAgent, action: str, body: int, failure: str = "") -> None:
-    agent.ep.last, agent.ep.target = {"action": action, "point": [1, 1]}, body
+    agent.ep.last, agent.ep.target = {"action": action, "mask": np.ones((2, 2), bool)}, body
     agent._feedback({"failure_code": failure})
 
 
