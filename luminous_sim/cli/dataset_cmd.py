@@ -73,6 +73,13 @@ def register(sub: argparse._SubParsersAction) -> None:
     b.add_argument("--speaker", type=Path, default=None, metavar="PATH",
                    help="a learned speaker's checkpoint (`luminous speaker train`): its instructions replace the "
                         "templates' in every trial (needs PyTorch)")
+    b.add_argument("--language", choices=("human", "templates"), default=None,
+                   help="--from-alfred: each trial keeps its design's human annotations (human; the default "
+                        "without --speaker; steps the templates' where ALFRED's subgoals are not ours, as the "
+                        "sidecar says), or gets template instructions (templates)")
+    b.add_argument("--seed", type=int_range(0, 2**31 - 1), default=None,
+                   help="--from-alfred: the seed of every design's scene and instructions (default 0, the seed S "
+                        "is built with; another for a training set)")
     b.set_defaults(func=_build, build_parser=b)
     p = actions.add_parser("minari", help="roll out the oracle in a registered env and write a Minari dataset",
                        epilog=EPILOG)
@@ -95,10 +102,15 @@ def register(sub: argparse._SubParsersAction) -> None:
 
 
 def _build(args: argparse.Namespace) -> int:
-    from luminous_sim.data import BuildOptions, build_from_alfred, build_houses, build_split, make_backend
+    from luminous_sim.data import DESIGN_SEED, BuildOptions, build_from_alfred, build_houses, build_split, make_backend
 
     if args.houses is not None and args.count is not None:
         args.build_parser.error("--count is for --split and --from-alfred; --houses N gives the count itself")
+    if args.from_alfred is None and (args.language is not None or args.seed is not None):
+        args.build_parser.error("--language and --seed are for --from-alfred (a split's episodes have their own)")
+    if args.language == "human" and args.speaker is not None:
+        args.build_parser.error("--speaker replaces template instructions; --language human keeps the designs' "
+                                "own (give one or the other)")
     if args.split is not None and args.count is None:
         from luminous_sim.benchmark import benchmark_size
 
@@ -109,7 +121,8 @@ def _build(args: argparse.Namespace) -> int:
 
         check_speaker(args.speaker, frames=not args.no_frames)
         speaker = str(args.speaker.resolve())
-    options = BuildOptions(frames=not args.no_frames, video=not args.no_video, speaker=speaker)
+    human = args.from_alfred is not None and (args.language or ("templates" if speaker else "human")) == "human"
+    options = BuildOptions(frames=not args.no_frames, video=not args.no_video, speaker=speaker, human_language=human)
     with make_backend(args.backend, args.workers, args.address) as backend:
         if args.split is not None:
             report = build_split(Path(args.out), args.split, args.count, backend, options,
@@ -118,7 +131,8 @@ def _build(args: argparse.Namespace) -> int:
             report = build_houses(Path(args.out), args.houses, backend, options, progress=not args.no_progress)
         else:
             report = build_from_alfred(Path(args.out), args.from_alfred, args.count, backend, options,
-                                       progress=not args.no_progress)
+                                       progress=not args.no_progress,
+                                       seed=DESIGN_SEED if args.seed is None else args.seed)
     if args.split is not None or args.houses is not None:
         name, count = (args.split, args.count) if args.split is not None else ("houses", args.houses)
         print(f"{name}: episodes 0..{count - 1} in {report.out}/ ({report.built} built, "

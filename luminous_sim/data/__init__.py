@@ -24,7 +24,7 @@ Typical use::
     print(report.summary())
 """
 
-from luminous_sim.data.alfred_build import DesignJob, build_from_alfred, design_jobs
+from luminous_sim.data.alfred_build import DESIGN_SEED, DesignJob, build_from_alfred, design_jobs
 from luminous_sim.data.alfred_designs import (
     AlfredDesign,
     DesignError,
@@ -39,6 +39,7 @@ from luminous_sim.data.alfred_designs import (
     solve_design,
 )
 from luminous_sim.data.alfred_export import ExportError, alfred_traj_data, export_alfred, fold_subgoals
+from luminous_sim.data.alfred_language import HumanLanguage
 from luminous_sim.data.alfred_merge import MergeConflict, MergedCDF, merge_by_floor_plan, merge_parses
 from luminous_sim.data.alfred_parser import AlfredParse, AlfredParseError, ParseNote, parse_alfred
 from luminous_sim.data.alfred_report import CoverageReport, Realisation, parse_directory, realise, write_report
@@ -70,6 +71,7 @@ from luminous_sim.data.minari_export import (
 from luminous_sim.data.task_scenes import physical_misfit, scene_for_task, task_misfit
 
 __all__ = [
+    "DESIGN_SEED",
     "HOUSE_SPLIT",
     "RETRIED_STAGES",
     "AlfredDesign",
@@ -86,6 +88,7 @@ __all__ = [
     "DesignResult",
     "ExportError",
     "HouseJob",
+    "HumanLanguage",
     "Job",
     "JobOutcome",
     "LocalBackend",

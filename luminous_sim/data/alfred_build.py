@@ -17,7 +17,7 @@ Typical use::
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from pathlib import Path
 from typing import Any
 
@@ -83,12 +83,17 @@ class DesignJob:
         details.update(goal=result.goal, low_actions=len(traj.low_actions), replans=traj.replans)
         if not result.success:
             return failed("oracle", result.failure or "the goal is not met at the end")
+        human = design.language if options.human_language else None
+        generated = {**GENERATED, "task_id": "the ALFRED design's own trial folder name"}
+        if human is not None:
+            generated = {k: v for k, v in generated.items() if not k.startswith("turk_annotations")}
+            details["annotations"] = len(human.annotations)
         extra = {"regenerate": REGENERATE, "alfred_design": {"name": design.name, "task_type": design.task_type,
                                                              "floor_plan": design.floor_plan},
-                 "generated": {**GENERATED, "task_id": "the ALFRED design's own trial folder name"}}
+                 "generated": generated}
         try:
             trial = export_alfred(work, scene, record, seed=self.seed, task_id=design.path.parent.name,
-                                  video=options.video and options.frames, sidecar=extra)
+                                  video=options.video and options.frames, sidecar=extra, human=human)
         except ExportError as exc:
             return failed("export", str(exc))
         return JobOutcome(trial=trial, details=details)
@@ -115,9 +120,14 @@ def build_from_alfred(out: Path, split_dir: Path, count: int | None = None, back
                       seed: int = DESIGN_SEED) -> BuildReport:
     """Method (b): the first `count` designs (all by default) of the ALFRED split folder `split_dir`, each
     re-solved in its own floor plan's shell, into the build folder `out` (under `out/<split folder name>/`).
+    With `options.human_language`, a trial keeps its design's human annotations (`alfred_language`).
 
     Raises:
         DesignError: see `design_jobs`.
-        BuildError, ManifestError: see `build.build`.
+        BuildError, ManifestError: see `build.build`; also a speaker asked for with the human language.
     """
+    options = replace(options or BuildOptions(), design_seed=seed)
+    if options.human_language and options.speaker is not None:
+        raise BuildError("a learned speaker replaces the templates' instructions; with the designs' own human "
+                         "annotations there are none to replace (use one or the other)")
     return build(out, design_jobs(split_dir, count, seed), backend, options, progress)

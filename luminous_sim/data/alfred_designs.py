@@ -17,6 +17,7 @@ import numpy as np
 
 from luminous_sim.assets.catalog import Catalog
 from luminous_sim.cdf import ChallengeDefinition
+from luminous_sim.data.alfred_language import HumanLanguage
 from luminous_sim.data.alfred_parser import AlfredParseError, read_traj
 from luminous_sim.errors import InfeasibleSceneError, LuminousError
 from luminous_sim.scene import Scene
@@ -55,6 +56,8 @@ class AlfredDesign:
     floor_plan: str
     scene_num: int
     path: Path
+    language: HumanLanguage | None = field(default=None, compare=False)
+    """Its people's annotations and ALFRED's subgoals they describe; None where it has none (a test split)."""
 
     @property
     def name(self) -> str:
@@ -96,7 +99,35 @@ def read_design(path: str | Path) -> AlfredDesign:
 
     if task_type not in ALFRED_TASK_TYPES:
         raise DesignError(f"{path}: task_type {task_type!r} is not one of ALFRED's: {', '.join(ALFRED_TASK_TYPES)}")
-    return AlfredDesign(str(task_type), params, floor_plan, scene_num, path)
+    return AlfredDesign(str(task_type), params, floor_plan, scene_num, path, _language(data, path))
+
+
+def _language(data: Any, path: Path) -> HumanLanguage | None:
+    """The design's human annotations, or None where it has no `turk_annotations` (or none in it).
+
+    Raises:
+        DesignError: an annotation without text `task_desc` and `high_descs` (named).
+    """
+    turk = data.get("turk_annotations")
+    if turk is None:
+        return None
+    anns = turk.get("anns") if isinstance(turk, dict) else None
+    if not isinstance(anns, list):
+        raise DesignError(f"{path}: field 'turk_annotations.anns': expected a list of annotations")
+    for k, ann in enumerate(anns):
+        steps = ann.get("high_descs") if isinstance(ann, dict) else None
+        if not (isinstance(ann, dict) and isinstance(ann.get("task_desc"), str) and isinstance(steps, list)
+                and all(isinstance(s, str) for s in steps)):
+            raise DesignError(f"{path}: field 'turk_annotations.anns[{k}]': expected task_desc and high_descs text")
+    plan = []
+    for k, h in enumerate(data["plan"]["high_pddl"]):
+        action = h.get("discrete_action") if isinstance(h, dict) else None
+        name = action.get("action") if isinstance(action, dict) else None
+        if not isinstance(name, str):
+            raise DesignError(f"{path}: field 'plan.high_pddl[{k}].discrete_action.action': expected a subgoal name")
+        if name != "NoOp":
+            plan.append(name)
+    return HumanLanguage(tuple(anns), tuple(plan)) if anns else None
 
 
 def read_designs(split_dir: str | Path) -> list[AlfredDesign]:

@@ -26,6 +26,7 @@ from pathlib import Path
 from typing import Any
 
 from luminous_sim.assets.objio import write_atomic
+from luminous_sim.data.alfred_language import HumanLanguage, language_note, trial_annotations
 from luminous_sim.episode import EpisodeRecord, write_video
 from luminous_sim.errors import LuminousError
 from luminous_sim.planning import Trajectory
@@ -206,9 +207,10 @@ def first_cause(traj: Trajectory) -> str:
     return f"the goal is not met at the end: {done} of {total} goal conditions hold"
 
 
-def alfred_traj_data(scene: Scene, record: EpisodeRecord, seed: int,
-                     task_id: str | None = None) -> tuple[dict[str, Any], list[int]]:
-    """The traj_data.json content of a solved episode, and the map from our high_idx to ALFRED's."""
+def alfred_traj_data(scene: Scene, record: EpisodeRecord, seed: int, task_id: str | None = None,
+                     human: HumanLanguage | None = None) -> tuple[dict[str, Any], list[int]]:
+    """The traj_data.json content of a solved episode, and the map from our high_idx to ALFRED's. `human`: the
+    design's own annotations, in place of the templates' (`alfred_language.trial_annotations`)."""
     traj, task = record.trajectory, record.task
     if not traj.success:
         raise ExportError(f"only solved episodes are exported (this one failed: {first_cause(traj)})")
@@ -246,6 +248,8 @@ def alfred_traj_data(scene: Scene, record: EpisodeRecord, seed: int,
             raise ExportError(f"annotation {n} has {len(text.high_descs)} steps for {len(ours)} subgoals")
         anns.append({"assignment_id": f"LUMINOUS_{n}_{tid}", "high_descs": [text.high_descs[i] for i in kept],
                      "task_desc": text.task_desc, "votes": list(ANNOTATION_VOTES)})
+    if human is not None:
+        anns = trial_annotations(human, [h["discrete_action"]["action"] for h in high[:-1]], anns)
     params = task.params.to_json()
     floor_plan, scene_num = _scene_number(scene)
     init = traj.init_action
@@ -281,17 +285,19 @@ def _jpeg(frame) -> bytes:
 
 
 def export_alfred(out_root: Path, scene: Scene, record: EpisodeRecord, seed: int, task_id: str | None = None,
-                  video: bool = False, sidecar: Mapping[str, Any] | None = None) -> Path:
+                  video: bool = False, sidecar: Mapping[str, Any] | None = None,
+                  human: HumanLanguage | None = None) -> Path:
     """Write a solved episode (`run_episode(scene, task_type, seed)`) under `out_root`
     in ALFRED's layout and return its trial folder. `sidecar` adds keys to (or replaces keys of) the
-    sidecar file, e.g. how to regenerate an episode that `run_episode` did not make.
+    sidecar file, e.g. how to regenerate an episode that `run_episode` did not make; `human`: the design's
+    annotations in place of the templates' (the sidecar's `language` says where each one's steps come from).
 
     Raises:
         ExportError: the episode failed, or its plan has no ALFRED subgoal.
     """
     from luminous_sim import __version__
 
-    data, high_map = alfred_traj_data(scene, record, seed, task_id)
+    data, high_map = alfred_traj_data(scene, record, seed, task_id, human)
     _, scene_num = _scene_number(scene)
     trial = Path(out_root) / f"{data['task_type']}-{folder_name(data['pddl_params'], scene_num)}" / data["task_id"]
     traj = record.trajectory
@@ -312,6 +318,7 @@ def export_alfred(out_root: Path, scene: Scene, record: EpisodeRecord, seed: int
         "regenerate": "luminous_sim.episode.run_episode(Scene.from_json(json.dumps(scene)), "
                       "task['task_type'], seed)",
         "scene": json.loads(scene.to_json()),
+        **({"language": language_note(human, data["turk_annotations"]["anns"])} if human is not None else {}),
         **(sidecar or {}),
     }
     write_atomic(trial / SIDECAR, json.dumps(sidecar, sort_keys=True, indent=1) + "\n")

@@ -96,15 +96,21 @@ class BuildOptions:
     frames: bool = True
     video: bool = True
     speaker: str | None = None
+    human_language: bool = False
+    """--from-alfred: each design's own human annotations in place of the templates (`data.alfred_language`)."""
+    design_seed: int | None = None
+    """--from-alfred: the seed of every design's scene (recorded, so that a rerun cannot mix two)."""
 
     def settings(self) -> dict[str, Any]:
-        speaker = {}
+        extra: dict[str, Any] = {}
         if self.speaker is not None:
             from luminous_sim.language.speaker.annotate import checkpoint_digest
 
-            speaker = {"speaker_sha256": checkpoint_digest(self.speaker)}
+            extra["speaker_sha256"] = checkpoint_digest(self.speaker)
+        if self.design_seed is not None:
+            extra.update(design_seed=self.design_seed, language="human" if self.human_language else "templates")
         return {"format": BUILD_FORMAT, "frames": self.frames, "video": self.video and self.frames,
-                "annotations": ANNOTATIONS, **speaker}
+                "annotations": "the designs' own" if self.human_language else ANNOTATIONS, **extra}
 
 
 @dataclass(frozen=True)
@@ -607,12 +613,15 @@ def _check_jobs(jobs: Sequence[Job]) -> None:
 
 
 def splits_document(manifest: Manifest) -> dict[str, list[dict[str, object]]]:
-    """ALFRED's oct21.json layout over every trial the manifest lists, per split in job order."""
+    """ALFRED's oct21.json layout over every trial the manifest lists, per split in job order (one entry per
+    annotation: `ANNOTATIONS`, or the number a record states, as a trial with its design's people's has)."""
     built: dict[str, list[tuple[int, str]]] = {}
+    counts: dict[str, int] = {}
     for r in manifest:
         if r.get("trial"):
             built.setdefault(r["split"], []).append((r["order"], r["trial"]))
-    return oct21_document({s: [t for _, t in sorted(v)] for s, v in sorted(built.items())}, ANNOTATIONS)
+            counts[r["trial"]] = r.get("annotations", ANNOTATIONS)
+    return oct21_document({s: [t for _, t in sorted(v)] for s, v in sorted(built.items())}, counts)
 
 
 def build(out: Path, jobs: Sequence[Job], backend: Backend | None = None, options: BuildOptions | None = None,

@@ -13,6 +13,7 @@ the structures the splits draw their layouts from.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 import numpy as np
@@ -74,10 +75,16 @@ def plus_split(name: str) -> PlusSplit:
     return PLUS_SPLITS[name]
 
 
-def oct21_document(built: dict[str, list[str]], annotations: int = 3) -> dict[str, list[dict[str, object]]]:
+def oct21_document(built: dict[str, list[str]],
+                   annotations: int | Mapping[str, int] = 3) -> dict[str, list[dict[str, object]]]:
     """An ALFRED `oct21.json`-style split file: per split, one entry per (trajectory, annotation index),
-    `{"repeat_idx": k, "task": "<task dir>/<trial dir>"}`, trajectories in the order given."""
-    return {name: [{"repeat_idx": k, "task": task} for task in tasks for k in range(annotations)]
+    `{"repeat_idx": k, "task": "<task dir>/<trial dir>"}`, trajectories in the order given; `annotations`:
+    how many each trajectory has (one number for all, or per trajectory).
+    """
+    def count(task: str) -> int:
+        return annotations if isinstance(annotations, int) else annotations[task]
+
+    return {name: [{"repeat_idx": k, "task": task} for task in tasks for k in range(count(task))]
             for name, tasks in built.items()}
 
 

@@ -25,7 +25,8 @@ from luminous_sim.data import (
 from luminous_sim.data.build import MANIFEST, PARTIAL, SPLITS
 from tests.data.test_build import _env, _has_ray, _kill_when, tree
 
-QUICK = BuildOptions(frames=False, video=False)
+QUICK = BuildOptions(frames=False, video=False, human_language=True)
+"""What the CLI builds with --no-frames: the designs' own human annotations."""
 REAL = ("look_at_obj_in_light-AlarmClock-None-DeskLamp-323", "look_at_obj_in_light-Bowl-None-DeskLamp-301")
 """Two of valid_seen's quickest designs (about a second each)."""
 UNFIT = "look_at_obj_in_light-Bowl-None-DeskLamp-1"
@@ -176,3 +177,64 @@ def test_cli_wants_one_source(tmp_path, alfred_split, capsys):
     err = capsys.readouterr().err
     assert "one of the arguments --split --houses --from-alfred is required" in err
     assert "not allowed with argument" in err
+
+
+def _source(alfred_split: Path, name: str) -> dict:
+    return json.loads(next((alfred_split / name).glob("*/traj_data.json")).read_text())
+
+
+def test_a_trial_keeps_its_designs_human_annotations_as_alfred_has_them(alfred_split, reference):
+    """Where ALFRED's subgoals are ours, every annotation is the design's own (worker, votes, directive, steps);
+    splits.json lists each one, and the sidecar says the steps are the people's."""
+    listed = json.loads((reference / SPLITS).read_text())[SPLIT]
+    for name in REAL:
+        (trial,) = (reference / SPLIT / name).iterdir()
+        data = json.loads((trial / "traj_data.json").read_text())
+        anns = _source(alfred_split, name)["turk_annotations"]["anns"]
+        assert data["turk_annotations"]["anns"] == anns
+        side = json.loads((trial / "luminous.json").read_text())
+        assert side["language"]["high_descs"] == ["human"] * len(anns)
+        assert not any(k.startswith("turk_annotations") for k in side["generated"])
+        assert sorted(e["repeat_idx"] for e in listed if e["task"] == f"{name}/{trial.name}") == list(range(len(anns)))
+
+
+def test_where_alfreds_plan_is_not_ours_the_directive_stays_and_the_steps_are_the_templates():
+    from luminous_sim.data import HumanLanguage
+    from luminous_sim.data.alfred_language import language_note, trial_annotations
+
+    ann = {"assignment_id": "A1", "votes": [1, 1, 1], "task_desc": "Put a cut apple in a pot.",
+           "high_descs": ["walk to the counter", "pick up the knife", "slice the apple", "put it in the pot"]}
+    human = HumanLanguage((ann,), ("GotoLocation", "PickupObject", "SliceObject", "PutObject"))
+    templates = [{"task_desc": "Place a sliced apple in a pot.", "high_descs": ["a", "b", "c", "d", "e"]}]
+    ours = ("GotoLocation", "PickupObject", "SliceObject", "PutObject", "PutObject")
+    (kept,) = trial_annotations(human, ours, templates)
+    assert kept == {**ann, "high_descs": ["a", "b", "c", "d", "e"]}
+    assert language_note(human, [kept])["high_descs"] == ["templates"]
+    (same,) = trial_annotations(human, ours[:4], templates)
+    assert same == ann and language_note(human, [same])["high_descs"] == ["human"]
+
+
+def test_templates_and_the_design_seed_are_options_recorded_in_the_build(alfred_split, tmp_path, capsys):
+    """`--language templates` writes template instructions; the seed and language are in build.json, so a
+    rerun with another is refused; both are refused for a split build, and the human language with a speaker."""
+    from luminous_sim.cli.main import main
+
+    out = tmp_path / "t"
+    argv = ["dataset", "build", "--from-alfred", str(alfred_split), "--out", str(out), "--no-frames", "--no-progress"]
+    assert main([*argv, "--count", "1", "--language", "templates", "--seed", "7"]) == 0
+    settings = json.loads((out / "build.json").read_text())
+    assert (settings["design_seed"], settings["language"]) == (7, "templates")
+    (trial,) = (out / SPLIT / REAL[0]).iterdir()
+    anns = json.loads((trial / "traj_data.json").read_text())["turk_annotations"]["anns"]
+    assert len(anns) == 3 and all(a["assignment_id"].startswith("LUMINOUS_") for a in anns)
+    assert main([*argv, "--count", "1", "--seed", "7"]) == 2
+    assert "language: 'templates' there, 'human' now" in capsys.readouterr().err
+    assert main([*argv, "--count", "1", "--language", "templates"]) == 2
+    assert "design_seed: 7 there, 0 now" in capsys.readouterr().err
+    for more in (["--split", "S+", "--seed", "1"], ["--from-alfred", str(alfred_split), "--language", "human",
+                                                     "--speaker", str(tmp_path / "speaker.pt")]):
+        with pytest.raises(SystemExit) as exc:
+            main(["dataset", "build", *more, "--out", str(tmp_path / "x")])
+        assert exc.value.code == 2
+    err = capsys.readouterr().err
+    assert "--language and --seed are for --from-alfred" in err and "give one or the other" in err

@@ -58,6 +58,18 @@ def test_a_malformed_design_names_the_file_and_field(tmp_path):
                                "plan": {"high_pddl": [], "low_actions": []}}))
     with pytest.raises(DesignError, match="does not match scene.scene_num"):
         read_design(bad)
+    good = {"task_type": "pick_and_place_simple", "pddl_params": {"object_target": "Apple"},
+            "scene": {"floor_plan": "FloorPlan1", "scene_num": 1},
+            "plan": {"high_pddl": [{"discrete_action": {"action": "GotoLocation"}}], "low_actions": []}}
+    for anns, field in (({"anns": "text"}, r"'turk_annotations.anns': expected a list"),
+                        ({"anns": [{"task_desc": "take it", "high_descs": [3]}]}, r"'turk_annotations.anns\[0\]'")):
+        bad.write_text(json.dumps({**good, "turk_annotations": anns}))
+        with pytest.raises(DesignError, match=field):
+            read_design(bad)
+    bad.write_text(json.dumps({**good, "plan": {"high_pddl": [{"discrete_action": 1}], "low_actions": []},
+                               "turk_annotations": {"anns": [{"task_desc": "take it", "high_descs": []}]}}))
+    with pytest.raises(DesignError, match=r"'plan.high_pddl\[0\].discrete_action.action'"):
+        read_design(bad)
 
 
 @pytest.mark.parametrize("task_type", sorted(SAMPLE))
