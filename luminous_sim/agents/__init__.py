@@ -20,7 +20,15 @@ from luminous_sim.lazy import lazy_getattr
 if TYPE_CHECKING:
     from luminous_sim.agents.annotations import SLOTS, Annotated, AnnotationError, read_annotations
     from luminous_sim.agents.camera import FOV_DEGREES, Intrinsics, unproject
-    from luminous_sim.agents.modular_agent import AgentSettings, ModularAgent, TrackError, modular, modular_no_steps
+    from luminous_sim.agents.instances import InstanceTracker
+    from luminous_sim.agents.modular_agent import (
+        AgentSettings,
+        ModularAgent,
+        TrackError,
+        modular,
+        modular_no_steps,
+        modular_rgb,
+    )
     from luminous_sim.agents.navigation import plan_path
     from luminous_sim.agents.own_pose import OwnPose
     from luminous_sim.agents.parser import (
@@ -32,6 +40,9 @@ if TYPE_CHECKING:
         default_parser,
         train_parser,
     )
+    from luminous_sim.agents.perception import Perception, PerceptionError, default_perception
+    from luminous_sim.agents.perception_scores import TASK_NAMED, PerceptionScores
+    from luminous_sim.agents.perception_training import PerceptionSettings, train_perception
     from luminous_sim.agents.priors import SearchPriors, default_priors
     from luminous_sim.agents.semantic_map import SemanticMap
     from luminous_sim.agents.subgoals import Subgoal, subgoals
@@ -45,12 +56,17 @@ _WHERE = {
     "AgentSettings": "modular_agent", "ModularAgent": "modular_agent", "TrackError": "modular_agent",
     "modular": "modular_agent", "modular_no_steps": "modular_agent", "plan_path": "navigation", "OwnPose": "own_pose",
     "SearchPriors": "priors", "default_priors": "priors", "SemanticMap": "semantic_map",
-    "Subgoal": "subgoals", "subgoals": "subgoals",
+    "Subgoal": "subgoals", "subgoals": "subgoals", "modular_rgb": "modular_agent", "InstanceTracker": "instances",
+    "Perception": "perception", "PerceptionError": "perception", "default_perception": "perception",
+    "TASK_NAMED": "perception_scores", "PerceptionScores": "perception_scores",
+    "PerceptionSettings": "perception_training", "train_perception": "perception_training",
 }
 
-__all__ = ["FOV_DEGREES", "SLOTS", "AgentSettings", "Annotated", "AnnotationError", "InstructionParser", "Intrinsics",
-           "ModularAgent", "OwnPose", "ParsedTask", "ParserError", "SearchPriors", "SemanticMap", "Subgoal",
-           "TrackError", "TrainSettings", "accuracy", "default_parser", "default_priors", "modular",
-           "modular_no_steps", "plan_path", "read_annotations", "subgoals", "train_parser", "unproject"]
+__all__ = ["FOV_DEGREES", "SLOTS", "TASK_NAMED", "AgentSettings", "Annotated", "AnnotationError", "InstanceTracker",
+           "InstructionParser", "Intrinsics", "ModularAgent", "OwnPose", "ParsedTask", "ParserError", "Perception",
+           "PerceptionError", "PerceptionScores", "PerceptionSettings", "SearchPriors", "SemanticMap", "Subgoal",
+           "TrackError", "TrainSettings", "accuracy", "default_parser", "default_perception", "default_priors",
+           "modular", "modular_no_steps", "modular_rgb", "plan_path", "read_annotations", "subgoals",
+           "train_parser", "train_perception", "unproject"]
 
 __getattr__ = lazy_getattr(__name__, _WHERE)

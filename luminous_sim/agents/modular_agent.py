@@ -1,10 +1,12 @@
-"""The modular reference agent (FILM's and HLSM's design, with the simulator's depth and segmentation in the
-privileged track): the instruction parser reads the task, the semantic map is built from the agent's own
-frames and pose, frontier search with receptacle priors finds what is not yet seen, and the task type's
-subgoals are acted out with A* over its own map and interactions on the target's pixels.
+"""The modular reference agent (FILM's and HLSM's design; the simulator's depth and segmentation in the
+privileged track, learned ones from RGB in the rgb track: `Perception` and the `InstanceTracker`): the
+instruction parser reads the task, the semantic map is built from the agent's own frames and pose, frontier
+search with receptacle priors finds what is not yet seen, and the task type's subgoals are acted out with A*
+over its own map and interactions on the target's pixels.
 
-It sees only what the env gives an agent: the observation (`rgb`, `depth`, `segmentation`, `instance_types`,
-`instruction`), the last action's `failure_code`, and the instructions at reset (docs/agents.md).
+It sees only what the env gives an agent: the observation (`rgb`, and in the privileged track `depth`,
+`segmentation`, `instance_types`), the last action's `failure_code`, and the instructions at reset
+(docs/agents.md).
 """
 
 from __future__ import annotations
@@ -16,6 +18,7 @@ from typing import Any
 import numpy as np
 
 from luminous_sim.agents.camera import Intrinsics
+from luminous_sim.agents.instances import InstanceTracker
 from luminous_sim.agents.navigation import State, plan_path
 from luminous_sim.agents.own_pose import HEADINGS, HORIZON_RANGE, STEP, OwnPose
 from luminous_sim.agents.priors import SearchPriors, default_priors
@@ -97,6 +100,8 @@ class _Episode:
     turn: str = "RotateRight"
     """Which way it looks around (drawn from the episode's seed: the search's randomness)."""
     seen_types: set[int] = field(default_factory=set)
+    tracker: InstanceTracker | None = None
+    """The rgb track's instances from predicted types (None: the simulator's segmentation)."""
     searching: bool = False
     """The last interaction opened a receptacle to look inside (search), not a subgoal's."""
 
@@ -105,8 +110,11 @@ class ModularAgent:
     """The agent (see the module docstring); `reset` and `act` are the evaluation's agent interface."""
 
     def __init__(self, width: int, height: int, parser: Any = None, priors: SearchPriors | None = None,
-                 settings: AgentSettings | None = None):
+                 settings: AgentSettings | None = None, perception: Any = None):
+        """`perception`: a `Perception` (the rgb track: depth and types predicted from RGB); None to map with the
+        simulator's depth, segmentation and types (the privileged track)."""
         self.intrinsics = Intrinsics(width, height)
+        self.perception = perception
         self.parser = parser
         self.priors = priors or default_priors()
         self.settings = settings or AgentSettings()
@@ -125,7 +133,8 @@ class ModularAgent:
             self.task = self.parser.parse(directive, steps).to_dict()
         else:
             self.task = {"task_type": given["task_type"], "pddl_params": dict(given["pddl_params"])}
-        self.ep = _Episode(subgoals(self.task["task_type"], self.task["pddl_params"]), SemanticMap(self.intrinsics))
+        self.ep = _Episode(subgoals(self.task["task_type"], self.task["pddl_params"]), SemanticMap(self.intrinsics),
+                           tracker=InstanceTracker(self.intrinsics) if self.perception is not None else None)
         rng = np.random.default_rng(int(info.get("episode_seed") or 0))
         self.ep.turn = "RotateRight" if rng.random() < 0.5 else "RotateLeft"
 
@@ -141,9 +150,13 @@ class ModularAgent:
     def act(self, observation: dict[str, Any], info: dict[str, Any]) -> dict[str, Any]:
         ep = self.ep
         self._feedback(info)
-        depth = np.asarray(observation["depth"], np.float32)[..., 0]
-        seg = np.asarray(observation["segmentation"])
-        types = np.asarray(observation["instance_types"])
+        if ep.tracker is not None:
+            types, depth = self.perception.predict(np.asarray(observation["rgb"]))
+            seg = ep.tracker.update(types, depth, ep.pose, ep.held)
+        else:
+            depth = np.asarray(observation["depth"], np.float32)[..., 0]
+            seg = np.asarray(observation["segmentation"])
+            types = np.asarray(observation["instance_types"])
         ep.map.update(depth, seg, types, ep.pose, ep.held)
         ep.seen_types.update(int(t) for t in np.unique(types) if t)
         action = self._decide(depth, seg)
@@ -204,6 +217,8 @@ class ModularAgent:
             ep.roles[sg.role] = body
         if name in ("PickupObject", "SliceObject"):
             ep.map.forget_instance(body)
+            if ep.tracker is not None:
+                ep.tracker.forget(body)
         if name == "PickupObject":
             ep.held = body
         elif name == "PutObject":
@@ -451,8 +466,17 @@ def modular(context: Any) -> ModularAgent:
     if missing:
         raise TrackError(f"the modular agent maps with {', '.join(NEEDS)}, which this env does not observe "
                          f"({', '.join(missing)} off): evaluate it with --track privileged (its perception "
-                         "for the rgb track is the issue 'Agents that see')")
+                         "for the rgb track: --policy luminous_sim.agents:modular_rgb)")
     return ModularAgent(obs.width, obs.height)
+
+
+def modular_rgb(context: Any) -> ModularAgent:
+    """The evaluation's factory for the rgb track (`luminous eval --policy luminous_sim.agents:modular_rgb`): depth
+    and types predicted from RGB by the shipped `Perception`, instances tracked from them."""
+    from luminous_sim.agents.perception import default_perception
+
+    obs = context.config.observations
+    return ModularAgent(obs.width, obs.height, perception=default_perception())
 
 
 def modular_no_steps(context: Any) -> ModularAgent:

@@ -1,7 +1,8 @@
 """`luminous dataset`: oracle demonstrations at scale. `build`: an S+/U+/U+test split (method (a)) or the
 designs of an ALFRED split folder (method (b)) in ALFRED's layout (see luminous_sim.data.build and
 .alfred_build); `minari`: a registered env's oracle episodes as a Minari dataset for offline RL
-(`luminous_sim.data.minari_export`; the `minari` package is imported only when that action runs).
+(`luminous_sim.data.minari_export`; the `minari` package is imported only when that action runs); `perception`:
+frames with exact depth and labels for learning perception (`luminous_sim.data.perception_frames`).
 """
 
 from __future__ import annotations
@@ -33,7 +34,8 @@ def env_option(text: str) -> tuple[str, Any]:
 
 
 def register(sub: argparse._SubParsersAction) -> None:
-    parser = sub.add_parser("dataset", help="expert demonstrations: ALFRED's format (build), Minari (minari)")
+    parser = sub.add_parser("dataset", help="expert demonstrations: ALFRED's format (build), Minari (minari); "
+                                               "perception frames (perception)")
     actions = parser.add_subparsers(dest="action", required=True, metavar="ACTION")
     b = actions.add_parser(
         "build", help="build episodes 0..N-1 of a split, or re-solve the designs of an ALFRED split folder "
@@ -81,6 +83,7 @@ def register(sub: argparse._SubParsersAction) -> None:
                    help="--from-alfred: the seed of every design's scene and instructions (default 0, the seed S "
                         "is built with; another for a training set)")
     b.set_defaults(func=_build, build_parser=b)
+    _register_perception(actions)
     p = actions.add_parser("minari", help="roll out the oracle in a registered env and write a Minari dataset",
                        epilog=EPILOG)
     p.add_argument("--env", required=True, help="a registered id, e.g. Luminous-NavToObject-64-v1")
@@ -99,6 +102,54 @@ def register(sub: argparse._SubParsersAction) -> None:
     p.add_argument("--jpeg", action="store_true", help="store images JPEG-encoded (lossy, smaller)")
     p.add_argument("--resume", action="store_true", help="go on from the <out>.partial/ an interrupted run left")
     p.set_defaults(func=cmd_minari)
+
+
+def _register_perception(actions: argparse._SubParsersAction) -> None:
+    q = actions.add_parser(
+        "perception", help="frames with exact depth and labels for learning the rgb track's perception (resumable)",
+        description="Renders frames from the agent's camera along expert and exploratory paths, with exact depth "
+                    "and instance/type labels, into OUT/shards/ (one npz per episode) with OUT/manifest.jsonl and "
+                    "OUT/perception.json (docs/perception.md). A training dataset's episodes are generated in "
+                    "CSSG's own room shapes (in no split) and, with --trials, restored from a build's trials (e.g. "
+                    "ALFRED's train designs re-solved; trials in U+/U+test structures are refused). --split makes "
+                    "an evaluation dataset of a frozen split's entries instead (train-perception refuses it). The "
+                    "same options give the same shards; a stopped run resumes when run again.")
+    q.add_argument("--out", required=True, type=output_dir, help="dataset folder (new, empty, or an earlier run)")
+    q.add_argument("--count", type=int_range(0, MAX_BUILD_JOBS), default=100,
+                   help="generated episodes (default 100); with --split, entries spread evenly over the split")
+    q.add_argument("--trials", type=Path, action="append", default=[], metavar="BUILD",
+                   help="a `luminous dataset build` folder whose built trials are rendered too (repeatable)")
+    q.add_argument("--split", choices=list(PLUS_SPLITS), default=None,
+                   help="an evaluation dataset: COUNT entries of this frozen split (U+: structures never trained on)")
+    q.add_argument("--seed", type=int_range(0, 2**31 - 1), default=0, help="dataset seed (default 0)")
+    q.add_argument("--size", type=int_range(32, 600), default=300, help="frame side in pixels (default 300, ALFRED's)")
+    q.add_argument("--workers", type=int_range(1, MAX_WORKERS), default=1,
+                   help=f"worker processes (default 1; at most {MAX_WORKERS})")
+    q.add_argument("--backend", choices=BACKENDS, default="local", help="local processes, or Ray (default local)")
+    q.add_argument("--address", default=None, help="a running Ray cluster's address (ray backend)")
+    q.add_argument("--no-progress", action="store_true", help="no progress on stderr")
+    q.set_defaults(func=_perception, perception_parser=q)
+
+
+def _perception(args: argparse.Namespace) -> int:
+    from luminous_sim.data import build_perception, built_trials, evaluation_jobs, make_backend, perception_jobs
+
+    if args.split is not None:
+        if args.trials:
+            args.perception_parser.error("--trials is for a training dataset; --split makes an evaluation one")
+        from luminous_sim.benchmark import benchmark_size
+
+        size = benchmark_size(args.split)
+        entries = sorted({min(size - 1, (k * size) // max(args.count, 1)) for k in range(min(args.count, size))})
+        jobs = evaluation_jobs(args.split, entries, args.seed, args.size)
+    else:
+        trials = [t for build in args.trials for t in built_trials(build)]
+        jobs = perception_jobs(args.seed, args.count, trials, args.size)
+    with make_backend(args.backend, args.workers, args.address) as backend:
+        report = build_perception(Path(args.out), jobs, backend, progress=not args.no_progress)
+    print(f"{args.out}: {report.summary()}")
+    print(f"shards under {Path(args.out) / 'shards'}; records in {Path(args.out) / 'manifest.jsonl'}")
+    return 0
 
 
 def _build(args: argparse.Namespace) -> int:

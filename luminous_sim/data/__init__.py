@@ -5,7 +5,8 @@ merge and its coverage report, and dataset builds (S+/U+ splits, method (a); a u
 re-solved design by design, method (b)) that resume after a kill and run on local worker processes or a
 Ray cluster through a small reusable backend interface,
 and oracle demonstrations of a registered env as a Minari dataset (offline RL; needs the `minari` extra,
-imported only when `export_minari` runs).
+imported only when `export_minari` runs), and perception datasets: frames with exact depth and labels
+(`build_perception`; docs/perception.md).
 
 Typical use::
 
@@ -68,6 +69,19 @@ from luminous_sim.data.minari_export import (
     export_minari,
     minari_dataset_path,
 )
+from luminous_sim.data.perception_frames import (
+    PerceptionDataError,
+    PerceptionJob,
+    PerceptionReport,
+    build_perception,
+    built_trials,
+    evaluation_jobs,
+    iter_shards,
+    leaks,
+    perception_jobs,
+    read_header,
+    read_manifest,
+)
 from luminous_sim.data.task_scenes import physical_misfit, scene_for_task, task_misfit
 
 __all__ = [
@@ -100,6 +114,9 @@ __all__ = [
     "MinariExportError",
     "NoDesignScene",
     "ParseNote",
+    "PerceptionDataError",
+    "PerceptionJob",
+    "PerceptionReport",
     "RayBackend",
     "Realisation",
     "SplitJob",
@@ -108,17 +125,22 @@ __all__ = [
     "build",
     "build_from_alfred",
     "build_houses",
+    "build_perception",
     "build_split",
     "built_count",
+    "built_trials",
     "clear_for_put",
     "default_minari_id",
     "design_jobs",
     "design_scene",
     "design_task",
+    "evaluation_jobs",
     "export_alfred",
     "export_minari",
     "fold_subgoals",
     "house_jobs",
+    "iter_shards",
+    "leaks",
     "make_backend",
     "map_jobs",
     "merge_by_floor_plan",
@@ -126,9 +148,12 @@ __all__ = [
     "minari_dataset_path",
     "parse_alfred",
     "parse_directory",
+    "perception_jobs",
     "physical_misfit",
     "read_design",
     "read_designs",
+    "read_header",
+    "read_manifest",
     "realise",
     "retried",
     "scene_for_task",
