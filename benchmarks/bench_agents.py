@@ -1,7 +1,9 @@
 """The modular agent in the paper's Table 4 protocol (issue 43): SR per ALFRED task type and their average, then
 GC, PLW-SR and PLW-GC, each with a 95% interval, on S (ALFRED's valid_seen designs re-solved in their own floor
 plans, a `luminous dataset build --from-alfred` folder), S+ and U+ (the frozen splits), in the privileged track
-(the simulator's depth and segmentation), over the agent's seeds (its parser's training seed and its search's),
+(the simulator's depth and segmentation) or, with `--track rgb`, the rgb track (depth and types predicted from
+RGB by the shipped perception network, `modular_rgb`; perception also scored on a sample of the agent's own
+frames against the simulator's labels), over the agent's seeds (its parser's training seed and its search's),
 with the ablations (task parameters given instead of parsed; the directive without the step instructions), an
 error breakdown per type as FILM and HLSM report it, the difference S -> S+ per type, and the paper's rows beside
 ours (figures from another simulator, quoted as the paper's).
@@ -68,10 +70,18 @@ class Job:
     seed: int
     trial: str = ""
     parser: str = ""
+    track: str = "privileged"
+
+
+ENV_OVERRIDES: dict[str, Any] = {}
+"""Env options over the evaluation's (for quick checks, e.g. a lower `max_steps`; none in a measured run)."""
+SCORED_EVERY = 5
+"""In the rgb track, every fifth of the agent's frames is scored against the simulator's labels."""
 
 
 def _row_path(out: Path, job: Job) -> Path:
-    return out / "rows" / f"{job.split}-{job.index}-{job.variant}-{job.seed}.json"
+    track = "" if job.track == "privileged" else f"-{job.track}"
+    return out / "rows" / f"{job.split}-{job.index}-{job.variant}-{job.seed}{track}.json"
 
 
 _CACHE: dict[str, Any] = {}
@@ -88,17 +98,33 @@ def play_job(args: tuple[Job, str]) -> dict[str, Any]:
     from luminous_sim.eval.evaluator import EVAL_ENV, play
     from luminous_sim.eval.tracks import track_env
 
-    if "env" not in _CACHE:
-        _CACHE["env"] = LuminousEnv(**track_env("privileged", EVAL_ENV))
-    env = _CACHE["env"]
+    key = f"env {sorted(ENV_OVERRIDES.items())}"
+    if key not in _CACHE:  # the rgb track's agent is handed the frame's rgb only (below); the labels score it
+        _CACHE[key] = LuminousEnv(**track_env("privileged", {**EVAL_ENV, **ENV_OVERRIDES}))
+    env = _CACHE[key]
     parser = _CACHE.setdefault(job.parser, InstructionParser.load(Path(job.parser)) if job.parser else default_parser())
     truth = _truth(job)
     settings = AgentSettings(use_steps=job.variant != "no-steps", given_task=truth if job.variant == "given" else None)
-    agent = ModularAgent(300, 300, parser=parser, settings=settings)
+    perception = None
+    if job.track == "rgb":
+        import torch
+
+        from luminous_sim.agents import PerceptionScores, default_perception
+
+        torch.set_num_threads(1)  # one worker a core
+
+        perception = default_perception()
+        scores = PerceptionScores()
+    agent = ModularAgent(300, 300, parser=parser, settings=settings, perception=perception)
     acting = [0.0, 0]
     act = agent.act
 
     def timed(observation: dict[str, Any], info: dict[str, Any]) -> Any:
+        if perception is not None:
+            if acting[1] % SCORED_EVERY == 0:
+                types, depth = perception.predict(observation["rgb"])
+                scores.add(_room_type(job), types, observation["instance_types"], depth, observation["depth"][..., 0])
+            observation = {k: v for k, v in observation.items() if k in ("rgb", "instruction")}
         t = time.process_time()
         try:
             return act(observation, info)
@@ -115,6 +141,8 @@ def play_job(args: tuple[Job, str]) -> dict[str, Any]:
     row = {"job": asdict(job), "outcome": outcome.to_dict(), "diagnosis": agent.diagnosis() if outcome.drawn else {},
            "truth": truth, "seconds": round(time.perf_counter() - start, 2),
            "act_cpu_s": round(acting[0], 3), "acts": acting[1]}
+    if perception is not None:
+        row["perception"] = scores.to_counts()
     write_atomic(path, json.dumps(row, indent=1) + "\n")
     return row
 
@@ -125,6 +153,29 @@ def _truth(job: Job) -> dict[str, Any]:
         return {"task_type": data["task_type"], "pddl_params": data["pddl_params"]}
     entry = benchmark_entry(job.split, job.index)
     return {"task_type": entry.task_type, "pddl_params": dict(entry.pddl_params)}
+
+
+def _room_type(job: Job) -> str:
+    if job.trial:
+        from luminous_sim.rooms import scene_room_type
+
+        data = json.loads((Path(job.trial) / "traj_data.json").read_text())
+        return scene_room_type(int(data["scene"]["floor_plan"].removeprefix("FloorPlan")))
+    return benchmark_entry(job.split, job.index).room_type
+
+
+def agent_frame_scores(results: dict[tuple[str, str], list[dict[str, Any]]]) -> dict[str, Any]:
+    """Perception's scores on the rgb-track agent's own frames (the sampled ones), per split and room type."""
+    from luminous_sim.agents import PerceptionScores
+
+    out: dict[str, Any] = {}
+    for (split, _), rows in sorted(results.items()):
+        scores = PerceptionScores()
+        for row in rows:
+            scores.add_counts(row.get("perception", {}))
+        if scores.rooms:
+            out[split] = scores.summary()
+    return out
 
 
 def _sample(split: str, per_type: int) -> list[int]:
@@ -337,6 +388,8 @@ def main() -> int:
     parser.add_argument("--variants", nargs="+", default=list(VARIANTS), choices=VARIANTS)
     parser.add_argument("--ablation-seeds", type=int, nargs="+", default=[0],
                         help="the seeds the ablations run with (default 0)")
+    parser.add_argument("--track", choices=("privileged", "rgb"), default="privileged",
+                        help="privileged: the simulator's depth and segmentation; rgb: predicted from RGB")
     parser.add_argument("--workers", type=int, default=2)
     parser.add_argument("--out", type=Path, required=True)
     args = parser.parse_args()
@@ -365,7 +418,8 @@ def main() -> int:
     for seed in sorted(set(args.seeds) | set(args.ablation_seeds)):
         for variant in args.variants:
             if seed in (args.seeds if variant == "parsed" else args.ablation_seeds):
-                jobs += [Job(split, i, variant, seed, trial, parser_file(seed)) for split, i, trial in places]
+                jobs += [Job(split, i, variant, seed, trial, parser_file(seed), args.track)
+                         for split, i, trial in places]
     print(f"{len(jobs)} episodes: {len(places)} entries x variants x seeds; CPU {_cpu()}, "
           f"{os.cpu_count()} cores, load {os.getloadavg()[0]:.1f}", file=sys.stderr)
     start = time.perf_counter()
@@ -384,18 +438,22 @@ def main() -> int:
                               "episode_s_median": float(np.median([r["seconds"] for v in results.values()
                                                                    for r in v])),
                               "act_ms_per_step": _act_ms(results),
-                              "tables": {}, "differences": {}}
+                              "track": args.track, "tables": {}, "differences": {}}
     text = []
     for variant in args.variants:
         seeds = args.seeds if variant == "parsed" else args.ablation_seeds
         t, summary = table(results, splits, variant, seeds)
         report["tables"][variant] = summary
-        text.append(f"\n## {variant} (privileged track, seeds {seeds})\n\n{t}")
+        text.append(f"\n## {variant} ({args.track} track, seeds {seeds})\n\n{t}")
         for split in splits:
             text.append(breakdown(results, split, variant))
         d, diff = differences(results, [("S", "S+")], variant)
         report["differences"][variant] = diff
         text.append(d)
+    if args.track == "rgb":
+        report["agent_frames"] = agent_frame_scores(results)
+        text.append("\n\nPerception on the agent's own frames (every fifth), per split and room type:\n"
+                    + json.dumps(report["agent_frames"], indent=1))
     text.append(paper_rows())
     print("".join(text))
     write_atomic(args.out / "report.json", json.dumps(report, indent=1) + "\n")

@@ -3,7 +3,10 @@
 each: the instruction parser (`InstructionParser`; `default_parser` ships trained on ALFRED's train
 annotations, `train_parser` makes it again), the camera (`Intrinsics`, `unproject`), its own pose (`OwnPose`),
 the semantic map (`SemanticMap`), A* over that map (`plan_path`), the search priors (`SearchPriors`) and the
-task type's subgoals (`subgoals`). Torch loads only when a parser is used.
+task type's subgoals (`subgoals`). In the rgb track (`modular_rgb`) depth and object types come from RGB
+(`Perception`: a small U-Net trained on the simulator's labels by `train_perception`; `default_perception` is
+the one `LUMINOUS_PERCEPTION` names) and instances from them (`InstanceTracker`); `PerceptionScores` measures
+it. Torch loads only when a parser or a perception network is used.
 
 Typical use::
 

@@ -472,9 +472,13 @@ def modular(context: Any) -> ModularAgent:
 
 def modular_rgb(context: Any) -> ModularAgent:
     """The evaluation's factory for the rgb track (`luminous eval --policy luminous_sim.agents:modular_rgb`): depth
-    and types predicted from RGB by the shipped `Perception`, instances tracked from them."""
+    and types predicted from RGB by `default_perception` (`LUMINOUS_PERCEPTION`'s checkpoint), instances tracked
+    from them."""
+    import torch
+
     from luminous_sim.agents.perception import default_perception
 
+    torch.set_num_threads(1)  # the agent's own process, one an evaluation worker: a thread a core
     obs = context.config.observations
     return ModularAgent(obs.width, obs.height, perception=default_perception())
 

@@ -9,10 +9,7 @@ model answers both ways it is asked."""
 
 from __future__ import annotations
 
-import io
-import os
 import random
-import tempfile
 from collections import Counter
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field
@@ -24,6 +21,7 @@ import torch
 from torch import nn
 
 from luminous_sim.agents.annotations import SLOTS, Annotated, allowed, held_apart, read_annotations
+from luminous_sim.agents.checkpoints import load_checkpoint, save_checkpoint
 from luminous_sim.agents.mentions import Mention, mentions
 from luminous_sim.agents.parser_model import PAD, SEP, UNK, ParserNet, ParserShape
 from luminous_sim.agents.swaps import receptacles, swap_parent
@@ -199,19 +197,9 @@ class InstructionParser:
 
     def save(self, path: Path) -> None:
         """Write the checkpoint atomically (the same parser, the same bytes)."""
-        payload = {"format": FORMAT, "vocab": self.vocab, "answers": self.answers,
-                   "shape": self.net.shape.to_dict(), "model": self.net.state_dict(), "record": self.record}
-        buffer = io.BytesIO()
-        torch.save(payload, buffer)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-        try:
-            with os.fdopen(fd, "wb") as fh:
-                fh.write(buffer.getvalue())
-            os.replace(tmp, path)
-        except BaseException:
-            Path(tmp).unlink(missing_ok=True)
-            raise
+        payload = {"format": FORMAT, "vocab": self.vocab, "answers": self.answers, "shape": self.net.shape.to_dict(),
+                   "model": self.net.state_dict(), "record": self.record}
+        save_checkpoint(payload, path)
 
     @classmethod
     def load(cls, path: Path) -> InstructionParser:
@@ -220,16 +208,7 @@ class InstructionParser:
         Raises:
             ParserError: missing, unreadable, or not a parser checkpoint.
         """
-        from luminous_sim.language.speaker.checkpoint import torch_reason
-
-        if not path.is_file():
-            raise ParserError(f"{path}: no such parser checkpoint (luminous agents train-parser writes one)")
-        try:
-            data = torch.load(path, map_location="cpu", weights_only=True)
-        except Exception as exc:  # torch's unpickler raises any type on foreign bytes
-            raise ParserError(f"{path}: not a readable parser checkpoint ({torch_reason(exc)})") from None
-        if not isinstance(data, dict) or data.get("format") != FORMAT:
-            raise ParserError(f"{path}: not an instruction parser checkpoint (expected format {FORMAT})")
+        data = load_checkpoint(path, FORMAT, "parser", "luminous agents train-parser", ParserError)
         try:
             shape = data["shape"]
             net = ParserNet(ParserShape(shape["words"], tuple(shape["answers"]), shape.get("pointers", 0),

@@ -1,27 +1,29 @@
 """Learned depth and segmentation for the `rgb` track (`Perception`): an RGB frame to per-pixel object types
 (the env's `instance_types` coding) and depth in metres, by the `perception_net` U-Net trained on the
-simulator's own labels (`train_perception`, `luminous agents train-perception`). The checkpoint ships in the
-package (`default_perception`); it records the data manifest digest and the command that made it."""
+simulator's own labels (`train_perception`, `luminous agents train-perception`). A checkpoint records the
+data manifest digest and the command that made it. `default_perception` is the checkpoint named by
+`LUMINOUS_PERCEPTION`, else the one shipped in the package (none ships yet: docs/perception.md)."""
 
 from __future__ import annotations
 
-import io
 import os
-import tempfile
 from pathlib import Path
 from typing import Any
 
 import cv2
 import numpy as np
 import torch
-from torch.nn import functional as F
 
+from luminous_sim.agents.checkpoints import load_checkpoint, save_checkpoint
 from luminous_sim.agents.perception_net import PerceptionNet, PerceptionShape
 from luminous_sim.errors import LuminousError
 
 FORMAT = "luminous-perception-net/1"
 PERCEPTION_FILE = Path(__file__).parent / "data" / "perception.pt"
-"""The shipped checkpoint (package data)."""
+"""Where the shipped checkpoint lives (package data) once one ships."""
+PERCEPTION_VAR = "LUMINOUS_PERCEPTION"
+"""The environment variable naming a perception checkpoint for `default_perception` (and so `modular_rgb`
+under `luminous eval`, whose agent runs in a child process)."""
 MIN_DEPTH, MAX_DEPTH = 0.05, 15.0
 """The depths the network predicts between (metres; the log-depth head is clipped to them)."""
 
@@ -66,27 +68,17 @@ class Perception:
         x = torch.from_numpy(np.stack([to_input(f, self.side) for f in frames]))
         with torch.no_grad():
             logits, log_depth = self.net(x)
-            logits = F.interpolate(logits, size=(h, w), mode="bilinear", align_corners=False)
-            depth = F.interpolate(log_depth[:, None], size=(h, w), mode="bilinear", align_corners=False)[:, 0]
-        depth = depth.clamp(np.log(MIN_DEPTH), np.log(MAX_DEPTH)).exp()
-        return logits.argmax(1).numpy().astype(np.int32), depth.numpy().astype(np.float32)
+        # each pixel the type of the network's pixel it falls in, and depth interpolated between them
+        small = logits.argmax(1).numpy().astype(np.int32)
+        near = np.clip(log_depth.numpy(), np.log(MIN_DEPTH), np.log(MAX_DEPTH))
+        types = np.stack([cv2.resize(t, (w, h), interpolation=cv2.INTER_NEAREST) for t in small])
+        depth = np.stack([np.exp(cv2.resize(d, (w, h), interpolation=cv2.INTER_LINEAR)) for d in near])
+        return types.astype(np.int32), depth.astype(np.float32)
 
     def save(self, path: Path) -> None:
         """Write the checkpoint atomically (the same network, the same bytes)."""
-        payload = {"format": FORMAT, "shape": self.net.shape.to_dict(), "model": self.net.state_dict(),
-                   "record": self.record}
-        buffer = io.BytesIO()
-        torch.save(payload, buffer)
-        path = Path(path)
-        path.parent.mkdir(parents=True, exist_ok=True)
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-        try:
-            with os.fdopen(fd, "wb") as fh:
-                fh.write(buffer.getvalue())
-            os.replace(tmp, path)
-        except BaseException:
-            Path(tmp).unlink(missing_ok=True)
-            raise
+        save_checkpoint({"format": FORMAT, "shape": self.net.shape.to_dict(), "model": self.net.state_dict(),
+                         "record": self.record}, path)
 
     @classmethod
     def load(cls, path: Path) -> Perception:
@@ -95,22 +87,11 @@ class Perception:
         Raises:
             PerceptionError: missing, unreadable, or not a perception checkpoint.
         """
-        from luminous_sim.language.speaker.checkpoint import torch_reason
-
-        path = Path(path)
-        if not path.is_file():
-            raise PerceptionError(f"{path}: no such perception checkpoint (luminous agents train-perception "
-                                  "writes one)")
-        try:
-            data = torch.load(path, map_location="cpu", weights_only=True)
-        except Exception as exc:  # torch's unpickler raises any type on foreign bytes
-            raise PerceptionError(f"{path}: not a readable perception checkpoint ({torch_reason(exc)})") from None
-        if not isinstance(data, dict) or data.get("format") != FORMAT:
-            raise PerceptionError(f"{path}: not a perception checkpoint (expected format {FORMAT})")
+        data = load_checkpoint(path, FORMAT, "perception", "luminous agents train-perception", PerceptionError)
         try:
             shape = data["shape"]
             net = PerceptionNet(PerceptionShape(int(shape["side"]), tuple(int(c) for c in shape["channels"]),
-                                                int(shape["classes"])))
+                                                int(shape["classes"]), bool(shape.get("coords", False))))
             net.load_state_dict(data["model"])
             return cls(net, dict(data["record"]))
         except (KeyError, TypeError, ValueError, RuntimeError) as exc:  # RuntimeError: weights of other shapes
@@ -118,12 +99,21 @@ class Perception:
                                   f"({type(exc).__name__}: {str(exc)[:120]})") from None
 
 
-_DEFAULT: Perception | None = None
+_DEFAULT: dict[str, Perception] = {}
 
 
 def default_perception() -> Perception:
-    """The shipped perception network (loaded once)."""
-    global _DEFAULT
-    if _DEFAULT is None:
-        _DEFAULT = Perception.load(PERCEPTION_FILE)
-    return _DEFAULT
+    """The checkpoint `LUMINOUS_PERCEPTION` names, else the shipped one (each loaded once).
+
+    Raises:
+        PerceptionError: the named checkpoint cannot be read, or none is named and none ships.
+    """
+    named = os.environ.get(PERCEPTION_VAR, "")
+    path = Path(named) if named else PERCEPTION_FILE
+    if not named and not path.is_file():
+        raise PerceptionError(f"no perception network ships with this version yet: train one with `luminous agents "
+                              f"train-perception` (docs/perception.md) and name it in {PERCEPTION_VAR}, or pass "
+                              "ModularAgent(..., perception=Perception.load(path))")
+    if str(path) not in _DEFAULT:
+        _DEFAULT[str(path)] = Perception.load(path)
+    return _DEFAULT[str(path)]

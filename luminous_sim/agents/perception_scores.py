@@ -54,6 +54,22 @@ class PerceptionScores:
         room.abs_rel += float((np.abs(d[valid] - t[valid]) / t[valid]).sum())
         room.pixels += int(valid.sum())
 
+    def to_counts(self) -> dict[str, dict[str, Any]]:
+        """What has been accumulated, as JSON (per room type), for `add_counts` to merge elsewhere."""
+        return {name: {"intersection": r.intersection.tolist(), "union": r.union.tolist(), "truth": r.truth.tolist(),
+                       "abs_rel": r.abs_rel, "pixels": r.pixels, "frames": r.frames} for name, r in self.rooms.items()}
+
+    def add_counts(self, counts: dict[str, dict[str, Any]]) -> None:
+        """Merge counts of `to_counts` (another run's frames) into these."""
+        for name, c in counts.items():
+            room = self.rooms.setdefault(name, _Room())
+            room.intersection += np.asarray(c["intersection"], np.int64)
+            room.union += np.asarray(c["union"], np.int64)
+            room.truth += np.asarray(c["truth"], np.int64)
+            room.abs_rel += float(c["abs_rel"])
+            room.pixels += int(c["pixels"])
+            room.frames += int(c["frames"])
+
     @staticmethod
     def _summary(room: _Room) -> dict[str, float | int]:
         named = [c for c in TASK_NAMED if room.truth[c] > 0]

@@ -119,6 +119,8 @@ def _register_perception(actions: argparse._SubParsersAction) -> None:
                    help="generated episodes (default 100); with --split, entries spread evenly over the split")
     q.add_argument("--trials", type=Path, action="append", default=[], metavar="BUILD",
                    help="a `luminous dataset build` folder whose built trials are rendered too (repeatable)")
+    q.add_argument("--trial-stride", type=int_range(1, MAX_BUILD_JOBS), default=1, metavar="K",
+                   help="every K-th built trial of each --trials build, in its manifest's order (default 1: all)")
     q.add_argument("--split", choices=list(PLUS_SPLITS), default=None,
                    help="an evaluation dataset: COUNT entries of this frozen split (U+: structures never trained on)")
     q.add_argument("--seed", type=int_range(0, 2**31 - 1), default=0, help="dataset seed (default 0)")
@@ -143,7 +145,7 @@ def _perception(args: argparse.Namespace) -> int:
         entries = sorted({min(size - 1, (k * size) // max(args.count, 1)) for k in range(min(args.count, size))})
         jobs = evaluation_jobs(args.split, entries, args.seed, args.size)
     else:
-        trials = [t for build in args.trials for t in built_trials(build)]
+        trials = [t for build in args.trials for t in built_trials(build)[::args.trial_stride]]
         jobs = perception_jobs(args.seed, args.count, trials, args.size)
     with make_backend(args.backend, args.workers, args.address) as backend:
         report = build_perception(Path(args.out), jobs, backend, progress=not args.no_progress)

@@ -23,12 +23,13 @@ from luminous_sim.agents import (
     PerceptionError,
     PerceptionScores,
     PerceptionSettings,
+    default_perception,
     train_perception,
 )
 from luminous_sim.agents.instances import MIN_PIXELS
 from luminous_sim.agents.perception_net import CLASSES
 from luminous_sim.agents.perception_training import read_frames, score
-from luminous_sim.data import build_perception, evaluation_jobs, perception_jobs
+from luminous_sim.data import build_perception, evaluation_jobs, perception_jobs, read_manifest
 
 TINY = PerceptionSettings(seed=1, epochs=2, batch=8, side=32, channels=(4, 8, 8, 8, 8), threads=1)
 
@@ -64,8 +65,9 @@ def test_it_learns_depth_and_types_on_its_training_frames(data):
     trained = train_perception([data], settings)
     before, after = score(untrained.net, train)["all"], score(trained.net, train)["all"]
     assert after["depth_abs_rel"] < 0.5 * before["depth_abs_rel"], (before, after)
-    # at 32 px most objects are a pixel or two: the share of pixels typed right is what moves, not their IoU
-    assert after["pixel_accuracy"] > max(0.6, before["pixel_accuracy"] + 0.2), (before, after)
+    # untrained, the head's bias gives every pixel the commonest type: the share right is the floor's and walls'
+    assert after["pixel_accuracy"] > before["pixel_accuracy"] + 0.05, (before, after)
+    assert after["miou"] > before["miou"] + 0.02, (before, after)  # at 32 px most objects are a pixel or two
 
 
 def test_checkpoints_read_back_and_bad_ones_are_refused(data, tmp_path):
@@ -112,6 +114,10 @@ def test_scores_count_intersections_and_unions_over_frames():
     assert summary["Kitchen"] == {"frames": 2, "types": 1, "miou": round(4 / 12, 4), "pixel_accuracy": 0.75,
                                   "depth_abs_rel": 0.1}
     assert summary["all"]["miou"] == summary["Kitchen"]["miou"]
+    merged = PerceptionScores()
+    merged.add_counts(json.loads(json.dumps(scores.to_counts())))
+    merged.add_counts(scores.to_counts())
+    assert merged.summary()["Kitchen"] == {**summary["Kitchen"], "frames": 4}
 
 
 def test_the_tracker_keeps_one_id_per_object_from_frame_to_frame():
@@ -144,3 +150,31 @@ def test_the_tracker_keeps_one_id_per_object_from_frame_to_frame():
         assert len(set(first_id.values())) >= 0.9 * len(first_id)  # distinct objects, distinct ids
     finally:
         env.close()
+
+
+def test_the_cli_trains_and_scores_and_modular_rgb_plays_with_the_network_named(data, tmp_path, capsys,
+                                                                               monkeypatch):
+    """`luminous agents train-perception` writes a checkpoint recording its data and command; `score-perception`
+    scores every frame; `luminous eval --policy luminous_sim.agents:modular_rgb` (ALFRED's rules: rgb only)
+    plays an entry in the sandbox's child process with the network `LUMINOUS_PERCEPTION` names (`modular` itself
+    is refused there: tests/agents/test_modular.py); with none named and none shipped, the error says how."""
+    from luminous_sim.agents.perception import PERCEPTION_FILE, PERCEPTION_VAR
+    from luminous_sim.cli.main import main
+    from luminous_sim.eval import evaluate
+
+    out = tmp_path / "cli.pt"
+    assert main(["agents", "train-perception", "--data", str(data), "--out", str(out), "--epochs", "1",
+                 "--side", "32", "--threads", "1", "--max-frames", "16", "--quiet"]) == 0
+    record = json.loads(capsys.readouterr().out)
+    assert record["frames"]["train"] <= 16 and record["command"].startswith("luminous agents train-perception")
+    assert record["data"][0]["manifest_sha256"] == hashlib.sha256((data / "manifest.jsonl").read_bytes()).hexdigest()
+    assert main(["agents", "score-perception", "--data", str(data), "--perception", str(out)]) == 0
+    assert json.loads(capsys.readouterr().out)["all"]["frames"] == sum(r["frames"] for r in read_manifest(data))
+    monkeypatch.setenv(PERCEPTION_VAR, str(out))
+    assert default_perception().side == 32
+    (outcome,) = evaluate("luminous_sim.agents:modular_rgb", "U+", [2], env_kwargs={"max_steps": 25}).outcomes
+    assert outcome.drawn and outcome.steps > 0
+    monkeypatch.delenv(PERCEPTION_VAR)
+    if not PERCEPTION_FILE.is_file():
+        with pytest.raises(PerceptionError, match="train-perception"):
+            default_perception()

@@ -79,3 +79,25 @@ def test_s_is_built_from_an_alfred_split_where_missing_and_sampled_per_type(benc
     bench.build_s(split, tmp_path / "S", 1)  # resumes: nothing to do
     ((index, name, trial),) = bench._s_sample(tmp_path / "S", 1)
     assert (index, name) == (0, "vs") and Path(trial, "traj_data.json").is_file()
+
+
+def test_an_rgb_track_job_hands_the_agent_rgb_only_and_scores_its_frames(bench, tmp_path, monkeypatch):
+    from luminous_sim.agents import PerceptionSettings, train_perception
+    from luminous_sim.agents.perception import PERCEPTION_VAR
+    from luminous_sim.data import build_perception, perception_jobs
+
+    build_perception(tmp_path / "p", perception_jobs(seed=5, generated=1, size=64))
+    network = tmp_path / "net.pt"
+    train_perception([tmp_path / "p"], PerceptionSettings(epochs=1, side=32, channels=(4, 8, 8, 8, 8),
+                                                          threads=1)).save(network)
+    monkeypatch.setenv(PERCEPTION_VAR, str(network))
+    monkeypatch.setattr(bench, "ENV_OVERRIDES", {"max_steps": 30})
+    job = bench.Job("U+", 2, "given", 0, track="rgb")
+    row = bench.play_job((job, str(tmp_path)))
+    assert bench._row_path(tmp_path, job).name == "U+-2-given-0-rgb.json"
+    (room,) = row["perception"]
+    assert room == benchmark_entry("U+", 2).room_type
+    frames = row["perception"][room]["frames"]
+    assert frames == (row["acts"] + bench.SCORED_EVERY - 1) // bench.SCORED_EVERY
+    scores = bench.agent_frame_scores({("U+", "given"): [row]})
+    assert scores["U+"][room]["frames"] == frames and 0 <= scores["U+"]["all"]["miou"] <= 1

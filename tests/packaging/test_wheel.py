@@ -68,7 +68,8 @@ def test_the_wheel_holds_each_kind_of_data_by_name(wheel):
         files = [p for p in folder.rglob("*") if p.is_file()]
         assert files and all(rel(p) in names for p in files)
     for path in ("luminous_sim/benchmark/data/S+.jsonl", "luminous_sim/benchmark/data/U+.jsonl",
-                 "luminous_sim/layouts/data/learned_layouts.pt", "luminous_sim/env/specs/alfred.toml"):
+                 "luminous_sim/layouts/data/learned_layouts.pt", "luminous_sim/env/specs/alfred.toml",
+                 "luminous_sim/agents/data/instruction_parser.pt"):
         assert path in names, path
     assert [p for p in names if p.endswith(".pt")], "the shipped checkpoints"
 
