@@ -59,6 +59,10 @@ class PerceptionDataError(LuminousError):
     """A perception dataset that cannot be made or read: bad options, a refused trial, a broken shard."""
 
 
+class EvaluationStructure(PerceptionDataError):
+    """A training job's episode is in a U+ or U+test structure (recorded as the failed job's `cause`)."""
+
+
 @dataclass(frozen=True)
 class PerceptionJob:
     """One shard: generated episode `index` of the dataset `seed`, or the built trial `trial`."""
@@ -130,7 +134,7 @@ def render_frames(job: PerceptionJob, env: Any = None) -> tuple[list[dict[str, A
     """The job's frames and what they are of (scene key, structure, room type, task type).
 
     Raises:
-        PerceptionDataError: the trial is in an evaluation-only structure (`EVALUATION_ONLY`).
+        EvaluationStructure: a training job's episode is in an evaluation-only structure (`EVALUATION_ONLY`).
     """
     own = env is None
     env = env or _env(job.size)
@@ -140,7 +144,7 @@ def render_frames(job: PerceptionJob, env: Any = None) -> tuple[list[dict[str, A
         episode = env.episode
         scene = episode.scene
         if not job.split and scene.room.name in EVALUATION_ONLY:
-            raise PerceptionDataError(f"{job.trial or job.key}: its structure {scene.room.name} is in U+ or "
+            raise EvaluationStructure(f"{job.trial or job.key}: its structure {scene.room.name} is in U+ or "
                                       "U+test, whose structures never feed training")
         about = {"scene_key": scene.content_key(), "structure": scene.room.name,
                  "room_type": scene.room.room_type, "task_type": episode.goal.task_type}
@@ -233,12 +237,12 @@ def build_perception(out: Path, jobs: Sequence[PerceptionJob], backend: Backend 
     """
     if len(jobs) > MAX_BUILD_JOBS:
         raise PerceptionDataError(f"{len(jobs)} perception jobs: at most {MAX_BUILD_JOBS}")
-    _evaluation(jobs)
+    evaluation = _evaluation(jobs)
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
     _check_same_options(out, jobs)
     header = {"format": FORMAT, "seed": jobs[0].seed if jobs else 0, "size": jobs[0].size if jobs else 300,
-              "evaluation": _evaluation(jobs), "jobs": len(jobs),
+              "evaluation": evaluation, "jobs": len(jobs),
               "generated": sum(not j.trial and not j.split for j in jobs),
               "trials": sum(bool(j.trial) for j in jobs), "entries": [j.entry for j in jobs if j.split]}
     write_atomic(out / "perception.json", json.dumps({**header, "complete": False}, indent=1, sort_keys=True) + "\n")

@@ -94,9 +94,9 @@ def test_a_shard_altered_after_the_build_is_refused_on_read(dataset, tmp_path):
 def test_uplus_trials_are_refused_and_evaluation_frames_are_caught_by_scene_key(uplus_build, dataset, tmp_path):
     trial = built_trials(uplus_build)[0]
     refused = build_perception(tmp_path / "t", perception_jobs(seed=0, generated=0, trials=[trial], size=SIZE))
-    assert refused.failed == {"PerceptionDataError": 1} and refused.made == 1
+    assert refused.failed == {"EvaluationStructure": 1} and refused.made == 1  # told apart by its class
     record = json.loads((tmp_path / "t" / "manifest.jsonl").read_text())
-    assert "structures never feed training" in record["error"] and record["trial"] is None
+    assert record["cause"] == "EvaluationStructure" and record["trial"] is None
     assert leaks(dataset, [uplus_build]) == []
     # U+'s entry 0 rendered as an evaluation dataset (by the CLI): the build's trial 0 is the same scene
     out = tmp_path / "eval"
