@@ -5,7 +5,7 @@ files a person looks at (frames, video, top-down path)."""
 from __future__ import annotations
 
 import json
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -64,6 +64,9 @@ class EpisodeRecord:
     instructions: list[Any]
     """`Instructions`: first the one written to `instructions.txt`, then `extra_annotations` more, each
     from its own random stream (so the written files do not depend on how many are asked for)."""
+    places: Mapping[str, str] | None = None
+    """With `places=True`: each fixed receptacle's place to stand at the start (`world.receptacle_places`), as
+    ALFRED's `loc|x|z|rotation|horizon` (what ALFWorld's problem needs, `text.alfworld_problem`)."""
 
 
 def poses_along(traj: Trajectory, start: AgentPose) -> list[AgentPose]:
@@ -103,14 +106,14 @@ def prepared_world(scene: Scene, task_type: str, catalog: Catalog | None = None)
 
 
 def run_spec(spec: EpisodeSpec, seed: int, out_dir: Path | None = None, *, record_frames: bool = True,
-             extra_annotations: int = 2) -> tuple[EpisodeResult, EpisodeRecord]:
+             extra_annotations: int = 2, places: bool = False) -> tuple[EpisodeResult, EpisodeRecord]:
     """Solve an episode's task with the oracle from the episode's initial state (`episodes.prepare`: ALFRED's
     set-up and the start), evaluate it, and write the same files as `run_episode`.
 
     Args:
         spec: the episode (a split entry's `episodes.entry_spec`, say); its goal is a task.
         seed: seeds the instructions' wording.
-        out_dir, record_frames, extra_annotations: as for `run_episode`.
+        out_dir, record_frames, extra_annotations, places: as for `run_episode`.
 
     Returns:
         `(result, record)`, as `run_episode`.
@@ -122,18 +125,18 @@ def run_spec(spec: EpisodeSpec, seed: int, out_dir: Path | None = None, *, recor
     task = spec.task
     world = prepare(World(spec.scene), spec)
     try:
-        start, start_state = world.agent, world.view().state
+        start, start_state, at = world.agent, world.view().state, _places(world, places)
         traj = Oracle(world, record_frames=record_frames).run(task.goal, names=dict(task.names) or None)
         rng = np.random.default_rng(np.random.SeedSequence([seed, 11]))
         return _conclude(world, spec.scene, task, traj, _Run(seed, rng, start, start_state, out_dir,
-                                                             extra_annotations))
+                                                             extra_annotations, places=at))
     finally:
         world.close()
 
 
 def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = None,
                 record_frames: bool = True, extra_annotations: int = 2,
-                cross_room: bool = False) -> tuple[EpisodeResult, EpisodeRecord]:
+                cross_room: bool = False, places: bool = False) -> tuple[EpisodeResult, EpisodeRecord]:
     """Sample a `task_type` task in `scene`, solve it with the oracle, evaluate it, and write the files.
 
     Args:
@@ -146,6 +149,7 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
         extra_annotations: instructions the record holds beyond the one written, each from its own stream.
         cross_room: (a house only) the task's object and its receptacle (or lamp) are in different rooms
             (`tasks.rooms_apart`).
+        places: record each fixed receptacle's place to stand at the start (`EpisodeRecord.places`).
 
     Returns:
         `(result, record)`: the `EpisodeResult`, and the `EpisodeRecord` holding the task, the trajectory
@@ -165,7 +169,7 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
         keep = rooms_apart(scene, world.view().state)
     try:
         task = draw_task(scene, world.view(), task_type, rng, keep=keep)
-        start, start_state = world.agent, world.view().state
+        start, start_state, at = world.agent, world.view().state, _places(world, places)
         traj = Oracle(world, record_frames=record_frames).run(task.goal)
         for _ in range(TASK_REDRAWS):  # ALFRED's generator also drops tasks its expert cannot do
             if traj.success or not REDRAW_ON.intersection(traj.failure_codes):
@@ -180,9 +184,10 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
                 break
             world.close()
             world, task = fresh, redrawn
-            start_state = world.view().state
+            start_state, at = world.view().state, _places(world, places)
             traj = Oracle(world, record_frames=record_frames).run(task.goal)
-        return _conclude(world, scene, task, traj, _Run(seed, rng, start, start_state, out_dir, extra_annotations))
+        return _conclude(world, scene, task, traj, _Run(seed, rng, start, start_state, out_dir, extra_annotations,
+                                                        places=at))
     finally:
         world.close()
 
@@ -190,7 +195,7 @@ def run_episode(scene: Scene, task_type: str, seed: int, out_dir: Path | None = 
 def run_task(scene: Scene, task: TaskInstance, seed: int, out_dir: Path | None = None, *,
              start: AgentPoseSpec | None = None, initial: Expr | None = None,
              script: Sequence[HighLevelStep | LowLevelStep] | None = None, record_frames: bool = True,
-             return_record: bool = False, extra_annotations: int = 2):
+             return_record: bool = False, extra_annotations: int = 2, places: bool = False):
     """Solve a given task in `scene` (no redraws), evaluate it, and write the same files as `run_episode`.
 
     Args:
@@ -204,7 +209,7 @@ def run_task(scene: Scene, task: TaskInstance, seed: int, out_dir: Path | None =
             isToggled, isDirty, isFilled, isHot, isCool) are set, then every literal is checked.
         script: steps to follow instead of the oracle's plan (a CDF's `execution`); the goal is judged
             after them.
-        record_frames, extra_annotations: as for `run_episode`.
+        record_frames, extra_annotations, places: as for `run_episode`.
         return_record: return the `EpisodeRecord` too.
 
     Returns:
@@ -221,7 +226,7 @@ def run_task(scene: Scene, task: TaskInstance, seed: int, out_dir: Path | None =
     try:
         check_initial(world.view().state, initial, names)
         notes = _place_agent(world, start)
-        start_pose, start_state = world.agent, world.view().state
+        start_pose, start_state, at = world.agent, world.view().state, _places(world, places)
         if script is not None:
             oracle = ScriptOracle(world, record_frames=record_frames)
             traj = oracle.execute(script_from_cdf(script, names, start_state))
@@ -230,7 +235,7 @@ def run_task(scene: Scene, task: TaskInstance, seed: int, out_dir: Path | None =
         rng = np.random.default_rng(np.random.SeedSequence([seed, 11]))
         extra = extra_annotations if return_record else 0
         result, record = _conclude(world, scene, task, traj, _Run(seed, rng, start_pose, start_state, out_dir,
-                                                                  extra, notes))
+                                                                  extra, notes, at))
     finally:
         world.close()
     return (result, record) if return_record else result
@@ -247,6 +252,7 @@ class _Run:
     out_dir: Path | None
     extra_annotations: int
     notes: tuple[str, ...] = ()
+    places: Mapping[str, str] | None = None
 
 
 def _conclude(world, scene: Scene, task, traj: Trajectory, run: _Run) -> tuple[EpisodeResult, EpisodeRecord]:
@@ -273,7 +279,17 @@ def _conclude(world, scene: Scene, task, traj: Trajectory, run: _Run) -> tuple[E
     result = EpisodeResult(task.task_type, to_sexpr(task.goal), traj.success, (done, total), len(traj.low_actions),
                            traj.planning_seconds, Path(run.out_dir) if run.out_dir else None, first,
                            failures[0].code if failures else None, failures, run.notes)
-    return result, EpisodeRecord(task, traj, run.start_state, texts)
+    return result, EpisodeRecord(task, traj, run.start_state, texts, run.places)
+
+
+def _places(world, wanted: bool) -> dict[str, str] | None:
+    """Each fixed receptacle's place to stand now (`world.receptacle_places`) as `loc|...` strings, when
+    wanted."""
+    if not wanted:
+        return None
+    from luminous_sim.world import receptacle_places
+
+    return {oid: pose.location_string() for oid, pose in receptacle_places(world).items()}
 
 
 def _place_agent(world, start: AgentPoseSpec | None) -> tuple[str, ...]:

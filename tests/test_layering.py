@@ -13,7 +13,7 @@ LAYER = {
     "errors": 0, "lazy": 0, "limits": 0, "resources": 0, "vocab": 0, "assets": 0, "cdf": 0,
     "scene": 1, "rooms": 1, "cssg": 1, "states": 1,
     "world": 2,
-    "tasks": 3, "planning": 3, "language": 3, "splits": 3,
+    "tasks": 3, "planning": 3, "language": 3, "splits": 3, "text": 3,
     "env": 4, "benchmark": 4, "episodes": 4,
     "data": 5, "eval": 5, "export": 5, "thor": 5, "viewer": 5, "bc": 5, "cli": 5, "layouts": 5, "demo": 5, "episode": 5,
     "cdf_episode": 5, "agents": 5,

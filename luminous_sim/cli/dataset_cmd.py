@@ -71,6 +71,9 @@ def register(sub: argparse._SubParsersAction) -> None:
     b.add_argument("--no-frames", action="store_true",
                    help="no raw_images/ and no video (ALFRED's loaders need raw_images; for quick checks)")
     b.add_argument("--no-video", action="store_true", help="no video.mp4 beside the raw images")
+    b.add_argument("--no-alfworld", action="store_true",
+                   help="no initial_state.pddl (ALFWorld's problem of the trial, read by `alfworld-generate`) "
+                        "beside each traj_data.json")
     b.add_argument("--no-progress", action="store_true", help="no progress bar on stderr")
     b.add_argument("--speaker", type=Path, default=None, metavar="PATH",
                    help="a learned speaker's checkpoint (`luminous speaker train`): its instructions replace the "
@@ -175,7 +178,8 @@ def _build(args: argparse.Namespace) -> int:
         check_speaker(args.speaker, frames=not args.no_frames)
         speaker = str(args.speaker.resolve())
     human = args.from_alfred is not None and (args.language or ("templates" if speaker else "human")) == "human"
-    options = BuildOptions(frames=not args.no_frames, video=not args.no_video, speaker=speaker, human_language=human)
+    options = BuildOptions(frames=not args.no_frames, video=not args.no_video, speaker=speaker, human_language=human,
+                           alfworld=not args.no_alfworld)
     with make_backend(args.backend, args.workers, args.address) as backend:
         if args.split is not None:
             report = build_split(Path(args.out), args.split, args.count, backend, options,

@@ -78,7 +78,7 @@ class DesignJob:
             return failed("layout", f"{design.name}: {exc}")
         details["scene_seed"] = scene.seed
         result, record = run_task(scene, design_task(design, scene.seed), self.seed, record_frames=options.frames,
-                                  return_record=True, extra_annotations=ANNOTATIONS - 1)
+                                  return_record=True, extra_annotations=ANNOTATIONS - 1, places=options.alfworld)
         traj = record.trajectory
         details.update(goal=result.goal, low_actions=len(traj.low_actions), replans=traj.replans)
         if not result.success:

@@ -1,7 +1,8 @@
 """Export one solved episode in ALFRED's json_2.1.0 layout (spec section 4):
 `<task_type>-<object>-<mrecep>-<parent>-<scene_num>/<task_id>/` with `traj_data.json`, `raw_images/`
 (one JPEG per recorded frame), `pddl_states/problem_0.pddl` (the starting state and the goal, for our
-planner's domain `planning.symbolic.domain_text()`), optionally `video.mp4`, and a sidecar `luminous.json`
+planner's domain `planning.symbolic.domain_text()`), ALFWorld's problem `initial_state.pddl` when the record has
+its receptacles' places (`text.alfworld_problem`), optionally `video.mp4`, and a sidecar `luminous.json`
 with what ALFRED has no field for (task and goal, seed, the scene itself, evaluation, replans, package
 version), enough to regenerate the trajectory with `run_episode(Scene.from_json(sidecar["scene"]), task_type, seed)`.
 
@@ -36,6 +37,8 @@ from luminous_sim.vocab import abilities
 
 SIDECAR = "luminous.json"
 SIDECAR_FORMAT = "luminous-alfred-sidecar/1"
+ALFWORLD_PROBLEM = "initial_state.pddl"
+"""ALFWorld's PDDL problem of the trial (`text.alfworld_problem`), beside traj_data.json."""
 GRID = 0.25
 ALFRED_SUBGOALS = ("GotoLocation", "PickupObject", "PutObject", "CleanObject", "HeatObject", "CoolObject",
                    "ToggleObject", "SliceObject")
@@ -276,6 +279,24 @@ def alfred_traj_data(scene: Scene, record: EpisodeRecord, seed: int, task_id: st
     return data, [new_idx[h["high_idx"]] for h in ours]
 
 
+def _write_alfworld(trial: Path, data: Mapping[str, Any], record: EpisodeRecord) -> dict[str, Any]:
+    """Write ALFWorld's problem (`ALFWORLD_PROBLEM`) beside traj_data.json; what the sidecar says of it: the
+    PDDL identifier of each of our object ids, or why there is no problem."""
+    from luminous_sim.text import ProblemError, alfworld_problem
+    from luminous_sim.world import AgentPose
+
+    init = data["scene"]["init_action"]
+    start = AgentPose(init["x"], init["z"], init["rotation"], init["horizon"]).location_string()
+    assert record.places is not None
+    try:
+        problem = alfworld_problem(record.start_state, record.places, start, data["task_type"], data["pddl_params"],
+                                   name=f"plan_{data['task_id'].lower()}")
+    except ProblemError as exc:
+        return {"problem": None, "cause": str(exc)}
+    write_atomic(trial / ALFWORLD_PROBLEM, problem.text)
+    return {"problem": ALFWORLD_PROBLEM, "domain": "alfred (alfworld.info.ALFRED_PDDL_PATH)", "ids": dict(problem.ids)}
+
+
 def _jpeg(frame) -> bytes:
     from PIL import Image
 
@@ -308,6 +329,7 @@ def export_alfred(out_root: Path, scene: Scene, record: EpisodeRecord, seed: int
 
     problem = to_pddl_problem(record.start_state, record.task.goal, name=data["task_id"].lower())
     write_atomic(trial / "pddl_states" / "problem_0.pddl", problem)
+    alfworld = _write_alfworld(trial, data, record) if record.places is not None else None
     if video and traj.frames:
         write_video(traj.frames, trial / "video.mp4")
     sidecar = {
@@ -319,6 +341,7 @@ def export_alfred(out_root: Path, scene: Scene, record: EpisodeRecord, seed: int
                       "task['task_type'], seed)",
         "scene": json.loads(scene.to_json()),
         **({"language": language_note(human, data["turk_annotations"]["anns"])} if human is not None else {}),
+        **({"alfworld": alfworld} if alfworld is not None else {}),
         **(sidecar or {}),
     }
     write_atomic(trial / SIDECAR, json.dumps(sidecar, sort_keys=True, indent=1) + "\n")

@@ -100,6 +100,8 @@ class BuildOptions:
     """--from-alfred: each design's own human annotations in place of the templates (`data.alfred_language`)."""
     design_seed: int | None = None
     """--from-alfred: the seed of every design's scene (recorded, so that a rerun cannot mix two)."""
+    alfworld: bool = True
+    """Write ALFWorld's problem (`initial_state.pddl`) beside each traj_data.json (`--no-alfworld`: not)."""
 
     def settings(self) -> dict[str, Any]:
         extra: dict[str, Any] = {}
@@ -110,6 +112,7 @@ class BuildOptions:
         if self.design_seed is not None:
             extra.update(design_seed=self.design_seed, language="human" if self.human_language else "templates")
         return {"format": BUILD_FORMAT, "frames": self.frames, "video": self.video and self.frames,
+                "alfworld": self.alfworld,
                 "annotations": "the designs' own" if self.human_language else ANNOTATIONS, **extra}
 
 
@@ -201,7 +204,7 @@ class SplitJob(IndexedJob):
             return failed("version", _failure_cause(exc))
         assert made.start is not None, "a split entry has its start"
         result, record = run_spec(made, entry.task_seed, record_frames=options.frames,
-                                  extra_annotations=ANNOTATIONS - 1)
+                                  extra_annotations=ANNOTATIONS - 1, places=options.alfworld)
         traj = record.trajectory
         details.update(goal=result.goal, low_actions=len(traj.low_actions), replans=traj.replans)
         if not result.success:

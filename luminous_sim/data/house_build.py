@@ -64,13 +64,14 @@ class HouseJob(IndexedJob):
                 continue
             try:
                 result, record = run_episode(scene, self.task_type, seed, record_frames=options.frames,
-                                             extra_annotations=ANNOTATIONS - 1, cross_room=True)
+                                             extra_annotations=ANNOTATIONS - 1, cross_room=True,
+                                             places=options.alfworld)
                 break
             except TaskSamplingError:
                 details["cross_room"] = False
             try:
                 result, record = run_episode(scene, self.task_type, seed, record_frames=options.frames,
-                                             extra_annotations=ANNOTATIONS - 1)
+                                             extra_annotations=ANNOTATIONS - 1, places=options.alfworld)
                 break
             except TaskSamplingError as exc:
                 stage, why = "task", str(exc)

@@ -23,6 +23,7 @@ if TYPE_CHECKING:
     from luminous_sim.world.navigation import NavGrid
     from luminous_sim.world.physics_check import PhysicsReport, check_physics
     from luminous_sim.world.placement import Spot
+    from luminous_sim.world.poses import receptacle_places
     from luminous_sim.world.results import StepResult
     from luminous_sim.world.scene_builder import BuiltScene, build_scene
     from luminous_sim.world.view import LiveView, WorldView
@@ -39,6 +40,7 @@ _WHERE = {
     "NavGrid": "luminous_sim.world.navigation",
     "PhysicsReport": "luminous_sim.world.physics_check", "check_physics": "luminous_sim.world.physics_check",
     "Spot": "luminous_sim.world.placement",
+    "receptacle_places": "luminous_sim.world.poses",
     "StepResult": "luminous_sim.world.results",
     "BuiltScene": "luminous_sim.world.scene_builder", "build_scene": "luminous_sim.world.scene_builder",
     "LiveView": "luminous_sim.world.view", "WorldView": "luminous_sim.world.view",
@@ -66,6 +68,7 @@ __all__ = [
     "egocentric",
     "interaction_args",
     "mask_to_rle",
+    "receptacle_places",
     "rle_to_mask",
     "top_down",
 ]

@@ -98,3 +98,20 @@ def find_interaction_pose(world: World, object_id: str, limit: int = 80,
         world.invalidate_frame()
         if found is not None:
             world.keep_frame(seen[found])  # the agent walks there next: its frame need not be rendered again
+
+
+def receptacle_places(world: World) -> dict[str, AgentPose]:
+    """Each fixed receptacle's place to stand (ALFWorld's `receptacleAtLocation`): its interaction pose
+    (`find_interaction_pose`), else the nearest candidate facing it within reach when no pose sees it; a
+    receptacle with neither is left out."""
+    from luminous_sim.vocab import abilities
+
+    out = {}
+    for oid, o in sorted(world.interactions.state.objects.items()):
+        ab = abilities(o.object_type)
+        if not ab.receptacle or ab.pickupable:
+            continue
+        pose = find_interaction_pose(world, oid) or next(iter(candidate_poses(world, oid)), None)
+        if pose is not None:
+            out[oid] = pose
+    return out
