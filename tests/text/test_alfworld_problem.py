@@ -25,7 +25,8 @@ START = "loc|0|0|0|30"
 
 def room(fridge_open: bool = False) -> WorldState:
     return WorldState.of([
-        ObjectState(COUNTER, "CounterTop"), ObjectState(SAFE, "Safe"), ObjectState(FRIDGE, "Fridge", isOpen=fridge_open),
+        ObjectState(COUNTER, "CounterTop"), ObjectState(SAFE, "Safe"),
+        ObjectState(FRIDGE, "Fridge", isOpen=fridge_open),
         ObjectState(SINK, "Sink"), ObjectState(BASIN, "SinkBasin", parent=SINK),
         ObjectState(POT, "Pot", parent=COUNTER), ObjectState(POTATO, "Potato", parent=POT),
         ObjectState(APPLE, "Apple", parent=FRIDGE), ObjectState(LAMP, "FloorLamp")])
