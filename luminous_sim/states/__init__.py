@@ -19,6 +19,7 @@ from luminous_sim.states.effects import (
 )
 from luminous_sim.states.model import STATE_FIELDS, ObjectState, StateError, Temperature, WorldState
 from luminous_sim.states.rules import check, enclosing_closed, step
+from luminous_sim.states.scene_state import scene_state
 from luminous_sim.states.update import apply
 
 __all__ = [
@@ -40,5 +41,6 @@ __all__ = [
     "effects",
     "enclosing_closed",
     "rules",
+    "scene_state",
     "step",
 ]

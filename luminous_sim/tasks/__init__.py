@@ -58,7 +58,7 @@ from luminous_sim.tasks.sample import (
     sample_task,
     state_from_scene,
 )
-from luminous_sim.tasks.templates import TEMPLATES, task_description
+from luminous_sim.tasks.templates import TEMPLATES, alfred_description, task_description
 from luminous_sim.tasks.types import (
     TASK_TYPES,
     TaskType,
@@ -83,6 +83,7 @@ __all__ = [
     "TaskInstance",
     "TaskSamplingError",
     "TaskType",
+    "alfred_description",
     "alfred_dirty",
     "alfred_name_clash",
     "cdf_for_task",

@@ -94,11 +94,9 @@ def alfworld_problem(state: WorldState, places: Mapping[str, str], start: str, t
     for oid in raised:  # what is in a raised pot is in the pot
         for inner in state.contents(oid, recursive=True):
             holders[inner] = oid
-    open_tops = [r for r in fixed if not abilities(state[r].object_type).openable] or fixed
-    for oid in objects:
-        ab = abilities(state[oid].object_type)
-        if holders[oid] is None and (ab.pickupable or ab.toggleable) and open_tops:
-            holders[oid] = _nearest(oid, open_tops)
+    for oid, h in free_holders(state).items():
+        if holders[oid] is None:
+            holders[oid] = h
     locations = tuple(sorted({*loc.values(), mangle(start)}))
     rtypes = sorted({state[r].object_type for r in receptacles})
     otypes = sorted({state[o].object_type for o in objects})
@@ -123,6 +121,20 @@ def alfworld_problem(state: WorldState, places: Mapping[str, str], start: str, t
         *(f"    {d}" for d in declared), "  )", "  (:init", *(f"    {f}" for f in init), "  )",
         f"  (:goal {goal(task_type, params)})", ")", ""])
     return AlfworldProblem(text, ids, locations)
+
+
+def free_holders(state: WorldState) -> dict[str, str]:
+    """Things that can be taken or switched on but stand on no receptacle (a floor lamp, a ball on the floor),
+    each with the receptacle nearest it that does not close (any receptacle, in a room of closing ones)."""
+    fixed = sorted(oid for oid, o in state.objects.items() if is_receptacle(o.object_type))
+    open_tops = [r for r in fixed if not abilities(state[r].object_type).openable] or fixed
+    out = {}
+    for oid, o in sorted(state.objects.items()):
+        ab = abilities(o.object_type)
+        if (open_tops and not is_receptacle(o.object_type) and (ab.pickupable or ab.toggleable)
+                and state.held != oid and fixed_holder(state, oid) is None and o.parent is None):
+            out[oid] = _nearest(oid, open_tops)
+    return out
 
 
 def _nearest(object_id: str, receptacles: list[str]) -> str:
