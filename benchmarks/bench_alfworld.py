@@ -136,14 +136,18 @@ def table(result: dict[str, Any]) -> str:
                 continue
             total.update(row)
             lines.append(f"  {task_type:34s} {row['entries']:7d} {row['won']:5d} {row['won'] / row['entries']:11.3f} "
-                         f"{row['won'] / max(row['unsliced'], 1):12.3f}")
+                         f"{_share(row['won'], row['unsliced']):>12s}")
         if total["entries"]:
             lines.append(f"  {'six types':34s} {total['entries']:7d} {total['won']:5d} "
-                         f"{total['won'] / total['entries']:11.3f} {total['won'] / max(total['unsliced'], 1):12.3f}")
+                         f"{total['won'] / total['entries']:11.3f} {_share(total['won'], total['unsliced']):>12s}")
         for task_type, causes in got["causes"].items():
             for cause, n in sorted(causes.items()):
                 lines.append(f"    loss {task_type}: {cause}: {n}")
     return "\n".join(lines)
+
+
+def _share(won: int, of: int) -> str:
+    return f"{won / of:.3f}" if of else "n/a (none)"
 
 
 def main(argv: list[str] | None = None) -> int:

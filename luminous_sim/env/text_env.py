@@ -7,8 +7,8 @@ task types. The observation is text: the welcome, the room and the task after a 
 feedback after a step; `info["admissible_commands"]` lists the commands that do something, `info["won"]`
 whether the task is done (its goal conditions, as the embodied env judges them). Reward 1 on the step that
 wins, else 0; an episode ends when won and is truncated after `max_steps` commands (ALFWorld's 50).
-The state is built without physics (`states.scene_state`): a reset takes a few milliseconds once the
-entry's scene is made. Figures: docs/benchmarks.md ("The native text env")."""
+The state is built without physics (`states.scene_state`); the env keeps the last `CACHED` entries' scenes,
+so a second reset of an entry takes milliseconds. Figures: docs/benchmarks.md ("The native text env")."""
 
 from __future__ import annotations
 
@@ -31,6 +31,9 @@ MAX_STEPS = 50
 """ALFWorld's step limit per episode (its config's `max_nb_steps_per_episode`)."""
 MAX_TEXT = 8192
 """The longest observation or command (characters)."""
+CACHED = 64
+"""Entries whose scene and starting state an env keeps (the oldest is dropped first): a second reset of one
+takes milliseconds."""
 
 
 class TextEnv(gymnasium.Env):
@@ -53,6 +56,7 @@ class TextEnv(gymnasium.Env):
         self.episode: Any = None
         self._steps = 0
         self._last = ""
+        self._made: dict[tuple[str, int], tuple[Any, Any]] = {}
 
     def reset(self, *, seed: int | None = None, options: dict[str, Any] | None = None):
         """A new episode of the env's split (or the one `options` names); the welcome and the task."""
@@ -66,10 +70,16 @@ class TextEnv(gymnasium.Env):
         super().reset(seed=seed)
         entry = requested_entry(self.config, checked, self.np_random)
         assert entry is not None, "the text env always has a split"
-        spec = entry_spec(entry)
-        state = scene_state(spec.scene)
-        for oid in spec.dirty:
-            state = state.with_object(oid, isDirty=True)
+        key = (entry.split, entry.index)
+        if key not in self._made:
+            spec = entry_spec(entry)
+            state = scene_state(spec.scene)
+            for oid in spec.dirty:
+                state = state.with_object(oid, isDirty=True)
+            if len(self._made) >= CACHED:
+                self._made.pop(next(iter(self._made)))
+            self._made[key] = (spec, state)
+        spec, state = self._made[key]
         task = spec.task
         wording = np.random.default_rng(np.random.SeedSequence([entry.task_seed, 44]))
 

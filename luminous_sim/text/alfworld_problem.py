@@ -25,6 +25,7 @@ from typing import Any
 
 from luminous_sim.errors import LuminousError
 from luminous_sim.states import WorldState
+from luminous_sim.states.tables import GATING_OPENABLE
 from luminous_sim.text.alfworld_names import alfworld_id, mangle
 from luminous_sim.vocab import abilities, can_contain
 
@@ -105,7 +106,7 @@ def alfworld_problem(state: WorldState, places: Mapping[str, str], start: str, t
     for r in receptacles:
         s = state[r]
         init += [f"(receptacleType {ids[r]} {s.object_type}Type)", f"(receptacleAtLocation {ids[r]} {loc[r]})"]
-        if abilities(s.object_type).openable:
+        if s.object_type in GATING_OPENABLE:
             init.append(f"(openable {ids[r]})")
             if s.isOpen:
                 init.append(f"(opened {ids[r]})")
@@ -127,7 +128,7 @@ def free_holders(state: WorldState) -> dict[str, str]:
     """Things that can be taken or switched on but stand on no receptacle (a floor lamp, a ball on the floor),
     each with the receptacle nearest it that does not close (any receptacle, in a room of closing ones)."""
     fixed = sorted(oid for oid, o in state.objects.items() if is_receptacle(o.object_type))
-    open_tops = [r for r in fixed if not abilities(state[r].object_type).openable] or fixed
+    open_tops = [r for r in fixed if state[r].object_type not in GATING_OPENABLE] or fixed
     out = {}
     for oid, o in sorted(state.objects.items()):
         ab = abilities(o.object_type)

@@ -19,6 +19,7 @@ from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 from luminous_sim.states import WorldState, step
+from luminous_sim.states.tables import GATING_OPENABLE
 from luminous_sim.text.alfworld_names import alfworld_id, mangle, names_of
 from luminous_sim.text.alfworld_problem import fixed_holder, free_holders, is_receptacle
 from luminous_sim.vocab import SLICED_TYPES, abilities
@@ -102,8 +103,13 @@ class TextGame:
     def _sort_key(self, oid: str) -> str:
         return self._pddl.get(oid) or oid.lower()
 
+    def _closes(self, receptacle: str) -> bool:
+        """Whether a receptacle hides what it holds while closed (ALFRED's OPENABLE_CLASS_LIST; a toilet's lid
+        does not)."""
+        return self.state[receptacle].object_type in GATING_OPENABLE
+
     def _open_to_view(self, receptacle: str) -> bool:
-        return not abilities(self.state[receptacle].object_type).openable or self.state[receptacle].isOpen
+        return not self._closes(receptacle) or self.state[receptacle].isOpen
 
     def visible(self) -> list[str]:
         """What the agent can act on where it stands (nothing in the middle of the room)."""
@@ -130,7 +136,7 @@ class TextGame:
 
     def _examine_receptacle(self, r: str) -> str:
         name = self.name(r)
-        if abilities(self.state[r].object_type).openable:
+        if self._closes(r):
             if self.state[r].isOpen:
                 return f"The {name} is open. In it, you see {self._listing(self.on(r))}."
             return f"The {name} is closed."
@@ -157,8 +163,7 @@ class TextGame:
         if self.at is not None:
             r = self.at
             out.append(f"examine {self.name(r)}")
-            kind = self.state[r].object_type
-            if abilities(kind).openable:
+            if self._closes(r):
                 out.append(f"{'close' if self.state[r].isOpen else 'open'} {self.name(r)}")
             for o in self.visible():
                 ab = abilities(self.state[o].object_type)
@@ -287,7 +292,7 @@ class TextGame:
 
     def _sequence(self, verb: str, oid: str, device: str) -> list[tuple[str, str, str | None]]:
         """ALFRED's interactions for heating, cooling or cleaning a held thing at a device."""
-        closed = abilities(self.state[device].object_type).openable and not self.state[device].isOpen
+        closed = self._closes(device) and not self.state[device].isOpen
         opened = [("OpenObject", device, None)] if closed else []
         if verb == "heat":
             return [*opened, ("PutObject", oid, device), ("CloseObject", device, None),

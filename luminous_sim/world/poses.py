@@ -100,10 +100,15 @@ def find_interaction_pose(world: World, object_id: str, limit: int = 80,
             world.keep_frame(seen[found])  # the agent walks there next: its frame need not be rendered again
 
 
+FAR = 5.0
+"""Metres: how far `receptacle_places` looks for a place facing a receptacle no place within reach sees."""
+
+
 def receptacle_places(world: World) -> dict[str, AgentPose]:
     """Each fixed receptacle's place to stand (ALFWorld's `receptacleAtLocation`): its interaction pose
-    (`find_interaction_pose`), else the nearest candidate facing it within reach when no pose sees it; a
-    receptacle with neither is left out."""
+    (`find_interaction_pose`), else the nearest candidate facing it within reach when no pose sees it, else
+    the nearest facing it within `FAR` (a big sofa whose middle is out of reach of every reachable point); a
+    receptacle with none is left out."""
     from luminous_sim.vocab import abilities
 
     out = {}
@@ -111,7 +116,8 @@ def receptacle_places(world: World) -> dict[str, AgentPose]:
         ab = abilities(o.object_type)
         if not ab.receptacle or ab.pickupable:
             continue
-        pose = find_interaction_pose(world, oid) or next(iter(candidate_poses(world, oid)), None)
+        pose = (find_interaction_pose(world, oid) or next(iter(candidate_poses(world, oid)), None)
+                or next(iter(candidate_poses(world, oid, reach=FAR)), None))
         if pose is not None:
             out[oid] = pose
     return out

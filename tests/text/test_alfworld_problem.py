@@ -63,6 +63,15 @@ def test_what_is_in_what_and_what_is_open():
     assert f"(receptacleAtLocation {i[FRIDGE]} {mangle(PLACES[FRIDGE])})" in got
 
 
+def test_only_what_alfred_opens_is_openable():
+    toilet = "Toilet|-01.00|+00.00|-01.50"
+    state = WorldState.of([*room().objects.values(), ObjectState(toilet, "Toilet")])
+    problem = alfworld_problem(state, {**PLACES, toilet: "loc|-4|-6|2|45"}, START, "pick_and_place_simple", simple(),
+                               "plan_t")
+    got, i = facts(problem.text), problem.ids
+    assert f"(openable {i[FRIDGE]})" in got and f"(openable {i[toilet]})" not in got  # a lid does not hide
+
+
 def test_a_pot_the_task_puts_into_is_a_receptacle_at_the_place_of_what_it_stands_on():
     problem = alfworld_problem(room(), PLACES, START, "pick_and_place_simple", simple("Pot", "Apple"), "plan_t")
     got, i = facts(problem.text), problem.ids
