@@ -91,6 +91,7 @@ def agree(split: str, start: int, count: int | None) -> dict[str, Any]:
     from luminous_sim.benchmark import benchmark_size
     from luminous_sim.env.text_env import TextEnv
     from luminous_sim.episodes import prepare
+    from luminous_sim.errors import PlanningError
     from luminous_sim.tasks import goal_conditions
     from luminous_sim.text import TextExpert, carry_out
     from luminous_sim.world import World
@@ -106,8 +107,8 @@ def agree(split: str, start: int, count: int | None) -> dict[str, Any]:
         rows[task_type]["entries"] += 1
         try:
             expert = TextExpert(env.game, env.episode.task.goal, dict(env.episode.task.names))
-        except Exception as exc:
-            causes[task_type][f"no text plan: {type(exc).__name__}"] += 1
+        except PlanningError as exc:  # counted, with its cause
+            causes[task_type][f"no text plan: {str(exc)[:60]}"] += 1
             continue
         while (command := expert.next_command()) is not None:
             _, _, terminated, truncated, info = env.step(command)

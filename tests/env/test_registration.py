@@ -43,8 +43,8 @@ def test_every_alfred_type_has_an_id_and_the_family_id_has_all_seven():
     assert specs["Luminous-ALFRED-v0"].kwargs["width"] == specs["Luminous-ALFRED-v0"].kwargs["height"] == 300
     for task_type, env_id in TASK_TYPE_IDS.items():
         assert specs[env_id].kwargs["task_types"] == [task_type]
-    embodied_small = ("Luminous-ALFRED", "Luminous-HouseALFRED", "Luminous-Text")
-    small = [e for e in specs.values() if not e.id.startswith(embodied_small)]
+    full_size = ("Luminous-ALFRED", "Luminous-HouseALFRED", "Luminous-Text")
+    small = [e for e in specs.values() if not e.id.startswith(full_size)]
     assert {e.kwargs["width"] for e in small} <= {64, 96} and len(small) >= 2
 
 
