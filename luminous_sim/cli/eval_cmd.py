@@ -78,6 +78,10 @@ def register(sub: argparse._SubParsersAction) -> None:
     parser.add_argument("--env", type=env_option, action="append", default=[], metavar="KEY=VALUE",
                         help="an env option over ALFRED's (EnvConfig's fields; VALUE as JSON, else a string), "
                              "e.g. --env width=64 --env targets=objects; repeatable")
+    parser.add_argument("--mode", choices=("embodied", "text"), default="embodied",
+                        help="embodied (default), or text: a language-model agent's act(observation, admissible) -> "
+                             "command over the split's text games (Luminous-Text-v0; --policy MODULE:CALLABLE, expert "
+                             "or random; no track: its own column; docs/text.md)")
     parser.set_defaults(func=_run)
 
 
@@ -121,6 +125,8 @@ def _run(args: argparse.Namespace) -> int:
     if os.getcwd() not in sys.path:  # MODULE may be a file in the current folder, as with `python -m`
         sys.path.insert(0, os.getcwd())
     limits = AgentLimits(step_timeout=args.step_timeout, memory_mb=args.agent_memory)
+    if args.mode == "text":
+        return _run_text(args, limits)
     try:
         check_policy(args.policy, limits)  # a bad spec fails here, before any episode (the module imported in a child)
     except AgentCrashed as exc:
@@ -169,6 +175,32 @@ def _run(args: argparse.Namespace) -> int:
     print(markdown_table([report]), end="")
     print(f"wrote {paths['json']}, {paths['table']}, {paths['plot']}")
     return _incomplete(report)
+
+
+def _run_text(args: argparse.Namespace, limits: object) -> int:
+    """`--mode text`: the policy over the split's text games; Table 4's rows, won per type."""
+    from luminous_sim.benchmark import benchmark_size
+    from luminous_sim.errors import LuminousError
+    from luminous_sim.eval import AgentCrashed, TextOutcome, evaluate_text
+
+    if args.split is None or args.data is not None or args.build is not None or args.live or args.rebuild:
+        raise LuminousError("--mode text plays a frozen split's text games: give --split, and leave out --data, "
+                            "--build, --rebuild and --live")
+    if args.backend != "local" or args.workers != 1:
+        raise LuminousError("--mode text runs in one process (thousands of steps a second): leave out --workers and "
+                            "--backend")
+
+    def show(o: TextOutcome) -> None:
+        print(f"{o.split} {o.index:4d} {o.task_type:<34} {o.end:<14} steps {o.steps:3d}", file=sys.stderr)
+
+    try:
+        report = evaluate_text(args.policy, args.split, args.episodes or benchmark_size(args.split), seed=args.seed,
+                               out_dir=Path(args.out), limits=limits, progress=show)  # type: ignore[arg-type]
+    except AgentCrashed as exc:
+        return _crashed(exc, Path(args.out))
+    print(report.markdown(), end="")
+    print(f"wrote {Path(args.out) / 'report.json'}, {Path(args.out) / 'table.md'}")
+    return 0
 
 
 def _shorten(text: str, limit: int = 200) -> str:

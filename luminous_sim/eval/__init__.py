@@ -33,12 +33,14 @@ from luminous_sim.eval.policies import (
     AgentContext,
     PolicyError,
     ReplayAgent,
+    TextAgentContext,
     check_policy,
     make_agent,
     resolve_factory,
 )
 from luminous_sim.eval.report import TABLE4_ROWS, markdown_table, plot, write_reports
 from luminous_sim.eval.sandbox import AgentCrashed, AgentLimits, AgentProcess, AgentTimeout
+from luminous_sim.eval.text_eval import TEXT_BUILT_IN, TextOutcome, TextReport, evaluate_text, play_text
 from luminous_sim.eval.tracks import AGENT_INFO, PRIVILEGED_OPTIONS, TRACKS, agent_info, track_env
 from luminous_sim.eval.trials import TrialRef, list_trials
 from luminous_sim.eval.workers import map_local, map_ordered
@@ -49,6 +51,7 @@ __all__ = [
     "EVAL_ENV",
     "PRIVILEGED_OPTIONS",
     "TABLE4_ROWS",
+    "TEXT_BUILT_IN",
     "TRACKS",
     "Agent",
     "AgentContext",
@@ -62,6 +65,9 @@ __all__ = [
     "Metrics",
     "PolicyError",
     "ReplayAgent",
+    "TextAgentContext",
+    "TextOutcome",
+    "TextReport",
     "TrialRef",
     "agent_info",
     "check_output",
@@ -70,6 +76,7 @@ __all__ = [
     "data_run",
     "evaluate",
     "evaluate_data",
+    "evaluate_text",
     "list_trials",
     "make_agent",
     "map_local",
@@ -78,6 +85,7 @@ __all__ = [
     "metrics",
     "metrics_by_type",
     "play",
+    "play_text",
     "plot",
     "resolve_factory",
     "run_job",

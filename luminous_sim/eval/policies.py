@@ -53,6 +53,32 @@ class AgentContext:
     config: EnvConfig
 
 
+@dataclass(frozen=True)
+class TextAgentContext:
+    """What a text agent's process is told (`luminous eval --mode text`): the split and the step limit. The
+    callable a text policy names is the agent's `act(observation, admissible) -> command` itself."""
+
+    split: str
+    max_steps: int
+
+
+class _TextAgent:
+    """A text agent's callable behind the agent interface (in the child process)."""
+
+    def __init__(self, spec: str, act: Callable[[str, list[str]], str]):
+        self.spec, self._act = spec, act
+
+    def reset(self, instruction: str, info: dict[str, Any]) -> None:
+        return None
+
+    def act(self, observation: Any, info: dict[str, Any]) -> str:
+        command = self._act(observation, list(info["admissible_commands"]))
+        if not isinstance(command, str):
+            raise PolicyError(f"policy {self.spec!r}: a text agent returns a command (a str), got "
+                              f"{type(command).__name__}")
+        return command
+
+
 class Agent(Protocol):
     """An agent an evaluation runs (see the module docstring)."""
 
@@ -180,12 +206,16 @@ def make_agent(spec: str, env: LuminousEnv, limits: AgentLimits | None = None, *
     return AgentProcess(spec, context, limits)
 
 
-def build_agent(spec: str, factory: Callable[[AgentContext], Agent], context: AgentContext) -> Agent:
-    """`factory(context)`, checked to be an agent (in the process that runs it).
+def build_agent(spec: str, factory: Callable[[AgentContext], Agent], context: AgentContext | TextAgentContext
+                ) -> Agent:
+    """`factory(context)`, checked to be an agent (in the process that runs it); for a text agent
+    (`TextAgentContext`), the callable itself behind the agent interface.
 
     Raises:
         PolicyError: the factory raised, or returned something without `reset` and `act`.
     """
+    if isinstance(context, TextAgentContext):
+        return _TextAgent(spec, factory)  # type: ignore[arg-type,return-value]
     try:
         agent = factory(context)
     except Exception as exc:

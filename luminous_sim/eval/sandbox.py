@@ -48,7 +48,7 @@ from typing import Any
 
 import numpy as np
 
-from luminous_sim.eval.policies import AgentContext, PolicyError, build_agent, resolve_factory
+from luminous_sim.eval.policies import AgentContext, PolicyError, TextAgentContext, build_agent, resolve_factory
 
 DEFAULT_STEP_TIMEOUT = 10.0
 """Seconds one `reset()` or `act()` call may take (the reference agents' p99 is far below: docs/benchmarks.md)."""
@@ -128,7 +128,8 @@ class AgentProcess:
         AgentCrashed: the agent raised, exited, was killed, went past its memory limit or broke the protocol.
     """
 
-    def __init__(self, spec: str, context: AgentContext | None, limits: AgentLimits | None = None):
+    def __init__(self, spec: str, context: AgentContext | TextAgentContext | None,
+                 limits: AgentLimits | None = None):
         self.spec, self.context, self.limits = spec, context, limits or AgentLimits()
         self.starts = 0
         """Children started so far (one, plus one after each timeout or crash)."""
@@ -423,7 +424,7 @@ def probe(spec: str, limits: AgentLimits | None = None) -> None:
     AgentProcess(spec, None, limits).close()
 
 
-def _child_main(conn: Connection, spec: str, context: AgentContext | None, memory_mb: int,
+def _child_main(conn: Connection, spec: str, context: AgentContext | TextAgentContext | None, memory_mb: int,
                 environ: dict[str, str]) -> None:
     """The agent process: limits first, then the user's module, then calls until told to close (with no
     `context`: only check that the spec names a callable). `environ` is the evaluation's environment now (a
