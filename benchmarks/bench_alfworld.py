@@ -1,12 +1,14 @@
 """ALFWorld's own code on a Luminous build: its generator (`alfworld-generate`) turns each trial's
 `initial_state.pddl` and `traj_data.json` into `game.tw-pddl` and decides with its hand-coded expert whether
 the game is solvable; its `AlfredTWEnv` (with `dataset.data_path` at the games) loads every game of the six
-task types it supports, and the hand-coded expert plays each one there. Wins per task type over every entry
+task types it supports, and the hand-coded expert plays each one there; ALFWorld's planner expert (Fast
+Downward) plays a sample. Wins per task type over every entry
 of each split, the denominator taken from the build's manifest: an entry that failed to build, a trial
 ALFWorld skips (sliced objects, movable-receptacle tasks) or a game its generator found unsolvable counts as
 a loss, named by cause. Needs `pip install alfworld==0.4.2` (the test extra).
 
-    python benchmarks/bench_alfworld.py --build BUILD [--games GAMES] [--splits S+ U+] [--json OUT.json]
+    python benchmarks/bench_alfworld.py --build BUILD [--games GAMES] [--splits S+ U+] [--planner-sample 20]
+        [--json OUT.json]
 
 Figures: docs/benchmarks.md ("ALFWorld's own code on our builds")."""
 
@@ -76,6 +78,28 @@ def play(games: Path, max_steps: int = MAX_STEPS) -> dict[str, dict[str, Any]]:
     return out
 
 
+def play_planner(games: Path, sample: int, max_steps: int = MAX_STEPS) -> dict[str, bool]:
+    """The first `sample` solvable games under `games` (sorted) played by ALFWorld's planner expert (Fast
+    Downward's plan, `AlfredExpert(expert_type="planner")`): trial folder -> won."""
+    import textworld
+    from alfworld.agents.environment.alfred_tw_env import AlfredDemangler, AlfredExpert, AlfredExpertType, AlfredInfos
+    from textworld.envs import PddlEnv
+
+    files = [f for f in sorted(games.rglob("game.tw-pddl")) if json.loads(f.read_text()).get("solvable")][:sample]
+    out = {}
+    for f in files:
+        infos = textworld.EnvInfos(admissible_commands=True, won=True, policy_commands=True)
+        env = AlfredExpert(AlfredInfos(AlfredDemangler(PddlEnv(infos), shuffle=False)),
+                           expert_type=AlfredExpertType.PLANNER)
+        env.load(str(f))
+        state, steps = env.reset(), 0
+        while not state["won"] and steps < max_steps and state["extra.expert_plan"]:
+            state, _, _ = env.step(state["extra.expert_plan"][0])
+            steps += 1
+        out[f.parent.relative_to(games).as_posix()] = bool(state["won"])
+    return out
+
+
 def loss_cause(record: dict[str, Any], game_dir: Path, played: dict[str, dict[str, Any]]) -> str | None:
     """Why a manifest entry is not a win (None for a win)."""
     if record["status"] != "built":
@@ -94,7 +118,7 @@ def loss_cause(record: dict[str, Any], game_dir: Path, played: dict[str, dict[st
     return None if got["won"] else f"expert lost in AlfredTWEnv (step limit {MAX_STEPS})"
 
 
-def measure(build: Path, games: Path, splits: list[str]) -> dict[str, Any]:
+def measure(build: Path, games: Path, splits: list[str], planner_sample: int = 0) -> dict[str, Any]:
     from luminous_sim.data import Manifest
 
     manifest = list(Manifest(build / "manifest.jsonl"))
@@ -115,11 +139,13 @@ def measure(build: Path, games: Path, splits: list[str]) -> dict[str, Any]:
             rows[task_type]["won"] += cause is None
             if cause is not None:
                 causes[task_type][cause] += 1
+        planner = play_planner(games / split, planner_sample) if planner_sample else {}
         steps = [v["steps"] for v in played.values() if v["won"]]
         out["splits"][split] = {"types": {t: dict(rows[t]) for t in sorted(rows)},
                                 "causes": {t: dict(causes[t]) for t in sorted(causes)},
                                 "generate_seconds": round(seconds, 1), "play_seconds": round(play_seconds, 1),
                                 "games_played": len(played),
+                                "planner_sample": {"games": len(planner), "won": sum(planner.values())},
                                 "median_expert_steps": sorted(steps)[len(steps) // 2] if steps else None}
     return out
 
@@ -128,7 +154,8 @@ def table(result: dict[str, Any]) -> str:
     lines = []
     for split, got in result["splits"].items():
         lines.append(f"{split}: {got['games_played']} games played; generator {got['generate_seconds']} s, "
-                     f"play {got['play_seconds']} s")
+                     f"play {got['play_seconds']} s; ALFWorld's planner expert won {got['planner_sample']['won']} "
+                     f"of a sample of {got['planner_sample']['games']}")
         lines.append(f"  {'task type':34s} {'entries':>7s} {'won':>5s} {'won/entries':>11s} {'won/unsliced':>12s}")
         total: Counter = Counter()
         for task_type, row in got["types"].items():
@@ -155,11 +182,13 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--build", type=Path, required=True, help="a `luminous dataset build` folder")
     parser.add_argument("--games", type=Path, default=None, help="where ALFWorld's games go (default BUILD-games)")
     parser.add_argument("--splits", nargs="+", default=None, help="splits of the build (default: all it holds)")
+    parser.add_argument("--planner-sample", type=int, default=20,
+                        help="games also played by ALFWorld's planner expert (Fast Downward), the first N (default 20)")
     parser.add_argument("--json", type=Path, default=None, help="also write the figures here")
     args = parser.parse_args(argv)
     games = args.games or args.build.with_name(args.build.name + "-games")
     splits = args.splits or sorted(p.name for p in args.build.iterdir() if p.is_dir())
-    result = measure(args.build, games, splits)
+    result = measure(args.build, games, splits, args.planner_sample)
     print(table(result))
     if args.json is not None:
         args.json.write_text(json.dumps(result, indent=1, sort_keys=True) + "\n")

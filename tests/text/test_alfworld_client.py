@@ -1,7 +1,8 @@
 """ALFWorld's own code (`alfworld==0.4.2`, the test extra: a client, never imported by the package) on a
 build's `initial_state.pddl`: its generator makes and solves the games, its `AlfredTWEnv` loads them and its
-hand-coded expert wins each one there (`benchmarks/bench_alfworld.py`), its demangler names every object as
-`text.names_of` does, and a goal no room can meet is found unsolvable (the negative control)."""
+hand-coded expert wins each one there, as its planner expert does on a sample (`benchmarks/bench_alfworld.py`);
+its demangler names every object as `text.names_of` does; a goal no room can meet is found unsolvable (the
+negative control)."""
 
 from __future__ import annotations
 
@@ -24,7 +25,7 @@ def bench():
 @pytest.fixture(scope="module")
 def played(bench, uplus_build, tmp_path_factory):
     games = tmp_path_factory.mktemp("games")
-    return bench.measure(uplus_build, games, ["U+"]), games
+    return bench.measure(uplus_build, games, ["U+"], planner_sample=3), games
 
 
 def test_every_playable_trial_is_solved_and_won_in_alfworlds_own_env(played):
@@ -38,6 +39,7 @@ def test_every_playable_trial_is_solved_and_won_in_alfworlds_own_env(played):
     skipped = sum(n for per in got["causes"].values() for n in per.values())
     assert got["games_played"] == UPLUS_BUILT - skipped >= 4
     assert sum(row["won"] for row in got["types"].values()) == got["games_played"]
+    assert got["planner_sample"] == {"games": 3, "won": 3}  # ALFWorld's planner expert (Fast Downward) too
 
 
 def test_alfworlds_demangler_names_every_object_as_ours(played, uplus_build):
