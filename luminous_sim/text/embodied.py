@@ -15,7 +15,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 from luminous_sim.planning.symbolic import HighLevelAction
-from luminous_sim.text.alfworld_problem import fixed_holder
+from luminous_sim.text.alfworld_problem import fixed_holder, is_receptacle
 from luminous_sim.text.game import TextAction
 
 if TYPE_CHECKING:
@@ -86,7 +86,7 @@ def _misplaced(world: World, a: TextAction, at: str | None, free: Mapping[str, s
         return ""
     place = a.receptacle if a.verb in ("open", "close", "heat", "cool", "clean", "move") else a.target
     assert place is not None
-    where = place if place == at else shown_at(place) if a.verb in ("use", "slice", "move") else None
+    where = place if place == at or is_receptacle(state[place].object_type) else shown_at(place)
     if where != at:
         return f"{place} is not where the agent stands ({at})"
     return ""

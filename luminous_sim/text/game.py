@@ -18,7 +18,7 @@ from __future__ import annotations
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
-from luminous_sim.states import WorldState, step
+from luminous_sim.states import WorldState, enclosing_closed, step
 from luminous_sim.states.tables import GATING_OPENABLE
 from luminous_sim.text.alfworld_names import alfworld_id, mangle, names_of
 from luminous_sim.text.alfworld_problem import fixed_holder, free_holders, is_receptacle
@@ -87,17 +87,20 @@ class TextGame:
         return h
 
     def on(self, receptacle: str) -> list[str]:
-        """What is on or in a receptacle (open or not), in ALFWorld's listing order."""
+        """What is on or in a receptacle (open or not; not what a shut box on it holds), or in a bowl or box, in
+        ALFWorld's listing order."""
         if self._on is None:
             on: dict[str, list[str]] = {r: [] for r in self.receptacles}
             for oid, o in self.state.objects.items():
                 if not is_receptacle(o.object_type):
                     h = self.holder(oid)
-                    if h is not None:
+                    if h is not None and enclosing_closed(self.state, oid) in (None, h):  # not in a shut box
                         on[h].append(oid)
             for items in on.values():
                 items.sort(key=self._sort_key)
             self._on = on
+        if receptacle not in self._on:  # a bowl or box: what is in it
+            return sorted(self.state.contents(receptacle), key=self._sort_key)
         return self._on[receptacle]
 
     def _sort_key(self, oid: str) -> str:
@@ -171,6 +174,8 @@ class TextGame:
                     out.append(f"take {self.name(o)} from {self.name(r)}")
                 if ab.toggleable:
                     out.append(f"use {self.name(o)}")
+                if self._closes(o):  # a box
+                    out.append(f"{'close' if self.state[o].isOpen else 'open'} {self.name(o)}")
                 if held is not None and ab.sliceable and self._tool(held):
                     out.append(f"slice {self.name(o)} with {self.name(held)}")
             if held is not None:
