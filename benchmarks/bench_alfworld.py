@@ -21,6 +21,7 @@ import subprocess
 import sys
 import time
 from collections import Counter, defaultdict
+from itertools import pairwise
 from pathlib import Path
 from typing import Any
 
@@ -32,17 +33,24 @@ MAX_STEPS = 50
 """ALFWorld's step limit per episode (its base config's `max_nb_steps_per_episode`)."""
 
 
-def generate(build: Path, games: Path, split: str) -> float:
-    """Run ALFWorld's generator over one split of the build (seconds taken)."""
+def generate(build: Path, games: Path, split: str, jobs: int = 1) -> float:
+    """Run ALFWorld's generator over one split of the build (seconds taken), in `jobs` processes at once, each
+    over its own contiguous range of the trials (the generator's `--start`/`--end`)."""
     from alfworld.info import ALFRED_PDDL_PATH, ALFRED_TWL2_PATH
 
     trials = sorted((build / split).glob("*/*/traj_data.json"))
     script = shutil.which("alfworld-generate") or str(Path(sys.executable).parent / "alfworld-generate")
     shutil.rmtree(games / split, ignore_errors=True)  # the generator keeps an existing game's verdict
+    bounds = [len(trials) * i // max(jobs, 1) for i in range(max(jobs, 1) + 1)]
     start = time.perf_counter()
-    subprocess.run([sys.executable, script, "--data_path", str(build / split), "--save_path", str(games / split),
-                    "--domain", ALFRED_PDDL_PATH, "--grammar", ALFRED_TWL2_PATH, "--end", str(len(trials))],
-                   check=True, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    running = [subprocess.Popen([sys.executable, script, "--data_path", str(build / split), "--save_path",
+                                 str(games / split), "--domain", ALFRED_PDDL_PATH, "--grammar", ALFRED_TWL2_PATH,
+                                 "--start", str(lo), "--end", str(hi)],
+                                stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+               for lo, hi in pairwise(bounds) if hi > lo]
+    failed = [p.args for p in running if p.wait() != 0]
+    if failed:
+        raise subprocess.CalledProcessError(1, failed[0])
     return time.perf_counter() - start
 
 
@@ -118,13 +126,13 @@ def loss_cause(record: dict[str, Any], game_dir: Path, played: dict[str, dict[st
     return None if got["won"] else f"expert lost in AlfredTWEnv (step limit {MAX_STEPS})"
 
 
-def measure(build: Path, games: Path, splits: list[str], planner_sample: int = 0) -> dict[str, Any]:
+def measure(build: Path, games: Path, splits: list[str], planner_sample: int = 0, jobs: int = 1) -> dict[str, Any]:
     from luminous_sim.data import Manifest
 
     manifest = list(Manifest(build / "manifest.jsonl"))
     out: dict[str, Any] = {"splits": {}}
     for split in splits:
-        seconds = generate(build, games, split)
+        seconds = generate(build, games, split, jobs)
         start = time.perf_counter()
         played = {f"{split}/{k}": v for k, v in play(games / split).items()}
         play_seconds = time.perf_counter() - start
@@ -184,11 +192,13 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--splits", nargs="+", default=None, help="splits of the build (default: all it holds)")
     parser.add_argument("--planner-sample", type=int, default=20,
                         help="games also played by ALFWorld's planner expert (Fast Downward), the first N (default 20)")
+    parser.add_argument("--jobs", type=int, default=1,
+                        help="generator processes at once, each over a range of the trials (default 1)")
     parser.add_argument("--json", type=Path, default=None, help="also write the figures here")
     args = parser.parse_args(argv)
     games = args.games or args.build.with_name(args.build.name + "-games")
     splits = args.splits or sorted(p.name for p in args.build.iterdir() if p.is_dir())
-    result = measure(args.build, games, splits, args.planner_sample)
+    result = measure(args.build, games, splits, args.planner_sample, args.jobs)
     print(table(result))
     if args.json is not None:
         args.json.write_text(json.dumps(result, indent=1, sort_keys=True) + "\n")

@@ -1,5 +1,6 @@
-"""Write what `luminous generate` produces for one scene: scene JSON, validation report (layout and
-physics), a labelled top-down picture with the reachable grid, and an egocentric snapshot."""
+"""Write what `luminous generate` produces for one scene: scene JSON, validation report (layout, physics and the
+field's scene measures: walkable, accessible and object collision rates, docs/scene_measures.md), a labelled
+top-down picture with the reachable grid, and an egocentric snapshot."""
 
 from __future__ import annotations
 
@@ -9,19 +10,21 @@ from pathlib import Path
 import numpy as np
 
 from luminous_sim.assets.objio import png_bytes, write_atomic
-from luminous_sim.cssg import Generated, HouseGenerated, HouseReport, LayoutReport
+from luminous_sim.cssg import Generated, HouseGenerated, HouseReport, LayoutReport, floor_measures
 
 
 def write_scene_outputs(generated: Generated | HouseGenerated, out_dir: Path, physics: bool = True) -> dict:
     """Write the files for one generated scene (a room or a house) into `out_dir`; returns the combined report
     (a house's `layout` holds each room's CSSG report and which rooms its connected floor reaches)."""
-    from luminous_sim.world import build_scene, check_physics, egocentric, top_down
+    from luminous_sim.world import build_scene, check_physics, egocentric, scene_collisions, top_down
 
     out_dir = Path(out_dir)
     scene = generated.scene
-    report = {**cdf_summary(generated), "layout": generated.report.to_dict()}
+    report = {**cdf_summary(generated), "layout": generated.report.to_dict(),
+              "measures": floor_measures(scene).to_dict()}
     if physics:
         report["physics"] = check_physics(scene).to_dict()
+        report["measures"]["collision"] = scene_collisions(scene).to_dict()
     built = build_scene(scene)
     try:
         grid = _reachable(scene)

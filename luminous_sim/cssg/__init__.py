@@ -13,12 +13,25 @@ Typical use::
 from luminous_sim.cssg.baseline import empty_cdf, generate_uniform, sample_uniform
 from luminous_sim.cssg.given import GivenScene, Placement, Repair, place_given
 from luminous_sim.cssg.house import HouseGenerated, HouseReport, generate_house
+from luminous_sim.cssg.measures import (
+    ROBOT_RADIUS,
+    CKLFigures,
+    FloorMeasures,
+    category_kl,
+    ckl_figures,
+    floor_measures,
+    presence,
+)
 from luminous_sim.cssg.pipeline import ATTEMPTS, Generated, choose_room, generate, sample_layout, start_outside
+from luminous_sim.cssg.reference import alfred_reference, reference_rooms
 from luminous_sim.cssg.structure import structure_scene
 from luminous_sim.cssg.validate import LayoutReport, RelationCheck, check_layout
 
 __all__ = [
     "ATTEMPTS",
+    "ROBOT_RADIUS",
+    "CKLFigures",
+    "FloorMeasures",
     "Generated",
     "GivenScene",
     "HouseGenerated",
@@ -27,13 +40,19 @@ __all__ = [
     "Placement",
     "RelationCheck",
     "Repair",
+    "alfred_reference",
+    "category_kl",
     "check_layout",
     "choose_room",
+    "ckl_figures",
     "empty_cdf",
+    "floor_measures",
     "generate",
     "generate_house",
     "generate_uniform",
     "place_given",
+    "presence",
+    "reference_rooms",
     "sample_layout",
     "sample_uniform",
     "start_outside",

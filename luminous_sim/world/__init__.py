@@ -21,7 +21,13 @@ if TYPE_CHECKING:
     from luminous_sim.world.config import WorldConfig
     from luminous_sim.world.masks import bbox_from_mask, interaction_args, mask_to_rle, rle_to_mask
     from luminous_sim.world.navigation import NavGrid
-    from luminous_sim.world.physics_check import PhysicsReport, check_physics
+    from luminous_sim.world.physics_check import (
+        CollisionMeasure,
+        PhysicsReport,
+        check_physics,
+        object_collisions,
+        scene_collisions,
+    )
     from luminous_sim.world.placement import Spot
     from luminous_sim.world.poses import receptacle_places
     from luminous_sim.world.results import StepResult
@@ -39,6 +45,8 @@ _WHERE = {
     "mask_to_rle": "luminous_sim.world.masks", "rle_to_mask": "luminous_sim.world.masks",
     "NavGrid": "luminous_sim.world.navigation",
     "PhysicsReport": "luminous_sim.world.physics_check", "check_physics": "luminous_sim.world.physics_check",
+    "CollisionMeasure": "luminous_sim.world.physics_check", "object_collisions": "luminous_sim.world.physics_check",
+    "scene_collisions": "luminous_sim.world.physics_check",
     "Spot": "luminous_sim.world.placement",
     "receptacle_places": "luminous_sim.world.poses",
     "StepResult": "luminous_sim.world.results",
@@ -51,6 +59,7 @@ _WHERE = {
 __all__ = [
     "AgentPose",
     "BuiltScene",
+    "CollisionMeasure",
     "Failure",
     "FailureCode",
     "Frame",
@@ -68,8 +77,10 @@ __all__ = [
     "egocentric",
     "interaction_args",
     "mask_to_rle",
+    "object_collisions",
     "receptacle_places",
     "rle_to_mask",
+    "scene_collisions",
     "top_down",
 ]
 

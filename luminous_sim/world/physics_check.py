@@ -63,6 +63,75 @@ def interpenetrations(built: BuiltScene, tol: float = PENETRATION_TOL) -> list[d
     return out
 
 
+COLLISION_TOL = 0.005
+"""Collision meshes that overlap by more than this (m) collide: pieces placed touching (a sink between counter runs)
+read 2 mm, PyBullet's margin on convex hulls."""
+
+
+@dataclass
+class CollisionMeasure:
+    """PhyScene's object collision rate on the objects' collision meshes: the share of objects that overlap
+    another object (walls apart), support and containment excluded (a thing and anything on or in it, at any
+    depth: an apple on a plate in a cabinet touches neither by design)."""
+
+    objects: int
+    colliding: list[str] = field(default_factory=list)
+    pairs: list[dict] = field(default_factory=list)
+
+    @property
+    def rate(self) -> float:
+        return len(self.colliding) / self.objects if self.objects else 0.0
+
+    def to_dict(self) -> dict:
+        return {"objects": self.objects, "colliding": self.colliding, "pairs": self.pairs,
+                "rate": round(self.rate, 4), "any": bool(self.colliding)}
+
+
+def _ancestors(scene: Scene) -> dict[str, set[str]]:
+    parent = {o.id: o.parent for o in scene.objects}
+    out: dict[str, set[str]] = {}
+    for oid in parent:
+        seen, up = set(), parent[oid]
+        while up is not None and up not in seen:
+            seen.add(up)
+            up = parent.get(up)
+        out[oid] = seen
+    return out
+
+
+def object_collisions(built: BuiltScene, tol: float = COLLISION_TOL) -> CollisionMeasure:
+    """Which objects of a built scene overlap another by more than `tol` (closest points on their collision
+    meshes, so that fixed pairs, which PyBullet never collides, are checked too)."""
+    client = built.client
+    named = {loaded.body: oid for oid, loaded in built.objects.items()}
+    above = _ancestors(built.scene)
+    boxes = {b: body_aabb(client, b) for b in named}
+    colliding: set[str] = set()
+    pairs = []
+    for a, b in combinations(sorted(named), 2):
+        (alo, ahi), (blo, bhi) = boxes[a], boxes[b]
+        if np.any(alo > bhi + tol) or np.any(blo > ahi + tol):
+            continue
+        na, nb = named[a], named[b]
+        if na in above.get(nb, ()) or nb in above.get(na, ()):
+            continue
+        depth = min((p[8] for p in client.getClosestPoints(a, b, distance=0.0)), default=0.0)
+        if depth < -tol:
+            colliding.update((na, nb))
+            pairs.append({"a": na, "b": nb, "depth": round(float(-depth), 4)})
+    return CollisionMeasure(len(named), sorted(colliding), pairs)
+
+
+def scene_collisions(scene: Scene, tol: float = COLLISION_TOL) -> CollisionMeasure:
+    """`object_collisions` of a scene as it was generated (built, not settled)."""
+    built = build_scene(scene, settle_steps=0)
+    try:
+        built.client.performCollisionDetection()
+        return object_collisions(built, tol)
+    finally:
+        built.client.disconnect()
+
+
 def unseeable_objects(built: BuiltScene) -> list[str]:
     """Objects to interact with that no sight line from the reachable grid meets (through a closed
     container's door: the container must be seen)."""

@@ -39,6 +39,7 @@ def test_generate_writes_the_summary_at_the_top_of_report_json(tmp_path):
     report = json.loads((out / "report.json").read_text())
     assert list(report)[:3] == ["satisfies_cdf", "unplaced_named_by_cdf", "unplaced_others"]
     assert report["satisfies_cdf"] is True and report["unplaced_named_by_cdf"] == []
+    assert "collision" not in report["measures"] and report["measures"]["walkable_rate"] > 0.9  # no physics: no meshes
 
 
 def test_a_type_the_library_lacks_is_named_before_any_layout_is_drawn():

@@ -19,6 +19,9 @@ def test_import_front_writes_the_generate_outputs_and_the_repair_report(tmp_path
     assert repair["accepted"] and {r["action"] for r in repair["repairs"]} == {"moved", "placed"}
     report = json.loads((out / "report.json").read_text())
     assert report["layout"]["ok"] and report["physics"]["ok"]
+    measures = report["measures"]  # the field's scene measures (docs/scene_measures.md), collisions with physics
+    assert 0.0 <= measures["walkable_rate"] <= 1.0 and measures["collision"]["objects"] > 0
+    assert measures["collision"]["rate"] == len(measures["collision"]["colliding"]) / measures["collision"]["objects"]
     assert any(o["type"] == "Apple" for o in json.loads((out / "scene.json").read_text())["objects"])
 
 

@@ -25,7 +25,7 @@ def bench():
 @pytest.fixture(scope="module")
 def played(bench, uplus_build, tmp_path_factory):
     games = tmp_path_factory.mktemp("games")
-    return bench.measure(uplus_build, games, ["U+"], planner_sample=3), games
+    return bench.measure(uplus_build, games, ["U+"], planner_sample=3, jobs=2), games  # two generator ranges
 
 
 def test_every_playable_trial_is_solved_and_won_in_alfworlds_own_env(played):
