@@ -83,6 +83,23 @@ def scripted(env: Any, seed: int = SEED, options: dict[str, Any] | None = None) 
             "infos": _digest(infos), "expert": _digest([expert]), "steps": str(len(paid))}
 
 
+def scripted_text(env: Any, seed: int = SEED) -> dict[str, str]:
+    """The digests of one scripted episode of a text env (`Luminous-Text-v0`): each step sends the admissible
+    command at a fixed index of the sorted list (the env has no expert action; its expert is `text.TextExpert`)."""
+    obs, info = env.reset(seed=seed)
+    observations, infos, paid = [obs], [info], []
+    for k in range(STEPS):
+        commands = sorted(info["admissible_commands"])
+        obs, reward, terminated, truncated, info = env.step(commands[(k * 7) % len(commands)])
+        observations.append(obs)
+        infos.append(info)
+        paid.append([reward, terminated, truncated])
+        if terminated or truncated:
+            break
+    return {"key": env.episode.key, "observations": _digest(observations), "rewards": _digest(paid),
+            "infos": _digest(infos), "steps": str(len(paid))}
+
+
 def _trial(work: Path, frames: bool = False) -> Path:
     """A built trial of U+ entry 0."""
     from luminous_sim.benchmark import trial_folders
@@ -126,7 +143,7 @@ def id_digests(env_id: str, **kwargs: Any) -> dict[str, str]:
 
     env = gymnasium.make(env_id, **kwargs).unwrapped
     try:
-        return scripted(env)
+        return scripted_text(env) if isinstance(env.action_space, gymnasium.spaces.Text) else scripted(env)
     finally:
         env.close()
 

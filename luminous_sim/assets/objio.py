@@ -7,9 +7,12 @@ import os
 import tempfile
 from collections.abc import Iterator, Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 import numpy as np
-import trimesh
+
+if TYPE_CHECKING:
+    import trimesh  # loaded by the mesh functions alone: the atomic writers serve World processes (no scipy)
 
 PRECISION = 5
 
@@ -23,6 +26,8 @@ def _fmt_rows(prefix: str, rows: np.ndarray) -> str:
 
 def visual_obj(mesh: trimesh.Trimesh, smooth_angle_deg: float = 35.0) -> str:
     """One mesh as OBJ with per-vertex normals, split at edges sharper than `smooth_angle_deg`."""
+    import trimesh
+
     shaded = trimesh.graph.smooth_shade(mesh, angle=np.radians(smooth_angle_deg))
     normals = shaded.vertex_normals
     lines = [_fmt_rows("v", shaded.vertices), _fmt_rows("vn", normals)]
@@ -44,6 +49,8 @@ def collision_obj(hulls: Sequence[trimesh.Trimesh]) -> str:
 
 def read_collision_obj(text: str) -> list[trimesh.Trimesh]:
     """Parse `collision_obj` output back into meshes."""
+    import trimesh
+
     hulls: list[trimesh.Trimesh] = []
     verts: list[list[float]] = []
     faces: list[list[int]] = []

@@ -13,7 +13,7 @@ import pytest
 from tests.conftest import load_script
 
 COMMITTED = json.loads((Path(__file__).parent / "episode_digests.json").read_text())
-SAMPLE = ("Luminous-PickUp-64-v2", "Luminous-ObjectNav-64-v2")
+SAMPLE = ("Luminous-PickUp-64-v2", "Luminous-ObjectNav-64-v2", "Luminous-Text-v0")
 SOURCES = ("split", "scene", "cdf", "trial")
 
 
