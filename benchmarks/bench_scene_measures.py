@@ -13,6 +13,13 @@ uniformly from the catalog, the ceiling). Every seed counts: a method that gives
 as a failure in every measure (walkable and accessible 0, its objects not counted, CKL on the scenes it gave).
 One table per measure: the median over scenes, and the share of scenes at the ideal value (to three places) with
 its 95% Wilson interval; the collision rate also pooled over objects.
+
+Functional groups (`cssg.room_groups`: seats at a table, a sofa facing the TV or coffee table, side tables at
+the bed's head...): per method and room type, the share of rooms holding each group and, of those, the share
+where it is met; then the same per room over `--houses` houses of `cdf/examples/houses/default_house.yaml`
+(seeds 0..H-1; each room measured as a room of its own, `cssg.house_rooms`), beside CSSG's rooms generated
+alone, and the houses' walkable and accessible rates and collision rate as wholes. A house that cannot be
+generated counts each of its rooms as holding no group.
 """
 
 from __future__ import annotations
@@ -32,13 +39,28 @@ from layout_methods import METHODS
 from machine import machine
 from scipy.stats import binomtest
 
+from luminous_sim import cdf
 from luminous_sim.assets.catalog import default_catalog
-from luminous_sim.cssg import ROBOT_RADIUS, ckl_figures, floor_measures, presence, reference_rooms
+from luminous_sim.cssg import (
+    GROUPS,
+    ROBOT_RADIUS,
+    GroupState,
+    ckl_figures,
+    floor_measures,
+    generate_house,
+    group_rates,
+    house_rooms,
+    presence,
+    reference_rooms,
+    room_groups,
+)
+from luminous_sim.errors import InfeasibleSceneError
 from luminous_sim.vocab import ROOM_TYPES
 from luminous_sim.vocab.agent_body import AGENT_RADIUS
 
 RADII = (ROBOT_RADIUS, AGENT_RADIUS, 0.3)
 """PhyScene's code's half width (the default), our agent's radius, and the issue's 0.3 m."""
+HOUSE_CDF = Path(__file__).resolve().parents[1] / "cdf" / "examples" / "houses" / "default_house.yaml"
 
 
 @dataclass
@@ -54,6 +76,7 @@ class Cell:
     accessible: dict[float, list[float]] = field(default_factory=dict)
     inaccessible: dict[str, int] = field(default_factory=dict)
     presence: list[frozenset[str]] = field(default_factory=list)
+    groups: list[dict[str, GroupState]] = field(default_factory=list)
     seconds: list[float] = field(default_factory=list)
 
 
@@ -75,6 +98,7 @@ def measure_scene(cell: Cell, scene) -> None:
     cell.colliding += len(col.colliding)
     cell.scene_collides.append(bool(col.colliding))
     cell.presence.append(presence(scene))
+    cell.groups.append(room_groups(scene, catalog))
     cell.seconds.append(time.perf_counter() - t0)
 
 
@@ -94,10 +118,73 @@ def run(methods: list[str], room_types: list[str], n: int) -> dict[str, dict[str
                         cell.walkable.setdefault(r, []).append(0.0)
                         cell.accessible.setdefault(r, []).append(0.0)
                     cell.scene_collides.append(True)
+                    cell.groups.append({g: GroupState(False, False, 0) for g in GROUPS.values()})
                     continue
                 cell.scenes += 1
                 measure_scene(cell, outcome.scene)
     return cells
+
+
+@dataclass
+class Houses:
+    """The houses' rooms per room type, and the houses as wholes."""
+
+    seeds: int = 0
+    failed: list[int] = field(default_factory=list)
+    rooms: dict[str, list[dict[str, GroupState]]] = field(default_factory=dict)
+    whole: Cell = field(default_factory=Cell)
+
+
+def houses(n: int) -> Houses:
+    doc = cdf.load(HOUSE_CDF)
+    house_types = [r.type for r in doc.scene.house.rooms]
+    out = Houses()
+    for seed in range(n):
+        out.seeds += 1
+        try:
+            house = generate_house(doc, seed=seed)
+        except InfeasibleSceneError:
+            out.failed.append(seed)
+            for rt in house_types:
+                out.rooms.setdefault(rt, []).append({g: GroupState(False, False, 0) for g in GROUPS.values()})
+            continue
+        for rt, scene in house_rooms(house).values():
+            out.rooms.setdefault(rt, []).append(room_groups(scene))
+        out.whole.seeds += 1
+        out.whole.scenes += 1
+        measure_scene(out.whole, house.scene)
+    return out
+
+
+def group_table(cells: dict[str, dict[str, Cell]], homes: Houses | None) -> tuple[list[str], dict]:
+    lines = ["functional groups: rooms holding the group; of those, rooms where it is met"]
+    data: dict = {}
+    rows = [(m, rt, c.groups) for m, per in cells.items() for rt, c in per.items()]
+    if homes is not None:
+        rows += [(f"house ({homes.seeds})", rt, g) for rt, g in homes.rooms.items()]
+    alone = {(rt, name) for rt, c in cells.get("cssg", {}).items()
+             for name, r in group_rates(c.groups).items() if r["held"]}
+    for m, rt, groups in rows:
+        for name, r in group_rates(groups).items():
+            if not r["held"] and not (m.startswith("house") and (rt, name) in alone):
+                continue  # a group no room of the type holds (a house room lacking one CSSG's rooms hold is shown)
+            lines.append(f"  {m:12s} {rt:10s} {name:38s} held {wilson(r['held'], r['rooms']):>22s}  "
+                         f"met {wilson(r['met'], r['held']):>22s}")
+            data.setdefault(m, {}).setdefault(rt, {})[name] = r
+    if homes is not None:
+        w = homes.whole
+        lines.append(f"houses as wholes ({w.scenes}/{homes.seeds} generated; failed seeds {homes.failed or 'none'}): "
+                     f"objects colliding {wilson(w.colliding, w.objects)}")
+        for r in RADII:
+            if w.walkable.get(r):
+                lines.append(f"  radius {r:g} m: walkable median {statistics.median(w.walkable[r]):.3f}, "
+                             f"accessible median {statistics.median(w.accessible[r]):.3f}, "
+                             f"at 1.0 {wilson(*_ideal(w.accessible[r], 1.0))}")
+        data["houses"] = {"seeds": homes.seeds, "failed": homes.failed, "objects": w.objects,
+                          "colliding": w.colliding, "inaccessible": w.inaccessible,
+                          "walkable": {str(r): v for r, v in w.walkable.items()},
+                          "accessible": {str(r): v for r, v in w.accessible.items()}}
+    return lines, data
 
 
 def wilson(k: int, n: int) -> str:
@@ -164,6 +251,7 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--methods", nargs="+", default=["cssg", "uniform", "learned"], choices=sorted(METHODS))
     parser.add_argument("--room-types", nargs="+", default=list(ROOM_TYPES), choices=list(ROOM_TYPES))
     parser.add_argument("--draws", type=int, default=200, help="random halves for CKL (default 200)")
+    parser.add_argument("--houses", type=int, default=20, help="houses for the functional groups (default 20; 0: none)")
     parser.add_argument("--json", type=Path, default=None, help="also write the figures here")
     args = parser.parse_args(argv)
     print(machine())
@@ -171,6 +259,8 @@ def main(argv: list[str] | None = None) -> int:
     cells = run(args.methods, args.room_types, args.n)
     text, data = tables(cells, args.draws)
     print(text)
+    lines, data["groups"] = group_table(cells, houses(args.houses) if args.houses else None)
+    print("\n".join(lines))
     print(f"{time.perf_counter() - start:.0f} s")
     if args.json is not None:
         args.json.write_text(json.dumps(data, indent=1, sort_keys=True) + "\n")

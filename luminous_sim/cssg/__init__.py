@@ -12,6 +12,7 @@ Typical use::
 
 from luminous_sim.cssg.baseline import empty_cdf, generate_uniform, sample_uniform
 from luminous_sim.cssg.given import GivenScene, Placement, Repair, place_given
+from luminous_sim.cssg.groups import GROUPS, GroupState, group_rates, house_rooms, room_groups
 from luminous_sim.cssg.house import HouseGenerated, HouseReport, generate_house
 from luminous_sim.cssg.measures import (
     ROBOT_RADIUS,
@@ -29,11 +30,13 @@ from luminous_sim.cssg.validate import LayoutReport, RelationCheck, check_layout
 
 __all__ = [
     "ATTEMPTS",
+    "GROUPS",
     "ROBOT_RADIUS",
     "CKLFigures",
     "FloorMeasures",
     "Generated",
     "GivenScene",
+    "GroupState",
     "HouseGenerated",
     "HouseReport",
     "LayoutReport",
@@ -50,9 +53,12 @@ __all__ = [
     "generate",
     "generate_house",
     "generate_uniform",
+    "group_rates",
+    "house_rooms",
     "place_given",
     "presence",
     "reference_rooms",
+    "room_groups",
     "sample_layout",
     "sample_uniform",
     "start_outside",

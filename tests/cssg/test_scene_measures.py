@@ -5,8 +5,10 @@ from __future__ import annotations
 
 import json
 import math
+from pathlib import Path
 
 import pytest
+from shapely.geometry import Point
 
 from luminous_sim.assets.catalog import default_catalog
 from luminous_sim.cssg import (
@@ -16,8 +18,12 @@ from luminous_sim.cssg import (
     empty_cdf,
     floor_measures,
     generate,
+    generate_house,
+    group_rates,
+    house_rooms,
     presence,
     reference_rooms,
+    room_groups,
 )
 from luminous_sim.scene import Scene, SceneObject
 from luminous_sim.world import scene_collisions
@@ -106,3 +112,33 @@ def test_the_shipped_reference_is_what_the_converter_makes(shared_alfred):
     assert shipped["trajectories"] == made["trajectories"] + 6574 == 251 + 6574
     assert all(set(made["room_types"][rt]["instances"]) <= set(shipped["room_types"][rt]["instances"])
                for rt in made["room_types"])
+
+
+def test_a_side_table_moved_from_the_bed_breaks_its_group():
+    """Negative control of the functional groups: a bedroom's side table carried to the far corner is still
+    held, and no longer met."""
+    scene = next(s for seed in range(8) if (s := generate(empty_cdf("Bedroom"), seed=seed).scene)
+                 and room_groups(s)["side tables at the bed's head"].met)
+    bed = next(o for o in scene.objects if o.type == "Bed")
+    far = max(scene.room.polygon().exterior.coords, key=lambda p: math.dist(p, bed.position[:2]))
+    moved = tuple(o.model_copy(update={"position": (far[0] * 0.9 + 0.1, far[1] * 0.9 + 0.1, o.position[2])})
+                  if o.type == "SideTable" else o for o in scene.objects)
+    state = room_groups(Scene(room=scene.room, seed=scene.seed, generator=scene.generator, objects=moved))
+    assert state["side tables at the bed's head"].held and not state["side tables at the bed's head"].met
+
+
+def test_a_house_splits_into_its_rooms_and_keeps_their_groups():
+    from luminous_sim import cdf
+
+    doc = cdf.load(Path(__file__).resolve().parents[2] / "cdf" / "examples" / "houses" / "default_house.yaml")
+    house = generate_house(doc, seed=0)
+    rooms = house_rooms(house)
+    assert sorted(rooms) == sorted(r.name for r in doc.scene.house.rooms)
+    ids = [o.id for _, scene in rooms.values() for o in scene.objects]
+    assert sorted(ids) == sorted(o.id for o in house.scene.objects)  # every thing in exactly one room
+    for name, (room_type, scene) in rooms.items():
+        assert room_type == next(r.type for r in doc.scene.house.rooms if r.name == name)
+        shell = scene.room.polygon().buffer(0.5)
+        assert all(shell.contains(Point(o.position[:2])) for o in scene.objects if o.parent is None)
+    groups = group_rates(room_groups(s) for t, s in rooms.values() if t == "LivingRoom")
+    assert groups["a sofa facing the TV or coffee table"] == {"rooms": 1, "held": 1, "met": 1}
