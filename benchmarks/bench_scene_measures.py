@@ -137,6 +137,7 @@ class Houses:
 
 def houses(n: int) -> Houses:
     doc = cdf.load(HOUSE_CDF)
+    assert doc.scene.house is not None, HOUSE_CDF
     house_types = [r.type for r in doc.scene.house.rooms]
     out = Houses()
     for seed in range(n):
@@ -148,8 +149,8 @@ def houses(n: int) -> Houses:
             for rt in house_types:
                 out.rooms.setdefault(rt, []).append({g: GroupState(False, False, 0) for g in GROUPS.values()})
             continue
-        for rt, scene in house_rooms(house).values():
-            out.rooms.setdefault(rt, []).append(room_groups(scene))
+        for kind, scene in house_rooms(house).values():
+            out.rooms.setdefault(kind, []).append(room_groups(scene))
         out.whole.seeds += 1
         out.whole.scenes += 1
         measure_scene(out.whole, house.scene)
@@ -165,12 +166,12 @@ def group_table(cells: dict[str, dict[str, Cell]], homes: Houses | None) -> tupl
     alone = {(rt, name) for rt, c in cells.get("cssg", {}).items()
              for name, r in group_rates(c.groups).items() if r["held"]}
     for m, rt, groups in rows:
-        for name, r in group_rates(groups).items():
-            if not r["held"] and not (m.startswith("house") and (rt, name) in alone):
+        for name, g in group_rates(groups).items():
+            if not g["held"] and not (m.startswith("house") and (rt, name) in alone):
                 continue  # a group no room of the type holds (a house room lacking one CSSG's rooms hold is shown)
-            lines.append(f"  {m:12s} {rt:10s} {name:38s} held {wilson(r['held'], r['rooms']):>22s}  "
-                         f"met {wilson(r['met'], r['held']):>22s}")
-            data.setdefault(m, {}).setdefault(rt, {})[name] = r
+            lines.append(f"  {m:12s} {rt:10s} {name:38s} held {wilson(g['held'], g['rooms']):>22s}  "
+                         f"met {wilson(g['met'], g['held']):>22s}")
+            data.setdefault(m, {}).setdefault(rt, {})[name] = g
     if homes is not None:
         w = homes.whole
         lines.append(f"houses as wholes ({w.scenes}/{homes.seeds} generated; failed seeds {homes.failed or 'none'}): "
@@ -202,7 +203,8 @@ def _ideal(values: list[float], ideal: float) -> tuple[int, int]:
 
 def tables(cells: dict[str, dict[str, Cell]], draws: int) -> tuple[str, dict]:
     catalog_types = default_catalog().types()
-    lines, data = [], {}
+    lines: list[str] = []
+    data: dict = {}
     lines.append("object collision rate (collision meshes, support and containment excluded)")
     lines.append(f"  {'method':8s} {'room type':10s} {'scenes':>9s} {'objects colliding (pooled)':>30s} "
                  f"{'scenes with none':>24s}")

@@ -59,7 +59,7 @@ def house_rooms(house: HouseGenerated) -> dict[str, tuple[str, Scene]]:
             oid = parent[oid]
         return top.get(oid)
 
-    out = {}
+    out: dict[str, tuple[str, Scene]] = {}
     for shell in house.plan.rooms:
         objects = tuple(o for o in scene.objects if room_of(o.id) == shell.name)
         out[shell.name] = (shell.room_type, Scene(room=shell, seed=scene.seed, generator=scene.generator,
