@@ -74,7 +74,11 @@ class Cell:
     scene_collides: list[bool] = field(default_factory=list)
     walkable: dict[float, list[float]] = field(default_factory=dict)
     accessible: dict[float, list[float]] = field(default_factory=dict)
+    accessible_all: dict[float, list[float]] = field(default_factory=dict)
+    wall_reach: dict[float, list[float]] = field(default_factory=dict)
     inaccessible: dict[str, int] = field(default_factory=dict)
+    inaccessible_other: dict[str, int] = field(default_factory=dict)
+    out_of_reach: dict[str, int] = field(default_factory=dict)
     presence: list[frozenset[str]] = field(default_factory=list)
     groups: list[dict[str, GroupState]] = field(default_factory=list)
     seconds: list[float] = field(default_factory=list)
@@ -89,10 +93,14 @@ def measure_scene(cell: Cell, scene) -> None:
         fm = floor_measures(scene, catalog, r)
         cell.walkable.setdefault(r, []).append(fm.walkable_rate)
         cell.accessible.setdefault(r, []).append(fm.accessible_rate)
+        cell.accessible_all.setdefault(r, []).append(fm.accessible_rate_all)
+        cell.wall_reach.setdefault(r, []).append(fm.wall_reach_rate)
         if r == ROBOT_RADIUS:
             types = {o.id: o.type for o in scene.objects}
-            for oid in fm.inaccessible:
-                cell.inaccessible[types[oid]] = cell.inaccessible.get(types[oid], 0) + 1
+            for ids, counts in ((fm.inaccessible, cell.inaccessible), (fm.inaccessible_above, cell.inaccessible_other),
+                                (fm.out_of_reach, cell.out_of_reach)):
+                for oid in ids:
+                    counts[types[oid]] = counts.get(types[oid], 0) + 1
     col = scene_collisions(scene)
     cell.objects += col.objects
     cell.colliding += len(col.colliding)
@@ -115,8 +123,8 @@ def run(methods: list[str], room_types: list[str], n: int) -> dict[str, dict[str
                 outcome = method.make(rt, seed)
                 if outcome.scene is None:
                     for r in RADII:
-                        cell.walkable.setdefault(r, []).append(0.0)
-                        cell.accessible.setdefault(r, []).append(0.0)
+                        for values in (cell.walkable, cell.accessible, cell.accessible_all, cell.wall_reach):
+                            values.setdefault(r, []).append(0.0)
                     cell.scene_collides.append(True)
                     cell.groups.append({g: GroupState(False, False, 0) for g in GROUPS.values()})
                     continue
@@ -216,7 +224,9 @@ def tables(cells: dict[str, dict[str, Cell]], draws: int) -> tuple[str, dict]:
             data.setdefault(m, {}).setdefault(rt, {})["collision"] = {
                 "objects": c.objects, "colliding": c.colliding, "scenes": c.scenes, "seeds": c.seeds,
                 "scenes_without": free}
-    for label, attr in (("walkable rate", "walkable"), ("accessible rate", "accessible")):
+    for label, attr in (("walkable rate", "walkable"), ("accessible rate (things on the floor)", "accessible"),
+                        ("accessible rate over every thing (wall pieces, things centred high)", "accessible_all"),
+                        ("wall pieces within the agent's reach (1.5 m from its camera)", "wall_reach")):
         for r in RADII:
             lines.append(f"{label} at radius {r:g} m: median over scenes, scenes at 1.0")
             for m, per in cells.items():
@@ -237,12 +247,15 @@ def tables(cells: dict[str, dict[str, Cell]], draws: int) -> tuple[str, dict]:
             closer = "floor" if f.generated - f.floor < f.ceiling - f.generated else "ceiling"
             lines.append(f"  {m:8s} {rt:10s} {f.floor:7.3f} {f.generated:7.3f} {f.ceiling:8.3f}  {closer}")
             data[m][rt]["ckl"] = f.to_dict()
-    lines.append("inaccessible at the default radius, by type (scenes' objects):")
+    lines.append("missed at the default radius, by type (scenes' objects): on the floor | wall pieces and high things "
+                 "| wall pieces out of reach")
     for m, per in cells.items():
         for rt, c in per.items():
-            worst = sorted(c.inaccessible.items(), key=lambda kv: -kv[1])[:6]
-            lines.append(f"  {m:8s} {rt:10s} " + (", ".join(f"{t} {k}" for t, k in worst) or "none"))
-            data[m][rt]["inaccessible"] = c.inaccessible
+            parts = [", ".join(f"{t} {k}" for t, k in sorted(d.items(), key=lambda kv: -kv[1])[:6]) or "none"
+                     for d in (c.inaccessible, c.inaccessible_other, c.out_of_reach)]
+            lines.append(f"  {m:8s} {rt:10s} " + " | ".join(parts))
+            data[m][rt].update(inaccessible=c.inaccessible, inaccessible_other=c.inaccessible_other,
+                               out_of_reach=c.out_of_reach)
             data[m][rt]["seconds_median"] = statistics.median(c.seconds) if c.seconds else None
     return "\n".join(lines), data
 

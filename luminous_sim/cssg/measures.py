@@ -4,8 +4,10 @@ read off a finished scene's geometry alone, so that every generator is measured 
 
 - walkable rate: the free floor (the floor less interior walls and the footprints of what stands in the agent's
   way) eroded by the robot's radius, the part of it connected to the door, over all of it;
-- accessible rate: the objects whose footprint, dilated by the robot's radius, meets a walkable region, as a share
-  of the objects, each region weighted by its share of the walkable area (PhyScene's `accessable_rate`);
+- accessible rate: the things on the floor whose footprint, dilated by the robot's radius, meets a walkable region,
+  as a share of them, each region weighted by its share of the walkable area (PhyScene's `accessable_rate`);
+  beside it the same over every thing, wall pieces and high ones too, and the wall pieces within the agent's
+  reach (ALFRED's 1.5 m from the camera) of the walkable floor;
 - category presence per room and the category KL divergence (CKL) between two sets of rooms.
 
 The object collision rate needs the objects' collision meshes, so it lives with the simulator
@@ -29,6 +31,7 @@ from shapely.geometry.base import BaseGeometry
 
 from luminous_sim.assets.catalog import Catalog, default_catalog
 from luminous_sim.scene import Scene, SceneObject, blocks_agent, footprint
+from luminous_sim.vocab.agent_body import CAMERA_HEIGHT, VISIBILITY_DISTANCE
 
 ROBOT_RADIUS = 0.15
 """Metres the free floor is eroded by, and each object's footprint dilated by: half of PhyScene's `robot_width`
@@ -38,6 +41,9 @@ REACH_SLACK = 0.05
 MEASURED_HEIGHT = 1.5
 """Objects whose centre is higher (wall cabinets, shelves over a counter) are left out of the accessible rate, as
 PhyScene leaves boxes centred above 1.5 m out of its floor map; `accessible_rate_all` keeps them."""
+WALL_LAYER = "decoration"
+"""The layer of what hangs on a wall (paintings, switches, towel holders, windows' blinds): not on the floor, so
+out of PhyScene's population (3D-FRONT's rooms have no such things), measured by reach instead."""
 
 
 @dataclass
@@ -47,17 +53,25 @@ class FloorMeasures:
     walkable_rate: float
     accessible_rate: float
     accessible_rate_all: float
-    """The accessible rate over every top-level thing, whatever its height."""
+    """The accessible rate over every top-level thing, wall pieces and things centred high included."""
+    wall_reach_rate: float
+    """The wall pieces within the agent's reach (VISIBILITY_DISTANCE from its camera, standing on a walkable
+    region), weighted by region as the accessible rate is; 1.0 when there are none."""
     walkable_area: float
     """Square metres of free floor after erosion (the walkable rate's denominator)."""
     regions: int
     """Connected regions of the eroded free floor."""
     objects: int
-    """Top-level things centred below MEASURED_HEIGHT (the accessible rate's population)."""
+    """Top-level things on the floor centred below MEASURED_HEIGHT (the accessible rate's population)."""
+    wall_pieces: int = 0
+    """Top-level things on the walls (WALL_LAYER; `wall_reach_rate`'s population)."""
     inaccessible: list[str] = field(default_factory=list)
-    """Ids of those no walkable region meets."""
+    """Ids of those on the floor that no walkable region meets."""
     inaccessible_above: list[str] = field(default_factory=list)
-    """Ids of the things centred higher that no walkable region meets (the rest of `accessible_rate_all`'s misses)."""
+    """Ids of the other things (wall pieces, things centred higher) that no walkable region meets within the radius
+    (the rest of `accessible_rate_all`'s misses)."""
+    out_of_reach: list[str] = field(default_factory=list)
+    """Ids of the wall pieces out of the agent's reach from every walkable region."""
     doors: list[str] = field(default_factory=list)
     """The doors whose region was measured (their rates averaged, as PhyScene does); empty: no door, the largest
     region stands for the door's."""
@@ -68,6 +82,10 @@ class FloorMeasures:
 
 def _measured(obj: SceneObject) -> bool:
     return obj.parent is None and obj.layer != "structure"
+
+
+def _on_floor(obj: SceneObject, catalog: Catalog) -> bool:
+    return obj.layer != WALL_LAYER and _centre_height(obj, catalog) <= MEASURED_HEIGHT
 
 
 def free_floor(scene: Scene, catalog: Catalog | None = None, radius: float = ROBOT_RADIUS) -> BaseGeometry:
@@ -100,10 +118,13 @@ def floor_measures(scene: Scene, catalog: Catalog | None = None, radius: float =
     regions = _regions(free_floor(scene, catalog, radius))
     total = sum(r.area for r in regions)
     doors = _door_points(scene)
+    things = [o for o in scene.objects if _measured(o)]
+    low = {o.id for o in things if _on_floor(o, catalog)}
+    wall = sorted(o.id for o in things if o.layer == WALL_LAYER)
     if not total:
-        low = [o.id for o in scene.objects if _measured(o) and _centre_height(o, catalog) <= MEASURED_HEIGHT]
-        high = [o.id for o in scene.objects if _measured(o) and o.id not in low]
-        return FloorMeasures(0.0, 0.0, 0.0, 0.0, 0, len(low), sorted(low), sorted(high), [d for d, _ in doors])
+        high = sorted(o.id for o in things if o.id not in low)
+        return FloorMeasures(0.0, 0.0, 0.0, 0.0, 0.0, 0, len(low), len(wall), sorted(low), high, wall,
+                             [d for d, _ in doors])
     if doors:
         rates = []
         for _, point in doors:
@@ -113,21 +134,23 @@ def floor_measures(scene: Scene, catalog: Catalog | None = None, radius: float =
         walkable = sum(rates) / len(rates)
     else:
         walkable = max(r.area for r in regions) / total
-    things = [o for o in scene.objects if _measured(o)]
     shapes = {o.id: footprint(catalog.for_object(o), o.position[0], o.position[1], o.yaw) for o in things}
-    low = {o.id for o in things if _centre_height(o, catalog) <= MEASURED_HEIGHT}
     meets = {oid: {i for i, r in enumerate(regions) if shp.distance(r) <= radius + REACH_SLACK}
              for oid, shp in shapes.items()}
+    heights = {o.id: abs(_centre_height(o, catalog) - CAMERA_HEIGHT) for o in things if o.layer == WALL_LAYER}
+    reaches = {oid: {i for i, r in enumerate(regions) if math.hypot(shapes[oid].distance(r), h) <= VISIBILITY_DISTANCE}
+               for oid, h in heights.items()}
 
-    def rate(ids: Sequence[str]) -> float:
+    def rate(ids: Sequence[str], by: Mapping[str, set[int]]) -> float:
         if not ids:
             return 1.0
-        return sum(sum(1 for oid in ids if i in meets[oid]) / len(ids) * r.area / total
+        return sum(sum(1 for oid in ids if i in by[oid]) / len(ids) * r.area / total
                    for i, r in enumerate(regions))
 
     missed = {oid for oid, m in meets.items() if not m}
-    return FloorMeasures(walkable, rate(sorted(low)), rate(sorted(shapes)), total, len(regions), len(low),
-                         sorted(missed & low), sorted(missed - low), [d for d, _ in doors])
+    return FloorMeasures(walkable, rate(sorted(low), meets), rate(sorted(shapes), meets), rate(wall, reaches), total,
+                         len(regions), len(low), len(wall), sorted(missed & low), sorted(missed - low),
+                         sorted(oid for oid, m in reaches.items() if not m), [d for d, _ in doors])
 
 
 def _centre_height(obj: SceneObject, catalog: Catalog) -> float:

@@ -74,6 +74,24 @@ def test_a_thing_under_the_bed_is_not_accessible():
     assert hidden.inaccessible == ["GarbageCan|extra0"] and hidden.accessible_rate < 1.0
 
 
+def test_a_wall_piece_hung_too_high_is_out_of_reach(living):
+    """Wall pieces are measured by the agent's reach (1.5 m from its camera), not by PhyScene's floor contact: a
+    painting hung on the middle of a wall at 1.4 m is reached; the same painting at 3.2 m is not."""
+    catalog = default_catalog()
+    assert floor_measures(living).out_of_reach == []
+    wall = living.room.walls[0]
+    x, y = wall.point(wall.length / 2, 0.01)
+    painting = catalog.of_type("Painting")[0]
+    for z, reached in ((1.4, True), (3.2, False)):
+        hung = SceneObject(id="Painting|extra", type="Painting", asset=painting.id, position=(x, y, z), yaw=wall.yaw,
+                           layer="decoration")
+        scene = Scene(room=living.room, seed=0, generator="test", objects=(*living.objects, hung))
+        m = floor_measures(scene, catalog)
+        assert ("Painting|extra" not in m.out_of_reach) is reached, (z, m.out_of_reach)
+        assert "Painting|extra" not in m.inaccessible  # a wall piece is not in PhyScene's floor population
+    assert m.wall_reach_rate < 1.0
+
+
 def test_a_region_cut_off_from_the_door_counts_against_walkable(living):
     # a row of sofas wall to wall across the room: the far side is free floor no one walks to from the door
     catalog = default_catalog()
