@@ -32,11 +32,11 @@ from typing import Any
 
 import numpy as np
 
-from luminous_sim.assets.objio import write_atomic
 from luminous_sim.benchmark import benchmark_entry, benchmark_size
 from luminous_sim.eval import EpisodeOutcome
 from luminous_sim.eval.report import TABLE4_ROWS
 from luminous_sim.eval.workers import map_local
+from luminous_sim.fileio import write_atomic
 
 VARIANTS = ("parsed", "given", "no-steps")
 """parsed: the reference agent (directive and steps parsed); given: the task's type and `pddl_params` given to

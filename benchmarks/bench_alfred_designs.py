@@ -104,7 +104,7 @@ def main(argv: list[str] | None = None) -> int:
     rows = [done[p] for p in paths]
     print(f"\n{len(todo)} designs solved in {time.perf_counter() - t0:.0f} s\n")
     report(rows)
-    from luminous_sim.assets.objio import write_atomic
+    from luminous_sim.fileio import write_atomic
 
     summary = {"split": str(args.split), "seed": args.seed, "tries": args.tries, "designs": rows}
     write_atomic(args.out, json.dumps(summary, indent=1))

@@ -38,10 +38,10 @@ from typing import Any
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from luminous_sim.assets.objio import write_atomic
 from luminous_sim.bc import CHECKPOINT_VAR, collect_demos, load_demos, pickup_env, play_pickup, train_bc
 from luminous_sim.benchmark import benchmark_entry
 from luminous_sim.eval import EpisodeOutcome, Metrics, make_agent, map_local, metrics
+from luminous_sim.fileio import write_atomic
 
 SPLITS = ("S+", "U+")
 FIRST_TRAINING = 28

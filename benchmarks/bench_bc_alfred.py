@@ -34,10 +34,10 @@ sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from machine import machine
 
-from luminous_sim.assets.objio import write_atomic
 from luminous_sim.bc import ALFRED_ENV, CHECKPOINT_VAR, collect_demos, train_bc
 from luminous_sim.benchmark import benchmark_entries
 from luminous_sim.eval import EvalReport, evaluate, map_local, markdown_table
+from luminous_sim.fileio import write_atomic
 from luminous_sim.vocab import ALFRED_TASK_TYPES
 
 SPLITS = ("S+", "U+")

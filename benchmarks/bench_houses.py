@@ -146,7 +146,8 @@ def oracle(houses: dict[tuple[int, int], HouseGenerated], oracle_seeds: int) -> 
 
 
 def _picture(house: HouseGenerated, path: Path) -> None:
-    from luminous_sim.assets.objio import png_bytes, write_atomic
+    from luminous_sim.assets.objio import png_bytes
+    from luminous_sim.fileio import write_atomic
     from luminous_sim.scene import scene_reachable_grid
     from luminous_sim.world import build_scene, top_down
 

@@ -54,7 +54,7 @@ sys.path[:0] = [str(ROOT), str(ROOT / "examples")]
 
 import train_ppo  # noqa: E402  (examples/train_ppo.py)
 
-from luminous_sim.assets.objio import write_atomic  # noqa: E402
+from luminous_sim.fileio import write_atomic  # noqa: E402
 
 ENV_ID = "Luminous-NavToObject-64-v1"
 POLICIES = ("random", "random-nav", "oracle", "ppo")

@@ -58,7 +58,6 @@ import gymnasium
 import numpy as np
 
 import luminous_sim  # noqa: F401  (registers the ids)
-from luminous_sim.assets.objio import write_atomic
 from luminous_sim.env import (
     ActionFeedback,
     ActionSubset,
@@ -68,6 +67,7 @@ from luminous_sim.env import (
     SceneRepeat,
 )
 from luminous_sim.env.actions import NAVIGATION, STOP
+from luminous_sim.fileio import write_atomic
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))  # the examples' own modules, when imported from elsewhere
 from dagger import WarmStart, critic_first, warm_start

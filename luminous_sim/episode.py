@@ -13,11 +13,11 @@ from typing import Any
 import numpy as np
 
 from luminous_sim.assets.catalog import Catalog
-from luminous_sim.assets.objio import write_atomic
 from luminous_sim.cdf import AgentPoseSpec, Expr
 from luminous_sim.cdf.schema import HighLevelStep, LowLevelStep
 from luminous_sim.episodes import EpisodeSpec
 from luminous_sim.errors import Failure, FailureCode
+from luminous_sim.fileio import atomic_file, write_atomic
 from luminous_sim.planning import Trajectory
 from luminous_sim.scene import Scene
 from luminous_sim.tasks import TaskInstance, check_initial, scene_with_initial
@@ -80,18 +80,14 @@ def poses_along(traj: Trajectory, start: AgentPose) -> list[AgentPose]:
 
 def write_video(frames: list[np.ndarray], path: Path, fps: int = 6) -> Path:
     """An MP4 of the frames (OpenCV, mp4v), written to a temporary name then moved into place."""
-    import os
-
     import cv2
 
-    path.parent.mkdir(parents=True, exist_ok=True)
-    tmp = path.with_name(f".{path.stem}.tmp{path.suffix}")
     h, w = frames[0].shape[:2]
-    writer = cv2.VideoWriter(str(tmp), cv2.VideoWriter.fourcc(*"mp4v"), fps, (w, h))
-    for f in frames:
-        writer.write(cv2.cvtColor(f, cv2.COLOR_RGB2BGR))
-    writer.release()
-    os.replace(tmp, path)
+    with atomic_file(path, suffix=path.suffix) as tmp:  # OpenCV picks the container by the suffix
+        writer = cv2.VideoWriter(str(tmp), cv2.VideoWriter.fourcc(*"mp4v"), fps, (w, h))
+        for f in frames:
+            writer.write(cv2.cvtColor(f, cv2.COLOR_RGB2BGR))
+        writer.release()
     return path
 
 

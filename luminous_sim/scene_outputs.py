@@ -9,8 +9,9 @@ from pathlib import Path
 
 import numpy as np
 
-from luminous_sim.assets.objio import png_bytes, write_atomic
+from luminous_sim.assets.objio import png_bytes
 from luminous_sim.cssg import Generated, HouseGenerated, HouseReport, LayoutReport, floor_measures
+from luminous_sim.fileio import write_atomic
 
 
 def write_scene_outputs(generated: Generated | HouseGenerated, out_dir: Path, physics: bool = True) -> dict:

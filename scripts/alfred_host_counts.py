@@ -27,7 +27,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
 from luminous_sim.assets.catalog import default_catalog
-from luminous_sim.assets.objio import write_atomic
+from luminous_sim.fileio import write_atomic
 from luminous_sim.vocab import ALL_TYPES, vocab_data
 
 ROOT = Path(__file__).resolve().parents[1]

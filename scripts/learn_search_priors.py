@@ -13,8 +13,8 @@ from collections import Counter, defaultdict
 from pathlib import Path
 
 from luminous_sim.agents.priors import SearchPriors
-from luminous_sim.assets.objio import write_atomic
 from luminous_sim.env import LuminousEnv
+from luminous_sim.fileio import write_atomic
 from luminous_sim.scene import Scene
 
 

@@ -21,7 +21,7 @@ import numpy as np
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))
 
-from luminous_sim.assets.objio import write_atomic  # noqa: E402
+from luminous_sim.fileio import write_atomic  # noqa: E402
 
 
 def _pair(text: str, what: str) -> tuple[str, str]:

@@ -10,7 +10,7 @@ from pathlib import Path
 PKG = Path(__file__).resolve().parents[1] / "luminous_sim"
 
 LAYER = {
-    "errors": 0, "lazy": 0, "limits": 0, "resources": 0, "vocab": 0, "assets": 0, "cdf": 0,
+    "errors": 0, "fileio": 0, "lazy": 0, "limits": 0, "resources": 0, "vocab": 0, "assets": 0, "cdf": 0,
     "scene": 1, "rooms": 1, "cssg": 1, "states": 1,
     "world": 2,
     "tasks": 3, "planning": 3, "language": 3, "splits": 3, "text": 3,

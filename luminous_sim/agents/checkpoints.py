@@ -4,30 +4,20 @@ every failure of foreign bytes turned into the caller's error naming the file.""
 from __future__ import annotations
 
 import io
-import os
-import tempfile
 from pathlib import Path
 from typing import Any
 
 import torch
 
 from luminous_sim.errors import LuminousError
+from luminous_sim.fileio import write_atomic
 
 
 def save_checkpoint(payload: dict[str, Any], path: Path) -> None:
     """Write `payload` with `torch.save` to `path` atomically (a temporary file beside it, then renamed)."""
     buffer = io.BytesIO()
     torch.save(payload, buffer)
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            fh.write(buffer.getvalue())
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    write_atomic(Path(path), buffer.getvalue())
 
 
 def load_checkpoint(path: Path, fmt: str, what: str, made_by: str, error: type[LuminousError]) -> dict[str, Any]:

@@ -13,10 +13,10 @@ from typing import Any
 
 from tqdm import tqdm
 
-from luminous_sim.assets.objio import write_atomic
 from luminous_sim.assets.paths import asset_root, coacd_cache_dir
 from luminous_sim.assets.registry import build_spec, builders
 from luminous_sim.assets.urdf_writer import write_asset
+from luminous_sim.fileio import write_atomic
 
 CATALOG_NAME = "catalog.json"
 CATALOG_VERSION = 1

@@ -10,7 +10,8 @@ from pathlib import Path
 import numpy as np
 import trimesh
 
-from luminous_sim.assets.objio import collision_obj, read_collision_obj, write_atomic
+from luminous_sim.assets.objio import collision_obj, read_collision_obj
+from luminous_sim.fileio import write_atomic
 
 COACD_PARAMS: dict[str, object] = {
     "threshold": 0.05,

@@ -12,11 +12,11 @@ import numpy as np
 import trimesh
 
 from luminous_sim.assets.catalog import CATALOG_NAME, Catalog
-from luminous_sim.assets.objio import write_atomic
 from luminous_sim.assets.paths import coacd_cache_dir, user_asset_root
 from luminous_sim.assets.spec import AssetSpec, Link, Part, Region
 from luminous_sim.assets.urdf_writer import write_asset
 from luminous_sim.errors import AssetError, path_kind
+from luminous_sim.fileio import write_atomic
 from luminous_sim.vocab import abilities, check_type
 
 MESH_SUFFIXES = {".obj", ".glb", ".gltf", ".stl", ".ply", ".off"}

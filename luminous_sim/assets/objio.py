@@ -2,11 +2,7 @@
 
 from __future__ import annotations
 
-import contextlib
-import os
-import tempfile
-from collections.abc import Iterator, Sequence
-from pathlib import Path
+from collections.abc import Sequence
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -86,28 +82,14 @@ def png_bytes(image) -> bytes:
     return buf.getvalue()
 
 
-def write_atomic(path: Path, text: str | bytes) -> None:
-    """Write a file so that readers see the old or the new content, never a torn one."""
-    data = text.encode() if isinstance(text, str) else text
-    with atomic_file(Path(path)) as tmp, open(tmp, "wb") as fh:
-        fh.write(data)
+def __getattr__(name: str):
+    """The atomic writers' old home, kept for one release (they live in `luminous_sim.fileio`)."""
+    if name in ("write_atomic", "atomic_file"):
+        import warnings
 
+        from luminous_sim import fileio
 
-@contextlib.contextmanager
-def atomic_file(path: Path, suffix: str = ".tmp") -> Iterator[Path]:
-    """A temporary file beside `path` for a writer (of `suffix`, for writers that pick a format by it), moved
-    onto `path` when the block ends without an error (removed when it raises): readers see the old file or the
-    new one, never a torn one."""
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=suffix)
-    os.close(fd)
-    try:
-        yield Path(tmp)
-        umask = os.umask(0)
-        os.umask(umask)
-        os.chmod(tmp, 0o666 & ~umask)  # mkstemp makes 0600; written files should read like any other
-        os.replace(tmp, path)
-    except BaseException:
-        if os.path.exists(tmp):
-            os.unlink(tmp)
-        raise
+        warnings.warn(f"luminous_sim.assets.objio.{name} moved to luminous_sim.fileio.{name}", DeprecationWarning,
+                      stacklevel=2)
+        return getattr(fileio, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

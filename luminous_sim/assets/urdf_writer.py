@@ -12,8 +12,9 @@ import trimesh
 from luminous_sim.assets.decompose import convex_hull, decompose, is_convex
 from luminous_sim.assets.lod import LOD_SUFFIX, decimate
 from luminous_sim.assets.materials import palette
-from luminous_sim.assets.objio import collision_obj, visual_obj, write_atomic
+from luminous_sim.assets.objio import collision_obj, visual_obj
 from luminous_sim.assets.spec import AssetSpec, Link, Part
+from luminous_sim.fileio import write_atomic
 from luminous_sim.vocab import abilities
 
 HIDDEN_BY_DEFAULT = {"on", "dirty", "open"}

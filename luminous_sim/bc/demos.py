@@ -21,11 +21,11 @@ from typing import Any
 
 import numpy as np
 
-from luminous_sim.assets.objio import write_atomic
 from luminous_sim.bc.family import Unavailable, family_env, reset_episode
 from luminous_sim.env import LuminousEnv
 from luminous_sim.env.vocabulary import encode
 from luminous_sim.errors import LuminousError
+from luminous_sim.fileio import write_atomic
 
 TOKENS = 16
 """Instruction tokens kept ("pick up the spray bottle" is 5)."""

@@ -18,11 +18,11 @@ import numpy as np
 import torch
 from torch import nn
 
-from luminous_sim.assets.objio import write_atomic
 from luminous_sim.bc.demos import TOKENS, Demo, demos_env, load_demos
 from luminous_sim.bc.model import BCPolicy, PolicyShape
 from luminous_sim.env.vocabulary import vocabulary
 from luminous_sim.errors import LuminousError, path_kind
+from luminous_sim.fileio import write_atomic
 from luminous_sim.limits import MAX_CHECKPOINT_BYTES
 from luminous_sim.vocab import ALL_TYPES
 

@@ -9,11 +9,13 @@ from __future__ import annotations
 import json
 import math
 from dataclasses import dataclass
+from functools import partial
 from pathlib import Path
 from typing import Any
 
 from luminous_sim.cdf.predicates import to_sexpr
 from luminous_sim.errors import LuminousError, json_field, read_json_file
+from luminous_sim.fileio import shown
 from luminous_sim.limits import MAX_INPUT_BYTES, MAX_LAYOUT_COORDINATE_M
 from luminous_sim.scene import Scene
 from luminous_sim.tasks import PddlParams, TaskInstance, goal_for, params_problems
@@ -62,10 +64,7 @@ def _field(data: Any, where: Path, *names: str) -> Any:
     return json_field(data, where, *names, error=TrialError)
 
 
-def _shown(value: Any) -> str:
-    text = repr(value)
-    return text if len(text) <= 60 else text[:57] + "..."
-
+_shown = partial(shown, limit=60)
 
 def _number(value: Any) -> bool:
     return isinstance(value, int | float) and not isinstance(value, bool) and math.isfinite(value)

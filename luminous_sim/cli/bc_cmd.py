@@ -92,9 +92,9 @@ def _train(args: argparse.Namespace) -> int:
 
 
 def _eval(args: argparse.Namespace) -> int:
-    from luminous_sim.assets.objio import write_atomic
     from luminous_sim.bc import ALFRED_ENV, CHECKPOINT_VAR, evaluate_pickup
     from luminous_sim.eval import check_policy, evaluate, metrics
+    from luminous_sim.fileio import write_atomic
 
     if args.checkpoint is not None:
         os.environ[CHECKPOINT_VAR] = str(args.checkpoint)

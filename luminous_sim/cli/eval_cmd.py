@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 
 from luminous_sim.cli.args import int_range, output_dir, seed
 from luminous_sim.data.backends import BACKENDS
+from luminous_sim.fileio import one_line
 from luminous_sim.limits import MAX_AGENT_MEMORY_MB, MAX_EVAL_EPISODES, MAX_STEP_TIMEOUT_S, MAX_WORKERS
 
 if TYPE_CHECKING:
@@ -137,7 +138,7 @@ def _run(args: argparse.Namespace) -> int:
     def show(o: EpisodeOutcome) -> None:
         what = o.end if o.drawn else f"unavailable ({o.cause})"
         gc = f"{o.goal_conditions[0]}/{o.goal_conditions[1]}" if o.drawn else "-"
-        why = "" if o.drawn or not o.detail else f"  {_shorten(o.detail)}"
+        why = "" if o.drawn or not o.detail else f"  {one_line(o.detail, 200)}"
         print(f"{o.split} {o.index:4d} {o.task_type:<34} {what:<22} gc {gc:<5} steps {o.steps:4d} "
               f"expert {o.expert_length:4d}{why}", file=sys.stderr)
 
@@ -203,11 +204,6 @@ def _run_text(args: argparse.Namespace, limits: object) -> int:
     return 0
 
 
-def _shorten(text: str, limit: int = 200) -> str:
-    text = " ".join(text.split())
-    return text if len(text) <= limit else text[: limit - 3] + "..."
-
-
 def _incomplete(report: EvalReport) -> int:
     """1 (and each cause on stderr) when entries are unavailable because of a crash, not of the task (the
     population is then incomplete), or because their trial is broken (`BROKEN_TRIAL`); else 0."""
@@ -218,7 +214,7 @@ def _incomplete(report: EvalReport) -> int:
     crashed = [o for o in outcomes if crashed_build(o)]
     unavailable = [o for o in outcomes if not o.drawn]
     for o in unavailable:
-        print(f"unavailable: {o.split} {o.index} ({o.cause}): {_shorten(o.detail or o.cause, 400)}", file=sys.stderr)
+        print(f"unavailable: {o.split} {o.index} ({o.cause}): {one_line(o.detail or o.cause, 400)}", file=sys.stderr)
     if crashed:
         print(f"error: {len(crashed)} of {len(outcomes)} entries are unavailable because their build crashed or "
               "made another episode than the frozen split (not a task failure): the population is incomplete; fix "

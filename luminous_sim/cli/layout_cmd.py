@@ -75,7 +75,7 @@ def _require(types: list[str]) -> tuple[str, ...]:
 
 def _run_import(args: argparse.Namespace) -> int:
     from luminous_sim import layouts
-    from luminous_sim.assets.objio import write_atomic
+    from luminous_sim.fileio import write_atomic
     from luminous_sim.scene_outputs import write_scene_outputs
 
     required = _require(args.require)

@@ -24,6 +24,7 @@ from statistics import median
 from typing import Any
 
 from luminous_sim.errors import LuminousError
+from luminous_sim.fileio import write_atomic
 from luminous_sim.rooms import scene_room_type
 
 REFERENCE_FILE = "alfred_rooms.json"
@@ -82,8 +83,6 @@ def main(argv: list[str] | None = None) -> int:
     if not args:
         print("usage: python -m luminous_sim.cssg.reference LAYOUTS_DIR [TRAJECTORY_DIR ...]", file=sys.stderr)
         return 2
-    from luminous_sim.assets.objio import write_atomic  # trimesh: kept out of world processes
-
     data = alfred_reference(Path(args[0]), [Path(a) for a in args[1:]])
     out = Path(str(resources.files("luminous_sim.cssg").joinpath(f"data/{REFERENCE_FILE}")))
     write_atomic(out, json.dumps(data, indent=1, sort_keys=True) + "\n")

@@ -26,10 +26,10 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
-from luminous_sim.assets.objio import write_atomic
 from luminous_sim.data.alfred_language import HumanLanguage, language_note, trial_annotations
 from luminous_sim.episode import EpisodeRecord, write_video
 from luminous_sim.errors import LuminousError
+from luminous_sim.fileio import write_atomic
 from luminous_sim.planning import Trajectory
 from luminous_sim.scene import Scene
 from luminous_sim.scene.ids import type_of_id

@@ -15,11 +15,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from luminous_sim.assets.objio import write_atomic
 from luminous_sim.cdf import ChallengeDefinition, dumps
 from luminous_sim.data.alfred_merge import MergedCDF, merge_by_floor_plan
 from luminous_sim.data.alfred_parser import AlfredParse, AlfredParseError, parse_alfred
 from luminous_sim.errors import InfeasibleSceneError
+from luminous_sim.fileio import write_atomic
 
 
 @dataclass(frozen=True)

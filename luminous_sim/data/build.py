@@ -48,11 +48,11 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Protocol
 
-from luminous_sim.assets.objio import write_atomic
 from luminous_sim.data.alfred_export import ExportError, export_alfred
 from luminous_sim.data.backends import Backend, map_jobs
 from luminous_sim.data.manifest import Manifest, Record, plain_name
 from luminous_sim.errors import LuminousError, link_or_kind
+from luminous_sim.fileio import one_line, write_atomic
 from luminous_sim.limits import MAX_BUILD_JOBS
 from luminous_sim.splits import oct21_document
 
@@ -485,8 +485,7 @@ class BuildReport:
 
 
 def _shorten(text: str | None, limit: int = 160) -> str:
-    text = " ".join((text or "").split())
-    return text if len(text) <= limit else text[: limit - 3] + "..."
+    return one_line(text or "", limit)
 
 
 class _Lock:

@@ -23,8 +23,8 @@ from collections.abc import Callable, Collection, Iterator
 from pathlib import Path
 from typing import Any
 
-from luminous_sim.assets.objio import write_atomic
 from luminous_sim.errors import LuminousError, read_file_bytes
+from luminous_sim.fileio import write_atomic
 
 Record = dict[str, Any]
 STATUSES = ("built", "failed")

@@ -31,10 +31,10 @@ from typing import Any
 
 import numpy as np
 
-from luminous_sim.assets.objio import write_atomic
 from luminous_sim.data.backends import Backend, map_jobs
 from luminous_sim.data.manifest import Manifest, Record
 from luminous_sim.errors import LuminousError
+from luminous_sim.fileio import write_atomic
 from luminous_sim.limits import MAX_BUILD_JOBS
 from luminous_sim.scene import Scene
 from luminous_sim.splits import PLUS_SPLITS

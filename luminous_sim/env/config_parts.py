@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import math
 import os
+from functools import partial
 from pathlib import Path
 from typing import Any, Literal, get_args
 
@@ -19,6 +20,7 @@ from luminous_sim.env.kinds import TASK_KINDS
 from luminous_sim.env.kinds.options import check_task_options, field_bounds
 from luminous_sim.env.rewards import RewardConfig
 from luminous_sim.errors import LuminousError
+from luminous_sim.fileio import shown
 from luminous_sim.vocab import ALFRED_TASK_TYPES, ROOM_TYPES
 
 RewardMode = Literal["dense", "sparse"]
@@ -48,11 +50,8 @@ MAX_CDF_FILES = 10_000
 """Most CDF files in `cdf` (each is checked to exist when the env is made)."""
 
 
-def short_repr(value: Any) -> str:
-    """A value for a one-line message (long ones cut)."""
-    text = repr(value).replace("\n", " ")
-    return text if len(text) <= 80 else text[:77] + "..."
-
+short_repr = partial(shown, limit=80)
+"""A value for a one-line message (long ones cut)."""
 
 class Settings(BaseModel):
     """One concern's settings: strict types (no 64.0 for an int, no "yes" for a bool), frozen, no unknown name."""

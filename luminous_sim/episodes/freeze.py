@@ -202,7 +202,7 @@ def freeze(split: str, workers: int = 1, log: Callable[[str], None] = print,
            checkpoint: Path | None = None) -> dict[str, Any]:
     """Draw split `split` and return its manifest (`{"header": ..., "entries": [...]}`); with `checkpoint`, each
     finished task type is saved there, and a freeze run again goes on from the types it holds."""
-    from luminous_sim.assets.objio import write_atomic
+    from luminous_sim.fileio import write_atomic
 
     t0 = time.perf_counter()
     counts = type_counts(split)
@@ -269,7 +269,7 @@ def freeze(split: str, workers: int = 1, log: Callable[[str], None] = print,
 
 def write_manifest(manifest: dict[str, Any], path: Path) -> None:
     """The manifest as JSON lines: the header, then one entry per line (atomically)."""
-    from luminous_sim.assets.objio import write_atomic
+    from luminous_sim.fileio import write_atomic
 
     lines = [json.dumps(manifest["header"], sort_keys=True)]
     lines += [json.dumps(e, sort_keys=True) for e in manifest["entries"]]

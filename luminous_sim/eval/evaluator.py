@@ -35,12 +35,12 @@ import shutil
 from collections import Counter
 from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass, field
+from functools import partial
 from pathlib import Path
 from typing import Any
 
 import numpy as np
 
-from luminous_sim.assets.objio import write_atomic
 from luminous_sim.benchmark import benchmark_entry, benchmark_size
 from luminous_sim.data.backends import Backend
 from luminous_sim.env import EnvConfig, EpisodeUnavailable, LuminousEnv
@@ -60,6 +60,7 @@ from luminous_sim.eval.sandbox import AgentCrashed, AgentLimits, AgentTimeout
 from luminous_sim.eval.tracks import agent_info, check_track, object_id_action, track_env
 from luminous_sim.eval.trials import trial_problem
 from luminous_sim.eval.workers import map_local, map_ordered
+from luminous_sim.fileio import shown, write_atomic
 from luminous_sim.limits import MAX_EPISODE_FILE_BYTES, MAX_EVAL_EPISODES, MAX_INPUT_BYTES
 from luminous_sim.splits import plus_split
 
@@ -277,10 +278,7 @@ def _not_an_action(action: Any) -> str:
     return "an action is an index of the action space or a dict with an 'action' name"
 
 
-def _shown(action: Any) -> str:
-    text = repr(action)
-    return text if len(text) <= 80 else text[:77] + "..."
-
+_shown = partial(shown, limit=80)
 
 _RUNNERS: dict[tuple[str, str, AgentLimits], tuple[LuminousEnv, Agent]] = {}
 """This process's env and agent per (policy, env options, agent limits): a user's agent is made once per worker

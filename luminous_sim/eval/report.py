@@ -13,9 +13,9 @@ import json
 from collections.abc import Sequence
 from pathlib import Path
 
-from luminous_sim.assets.objio import write_atomic
 from luminous_sim.eval.evaluator import EvalReport
 from luminous_sim.eval.metrics import Metrics, type_average
+from luminous_sim.fileio import write_atomic
 
 TABLE4_ROWS: tuple[tuple[str, str], ...] = (
     ("pick_and_place_simple", "Pick"),

@@ -19,11 +19,11 @@ from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import Any
 
-from luminous_sim.assets.objio import write_atomic
 from luminous_sim.eval.evaluator import episode_seed
 from luminous_sim.eval.policies import PolicyError, TextAgentContext, check_policy
 from luminous_sim.eval.report import TABLE4_ROWS
 from luminous_sim.eval.sandbox import AgentCrashed, AgentLimits, AgentProcess, AgentTimeout
+from luminous_sim.fileio import write_atomic
 
 TEXT_BUILT_IN: tuple[str, ...] = ("expert", "random")
 """Text policies that run in the evaluation's process."""

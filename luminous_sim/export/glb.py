@@ -54,7 +54,7 @@ def glb_scene(posed: PosedScene, ceiling: bool = True) -> trimesh.Scene:
 
 def write_glb(posed: PosedScene, out: Path, ceiling: bool = True) -> None:
     """Write the posed scene to `out` as binary glTF (metres; y up, as glTF wants, by the root node `scene`)."""
-    from luminous_sim.assets.objio import write_atomic
+    from luminous_sim.fileio import write_atomic
 
     data = glb_scene(posed, ceiling).export(file_type="glb")
     write_atomic(Path(out), bytes(data))

@@ -178,7 +178,7 @@ def mjcf_text(posed: PosedScene, options: MjcfOptions | None = None) -> str:
 
 def write_mjcf(posed: PosedScene, out: Path, options: MjcfOptions | None = None) -> None:
     """Write the posed scene to `out` as one self-contained MJCF file (meshes inlined)."""
-    from luminous_sim.assets.objio import write_atomic
+    from luminous_sim.fileio import write_atomic
 
     write_atomic(Path(out), mjcf_text(posed, options))
 

@@ -13,9 +13,9 @@ from typing import Any
 import numpy as np
 import trimesh
 
-from luminous_sim.assets.objio import atomic_file
 from luminous_sim.errors import LuminousError
 from luminous_sim.export.meshes import RGBA, box_matrix, box_mesh, object_matrix, visual_parts
+from luminous_sim.fileio import atomic_file
 from luminous_sim.world.posed import PosedObject, PosedScene
 
 NAMESPACE = "luminous"

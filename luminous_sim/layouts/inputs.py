@@ -12,11 +12,13 @@ import json
 import math
 import os
 import stat
+from functools import partial
 from typing import Any
 
 import numpy as np
 
 from luminous_sim.errors import LuminousError, mode_kind
+from luminous_sim.fileio import shown
 from luminous_sim.limits import MAX_INPUT_BYTES, MAX_LAYOUT_COORDINATE_M, MAX_LAYOUT_SIDE_M
 
 __all__ = ["MAX_ANGLE", "Fields", "LayoutError", "read_bytes", "read_json", "short"]
@@ -29,11 +31,8 @@ class LayoutError(LuminousError):
     """A layout file (or an input to an importer) that cannot be read: the message names the file and field."""
 
 
-def short(value: Any, n: int = 40) -> str:
-    """`repr(value)`, cut to `n` characters."""
-    text = repr(value)
-    return text if len(text) <= n else text[: n - 3] + "..."
-
+short = partial(shown, limit=40)
+"""`repr(value)`, cut to 40 characters."""
 
 class TypeName(str):
     """A type's name in a message: shown as is, not quoted like a value."""

@@ -125,7 +125,7 @@ def train_layouts(out: Path, per_type: int = 80, epochs: int = 16, seed: int = 0
     """Train a model on CSSG's layouts in `per_type` rooms of each type (`trainset.cssg_layouts`) and write its
     checkpoint to `out` atomically. The same arguments give the same model."""
     torch = _torch()
-    from luminous_sim.assets.objio import write_atomic
+    from luminous_sim.fileio import write_atomic
     from luminous_sim.layouts.atiss_net import NetConfig, TrainConfig, checkpoint, train
 
     t0 = time.perf_counter()

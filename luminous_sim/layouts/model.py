@@ -218,7 +218,7 @@ class Layout(_Model):
         return json.dumps(self.model_dump(mode="json", exclude_none=True), indent=1, sort_keys=True) + "\n"
 
     def save(self, path: Path) -> None:
-        from luminous_sim.assets.objio import write_atomic
+        from luminous_sim.fileio import write_atomic
 
         write_atomic(Path(path), self.to_json())
 

@@ -35,7 +35,7 @@ def schema_text() -> str:
 
 def export_schema(out_dir: str | os.PathLike[str] = SCHEMA_DIR) -> Path:
     """Write the schema to `out_dir/luminous-layout-v1.schema.json` (making the folder); return the path."""
-    from luminous_sim.assets.objio import write_atomic
+    from luminous_sim.fileio import write_atomic
 
     path = Path(out_dir) / SCHEMA_FILENAME
     write_atomic(path, schema_text())

@@ -116,7 +116,7 @@ def verify_library(root: Path, expected: str) -> None:
 
 
 def _write_stamp(stamp: Path, digest: str) -> None:
-    from luminous_sim.assets.objio import write_atomic
+    from luminous_sim.fileio import write_atomic
 
     with contextlib.suppress(OSError):  # a read-only cache only costs the next process the hashing
         write_atomic(stamp, digest)

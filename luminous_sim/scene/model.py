@@ -18,6 +18,7 @@ import json
 import math
 import warnings
 from collections.abc import Iterator, Mapping
+from functools import partial
 from pathlib import Path
 from typing import Any, Final, Literal
 
@@ -25,6 +26,7 @@ from pydantic import BaseModel, ConfigDict, Field, ValidationError, field_valida
 from shapely.errors import ShapelyError
 
 from luminous_sim.errors import LuminousError, read_file_bytes
+from luminous_sim.fileio import one_line, shown
 from luminous_sim.limits import (
     MAX_INPUT_BYTES,
     MAX_LAYOUT_COORDINATE_M,
@@ -76,10 +78,7 @@ ROOM_MARGIN_M = 1.0
 """How far outside its room's floor box (and below the floor, above the ceiling) an object's origin may lie."""
 
 
-def _show(value: Any) -> str:
-    text = repr(value)
-    return text if len(text) <= 60 else text[:57] + "..."
-
+_show = partial(shown, limit=60)
 
 def _number(v: Any) -> bool:
     return isinstance(v, int | float) and not isinstance(v, bool)
@@ -375,7 +374,7 @@ class Scene(BaseModel):
         Raises:
             SceneError: the scene breaks a rule (naming `path`, the object and the field).
         """
-        from luminous_sim.assets.objio import write_atomic
+        from luminous_sim.fileio import write_atomic
 
         check_scene(self, str(path))
         write_atomic(Path(path), self.to_json())
@@ -412,7 +411,7 @@ def check_scene(scene: Scene, where: str = "scene") -> Scene:
             warnings.simplefilter("ignore")
             text = scene.to_json()
     except (ValueError, TypeError) as exc:  # a field of a kind JSON cannot hold
-        raise SceneError(f"not a valid scene ({' '.join(str(exc).split())[:200]})", where=where) from None
+        raise SceneError(f"not a valid scene ({one_line(str(exc), 200)})", where=where) from None
     Scene.from_json(text, where)
     return scene
 

@@ -45,9 +45,10 @@ import numpy as np
 
 from luminous_sim.env.config import IMAGE_SIZE
 from luminous_sim.errors import LuminousError
+from luminous_sim.fileio import one_line, shown
 from luminous_sim.thor.event import Event, object_color, object_name
-from luminous_sim.thor.scenes import SceneIndex, ThorSceneError, Trial, one_line, poses_key
-from luminous_sim.world.arguments import number, shown
+from luminous_sim.thor.scenes import SceneIndex, ThorSceneError, Trial, poses_key
+from luminous_sim.world.arguments import number
 
 RENDER_FLAGS = frozenset({"renderImage", "renderDepthImage", "renderClassImage", "renderObjectImage",
                           "renderNormalsImage", "tempRenderChange"})

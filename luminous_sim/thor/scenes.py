@@ -27,6 +27,7 @@ from typing import Any
 
 from luminous_sim.benchmark import trial_folders
 from luminous_sim.errors import LuminousError, link_or_kind, read_json_file
+from luminous_sim.fileio import one_line
 from luminous_sim.limits import MAX_INPUT_BYTES
 from luminous_sim.scene import Scene
 
@@ -47,10 +48,6 @@ class ThorSceneError(LuminousError):
     poses in this floor plan, or several different scenes with them). The message is one line."""
 
 
-def one_line(text: str, limit: int = 1000) -> str:
-    """`text` on one line (a path may hold a newline), cut to `limit` characters."""
-    flat = " ".join(text.split())
-    return flat if len(flat) <= limit else flat[:limit - 3] + "..."
 
 
 def _coordinate(value: Any, where: str) -> float:

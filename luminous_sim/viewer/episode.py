@@ -9,11 +9,13 @@ import math
 import os
 import stat
 from dataclasses import dataclass
+from functools import partial
 from pathlib import Path
 from typing import Any, Final
 
 from luminous_sim.data.manifest import plain_name
 from luminous_sim.errors import LuminousError, mode_kind, read_file_bytes
+from luminous_sim.fileio import one_line, shown
 from luminous_sim.limits import (
     MAX_EPISODE_ACTIONS,
     MAX_FRAME_BYTES,
@@ -80,10 +82,7 @@ def _read(path: Path) -> dict[str, Any]:
     return data
 
 
-def _short(value: Any) -> str:
-    text = repr(value)
-    return text if len(text) <= 60 else text[:57] + "..."
-
+_short = partial(shown, limit=60)
 
 def _whole(value: Any) -> int | None:
     """`value` as a whole number (an int, or a float without a fraction), else None (bools, NaN, inf, text)."""
@@ -134,7 +133,7 @@ def _frame(path: Path) -> Path | None:
         with Image.open(path) as im:
             width, height = im.size
     except (OSError, ValueError, Image.DecompressionBombError) as exc:
-        raise ViewerError(f"{path}: not an image ({' '.join(str(exc).split())[:120]})") from None
+        raise ViewerError(f"{path}: not an image ({one_line(str(exc), 120)})") from None
     if width * height > MAX_FRAME_PIXELS:
         raise ViewerError(f"{path}: {width}x{height} pixels; a frame may hold at most {MAX_FRAME_PIXELS} "
                           "(luminous_sim.limits.MAX_FRAME_PIXELS)")

@@ -21,6 +21,7 @@ from typing import Any
 import numpy as np
 
 from luminous_sim.errors import Failure, FailureCode
+from luminous_sim.fileio import shown
 from luminous_sim.vocab import INTERACTION_ACTIONS, TELEPORT_ACTIONS
 from luminous_sim.world.agent import GRID, HORIZON_MAX, HORIZON_MIN, HORIZON_STEP, ROTATE_STEP, AgentPose
 from luminous_sim.world.navigation import NavGrid
@@ -76,13 +77,6 @@ def number(value: Any) -> int | float | None:
     return None
 
 
-def shown(value: Any, limit: int = 60) -> str:
-    """A value as a message shows it: its repr on one line, cut to `limit` characters."""
-    try:
-        text = " ".join(repr(value).split())
-    except ValueError:  # an int too long for a string
-        text = f"an integer of {value.bit_length()} bits"
-    return text if len(text) <= limit else text[:limit - 3] + "..."
 
 
 def _invalid(message: str) -> Failure:

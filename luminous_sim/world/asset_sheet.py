@@ -9,7 +9,8 @@ import numpy as np
 from PIL import Image, ImageDraw, ImageFont
 
 from luminous_sim.assets.catalog import AssetEntry
-from luminous_sim.assets.objio import png_bytes, write_atomic
+from luminous_sim.assets.objio import png_bytes
+from luminous_sim.fileio import write_atomic
 from luminous_sim.world.asset_loader import load_asset, set_joint, show_state
 from luminous_sim.world.camera import render
 from luminous_sim.world.client import add_floor, new_client

@@ -17,10 +17,11 @@ import numpy as np
 
 from luminous_sim.assets.catalog import Catalog, default_catalog
 from luminous_sim.errors import FailureCode
+from luminous_sim.fileio import shown
 from luminous_sim.scene.model import Scene
 from luminous_sim.vocab import AGENT_ACTIONS, INTERACTION_ACTIONS, TELEPORT_ACTIONS
 from luminous_sim.world.agent import AgentPose
-from luminous_sim.world.arguments import argument_failure, shown, teleport_pose
+from luminous_sim.world.arguments import argument_failure, teleport_pose
 from luminous_sim.world.camera import Frame, render
 from luminous_sim.world.client import BulletClient, body_aabb
 from luminous_sim.world.config import WorldConfig

@@ -9,9 +9,9 @@ import numpy as np
 import pytest
 
 from luminous_sim.errors import FailureCode
+from luminous_sim.fileio import shown
 from luminous_sim.world import World, WorldConfig, interaction_args
 from luminous_sim.world.agent import AgentPose
-from luminous_sim.world.arguments import shown
 from tests.world.conftest import obj
 from tests.world.fuzz import snapshot
 from tests.world.test_interactions import go_to

@@ -8,11 +8,11 @@ from __future__ import annotations
 
 import hashlib
 import json
-import os
 from functools import cache
 from pathlib import Path
 from typing import Any
 
+from luminous_sim.fileio import write_atomic
 from luminous_sim.language.speaker.errors import SpeakerError, check_checkpoint_path
 
 BEAMS = (3, 1, 5)
@@ -75,6 +75,4 @@ def annotate_trial(traj_data: Path, speaker_path: str | Path) -> None:
     for k, ann in enumerate(anns):
         goal, steps = speaker.describe_trajectory(traj, beam_width=BEAMS[min(k, len(BEAMS) - 1)])
         ann["task_desc"], ann["high_descs"] = goal, steps
-    tmp = traj_data.with_name(f".{traj_data.name}.tmp")
-    tmp.write_text(json.dumps(data, sort_keys=True, indent=4))
-    os.replace(tmp, traj_data)
+    write_atomic(traj_data, json.dumps(data, sort_keys=True, indent=4))

@@ -4,12 +4,12 @@ from __future__ import annotations
 
 import os
 import re
-import tempfile
 from pathlib import Path
 from typing import Any
 
 import torch
 
+from luminous_sim.fileio import atomic_file
 from luminous_sim.language.speaker.errors import SpeakerError, check_checkpoint_path
 
 FORMAT = "luminous-speaker/1"
@@ -21,18 +21,10 @@ def save_checkpoint(path: str | Path, payload: dict[str, Any]) -> None:
 
     A crash mid-write leaves the previous checkpoint intact.
     """
-    path = Path(path)
-    path.parent.mkdir(parents=True, exist_ok=True)
-    fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=path.parent)
-    try:
-        with os.fdopen(fd, "wb") as fh:
-            torch.save({"format": FORMAT, **payload}, fh)
-            fh.flush()
-            os.fsync(fh.fileno())
-        os.replace(tmp, path)
-    except BaseException:
-        Path(tmp).unlink(missing_ok=True)
-        raise
+    with atomic_file(Path(path)) as tmp, open(tmp, "wb") as fh:
+        torch.save({"format": FORMAT, **payload}, fh)
+        fh.flush()
+        os.fsync(fh.fileno())
 
 
 def torch_reason(exc: BaseException) -> str:
