@@ -110,3 +110,14 @@ def test_the_agents_import_no_world_no_planner_and_no_expert():
     problems = [f"{path.relative_to(PKG)} imports {name}" for path in sorted((PKG / "agents").rglob("*.py"))
                 for name in sorted(_imports(path)) if name.startswith(AGENT_BLIND)]
     assert not problems, "\n".join(problems)
+
+
+def test_no_module_takes_another_modules_private_names():
+    """A name with a leading underscore is its module's own: no other module imports it (issue 42)."""
+    taken = []
+    for path in PKG.rglob("*.py"):
+        for node in ast.walk(ast.parse(path.read_text())):
+            if isinstance(node, ast.ImportFrom) and node.module and node.module.startswith("luminous_sim"):
+                taken += [f"{path.relative_to(PKG)}:{node.lineno} {node.module}.{a.name}" for a in node.names
+                          if a.name.startswith("_") and not a.name.startswith("__")]
+    assert not taken, "private names imported across modules:\n" + "\n".join(taken)

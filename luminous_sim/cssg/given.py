@@ -27,7 +27,7 @@ from luminous_sim.cssg.objects import place_object
 from luminous_sim.cssg.pipeline import Generated
 from luminous_sim.cssg.reach import FloorPiece
 from luminous_sim.cssg.requests import Request, requests_from_cdf
-from luminous_sim.cssg.structure import _add_anchors
+from luminous_sim.cssg.structure import add_anchors
 from luminous_sim.cssg.tables import floor_relations, generation_layer, supports_for
 from luminous_sim.cssg.validate import check_layout
 from luminous_sim.rooms.shell import RoomShell
@@ -309,7 +309,7 @@ def place_given(shell: RoomShell, placements: list[Placement], seed: int = 0, ca
     for host in [q for q in draft.placed if q.entry.anchors]:  # a sink's basin and faucet, unless given
         have = {q.obj.type for q in draft.placed if q.obj.parent == host.obj.id}
         if not have & {a["type"] for a in host.entry.anchors}:
-            for part in _add_anchors(draft, host.obj, host.entry):
+            for part in add_anchors(draft, host.obj, host.entry):
                 repairs.append(Repair(part.id, part.type, "placed", f"part of {host.obj.id}"))
     requests = _object_requests(shell, rng, draft, loose, defaults, required)
     by_name: dict[str, str] = {}

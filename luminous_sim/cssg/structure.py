@@ -87,7 +87,7 @@ def _add_against(draft: SceneDraft, wall: Wall, entry: AssetEntry, u_start: floa
     return draft.add(entry, pose.x, pose.y, z - entry.bbox_min[2], pose.yaw, "fixture", fixed)
 
 
-def _add_anchors(draft: SceneDraft, host: SceneObject, entry: AssetEntry) -> list[SceneObject]:
+def add_anchors(draft: SceneDraft, host: SceneObject, entry: AssetEntry) -> list[SceneObject]:
     """The objects an asset brings along (a Sink's SinkBasin and Faucet), at their anchor poses."""
     out = []
     for anchor in entry.anchors:
@@ -210,7 +210,7 @@ def _fill_run(draft: SceneDraft, wall: Wall, run: CounterRun, slots: list[Fixtur
             continue
         host = _add_against(draft, wall, entry, start)
         if slot.type == "Sink":
-            _add_anchors(draft, host, entry)
+            add_anchors(draft, host, entry)
         else:
             _stove(draft, wall, slot, host.position[2] + entry.bbox_max[2], run.depth, host.id)
         u = max(u, start + _width(entry))  # a piece wider than its slot pushes the next counter along
@@ -280,7 +280,7 @@ def place_fixtures(draft: SceneDraft) -> None:
             continue
         u = places[entry.id]
         host = _add_against(draft, wall, entry, u)
-        _add_anchors(draft, host, entry)
+        add_anchors(draft, host, entry)
 
 
 def fixture_types(shell: RoomShell, catalog: Catalog) -> set[str]:

@@ -20,7 +20,7 @@ STRUCTURE = "structure"
 """The node the floor, walls and ceiling hang under (their own nodes: `floor#0`, `wall#3`, `ceiling#0`)."""
 
 
-def _coloured(mesh: trimesh.Trimesh, rgba: RGBA, name: str) -> trimesh.Trimesh:
+def coloured_mesh(mesh: trimesh.Trimesh, rgba: RGBA, name: str) -> trimesh.Trimesh:
     colour = [round(255 * min(max(c, 0.0), 1.0)) for c in rgba]
     material = PBRMaterial(name=name, baseColorFactor=colour, metallicFactor=0.0, roughnessFactor=0.8,
                            alphaMode="BLEND" if rgba[3] < 1.0 else "OPAQUE", doubleSided=True)
@@ -29,7 +29,7 @@ def _coloured(mesh: trimesh.Trimesh, rgba: RGBA, name: str) -> trimesh.Trimesh:
     return out
 
 
-def _material_name(rgba: RGBA) -> str:
+def material_name(rgba: RGBA) -> str:
     return "rgba_" + "_".join(f"{c:.3f}" for c in rgba)
 
 
@@ -41,13 +41,13 @@ def glb_scene(posed: PosedScene, ceiling: bool = True) -> trimesh.Scene:
     for box in posed.structure:
         if not box.visible or (not ceiling and box.kind in ("ceiling", "light")):
             continue
-        scene.add_geometry(_coloured(box_mesh(box), box.rgba, _material_name(box.rgba)), node_name=box.name,
+        scene.add_geometry(coloured_mesh(box_mesh(box), box.rgba, material_name(box.rgba)), node_name=box.name,
                            geom_name=box.name, parent_node_name=STRUCTURE, transform=box_matrix(box))
     for obj in posed.objects:
         scene.graph.update(frame_from=ROOT, frame_to=obj.object_id, matrix=object_matrix(obj))
         for part in visual_parts(obj):
             name = f"{obj.object_id}/{part.name}"
-            scene.add_geometry(_coloured(part.mesh, part.rgba, _material_name(part.rgba)), node_name=name,
+            scene.add_geometry(coloured_mesh(part.mesh, part.rgba, material_name(part.rgba)), node_name=name,
                                geom_name=name, parent_node_name=obj.object_id)
     return scene
 

@@ -21,7 +21,7 @@ class Step:
     receptacle_id: str | None = None
 
 
-def _gating_parent(state: WorldState, oid: str) -> str | None:
+def gating_parent(state: WorldState, oid: str) -> str | None:
     """The closest openable container (Fridge, Cabinet, Microwave, Drawer, Safe, Box) holding `oid`."""
     parent = state.objects[oid].parent if oid in state.objects else None
     while parent is not None:
@@ -49,9 +49,9 @@ def expand(action: str, args: Mapping[str, str], state: WorldState, keep_open: b
     if action in ("PickupObject", "SliceObject", "PutObject"):
         r = args.get("receptacleObjectId")
         if r is None:
-            gate = _gating_parent(state, o)
+            gate = gating_parent(state, o)
         else:
-            gate = r if state.objects[r].object_type in GATING_OPENABLE else _gating_parent(state, r)
+            gate = r if state.objects[r].object_type in GATING_OPENABLE else gating_parent(state, r)
         if auto_doors and gate is not None and not state.objects[gate].isOpen:
             close = [] if keep_open else [Step("CloseObject", gate)]
             return [Step("OpenObject", gate), Step(action, o, r), *close]

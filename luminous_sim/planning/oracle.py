@@ -13,7 +13,7 @@ import numpy as np
 from luminous_sim.cdf.predicates import And, Atom, Exists, Expr, Not
 from luminous_sim.errors import Failure, FailureCode, PlanningError
 from luminous_sim.planning.alfred_actions import interaction_api, nav_api, type_name
-from luminous_sim.planning.expand import Step, _gating_parent, expand
+from luminous_sim.planning.expand import Step, expand, gating_parent
 from luminous_sim.planning.navigation import NavGraph, goto_actions
 from luminous_sim.planning.trajectory import Trajectory
 from luminous_sim.vocab import DISCRETE_NAVIGATION
@@ -151,7 +151,7 @@ class Oracle:
     def _pose_target(self, object_id: str) -> str:
         """Where to stand for an object: the closed container it is in, if any."""
         state = self.view.state
-        gate = _gating_parent(state, object_id) if object_id in state.objects else None
+        gate = gating_parent(state, object_id) if object_id in state.objects else None
         if gate is not None and not state.objects[gate].isOpen:
             return gate
         return object_id

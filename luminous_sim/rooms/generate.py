@@ -124,7 +124,7 @@ def snake(room_type: str) -> str:
     )
 
 
-def _u(rng: np.random.Generator, lo_hi: tuple[float, float], step: float = SNAP) -> float:
+def snapped_uniform(rng: np.random.Generator, lo_hi: tuple[float, float], step: float = SNAP) -> float:
     return snap(rng.uniform(*lo_hi), step)
 
 
@@ -197,7 +197,7 @@ def _doors(
     used: set[str] = set()
     margin = max(CORNER_MARGIN, thickness + SNAP)
     for k in range(count):
-        width, height = _u(rng, DOOR_WIDTH), _u(rng, DOOR_HEIGHT)
+        width, height = snapped_uniform(rng, DOOR_WIDTH), snapped_uniform(rng, DOOR_HEIGHT)
         clear = r4(width + DOOR_CLEARANCE_EXTRA)
         opts = []
         for w in walls:
@@ -226,7 +226,7 @@ def _doors(
     return doors
 
 
-def _windows(shell: RoomShell, rng: np.random.Generator, spec: RoomSpec,
+def draw_windows(shell: RoomShell, rng: np.random.Generator, spec: RoomSpec,
              outside: Collection[str] | None = None) -> list[Window]:
     """Windows drawn by the spec's counts and sizes; only on the walls in `outside` when it is given (a
     house's room has windows on its outside walls only)."""
@@ -245,8 +245,8 @@ def _windows(shell: RoomShell, rng: np.random.Generator, spec: RoomSpec,
         spans.setdefault(sink.wall, []).append((mid - MIRROR_SPAN / 2, mid + MIRROR_SPAN / 2))
         sink = None
     for k in range(count):
-        width, sill = _u(rng, spec.window_width), _u(rng, spec.window_sill)
-        height = min(_u(rng, spec.window_height), snap(shell.wall_height - HEAD_ROOM - sill, SNAP))
+        width, sill = snapped_uniform(rng, spec.window_width), snapped_uniform(rng, spec.window_sill)
+        height = min(snapped_uniform(rng, spec.window_height), snap(shell.wall_height - HEAD_ROOM - sill, SNAP))
         if height < 0.4:
             continue
         opts: list[tuple[Wall, float]] = []
@@ -328,7 +328,7 @@ def generate_shell(
         if drawn is None:
             continue
         poly, zones = drawn
-        height, thickness = _u(rng, WALL_HEIGHT), _u(rng, WALL_THICKNESS, 0.01)
+        height, thickness = snapped_uniform(rng, WALL_HEIGHT), snapped_uniform(rng, WALL_THICKNESS, 0.01)
         ring = canonical_ring(poly.exterior.coords)
         walls = walls_from_outline(ring)
         floor = Polygon(ring)
@@ -356,7 +356,7 @@ def generate_shell(
             fixtures=plan,
             zones=tuple(Zone(name=k, polygon=zone_polygon(v)) for k, v in zones.items()),
         )
-        windows = _windows(shell, rng, spec)
+        windows = draw_windows(shell, rng, spec)
         shell = shell.model_copy(update={"windows": tuple(windows)})
         shell = RoomShell.from_dict(shell.model_dump(), where=f"room {name!r}")
         problems = shell_problems(shell)

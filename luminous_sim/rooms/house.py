@@ -25,7 +25,7 @@ from shapely.geometry import LineString, Polygon
 from luminous_sim.errors import RoomError
 from luminous_sim.rooms.checks import shell_problems
 from luminous_sim.rooms.fixtures import plan_fixtures
-from luminous_sim.rooms.generate import ROOM_SPECS, WALL_HEIGHT, _u, _windows
+from luminous_sim.rooms.generate import ROOM_SPECS, WALL_HEIGHT, draw_windows, snapped_uniform
 from luminous_sim.rooms.geometry import canonical_ring, r4, snap, snap_up
 from luminous_sim.rooms.shell import (
     Door,
@@ -140,7 +140,7 @@ def plan_house(rooms: Sequence[RoomRequest], rng: np.random.Generator, *, size: 
     width, depth = size if size is not None else _outline_size(rooms, rng, 0)
     if not (MIN_SIDE <= width <= MAX_SIDE and MIN_SIDE <= depth <= MAX_SIDE):
         raise RoomError(f"house size {width:g} x {depth:g} m: expected sides within {MIN_SIDE:g}..{MAX_SIDE:g} m")
-    height = _u(rng, WALL_HEIGHT)
+    height = snapped_uniform(rng, WALL_HEIGHT)
     wanted = {frozenset(p) for p in adjacency}
     why = "no partition drawn"
     for attempt in range(PLAN_ATTEMPTS):
@@ -470,7 +470,7 @@ def _room_shell(cell: _Cell, req: RoomRequest, doors: list[HouseDoor], walls: di
     if fixtures is None:
         return None
     shell = base.model_copy(update={"doors": tuple(room_doors), "fixtures": fixtures})
-    windows = _windows(shell, rng, ROOM_SPECS[req.room_type], outside=outside)
+    windows = draw_windows(shell, rng, ROOM_SPECS[req.room_type], outside=outside)
     shell = RoomShell.from_dict({**shell.model_dump(), "windows": windows}, where=f"room {req.name!r}")
     return None if shell_problems(shell) else shell
 

@@ -52,12 +52,12 @@ def _object_glb(obj: Any) -> bytes:
     """The body's visual meshes, in its own frame and with their colours, as one glTF binary."""
     import trimesh
 
-    from luminous_sim.export.glb import _coloured, _material_name
+    from luminous_sim.export.glb import coloured_mesh, material_name
     from luminous_sim.export.meshes import visual_parts
 
     scene = trimesh.Scene()
     for part in visual_parts(obj):
-        scene.add_geometry(_coloured(part.mesh, part.rgba, _material_name(part.rgba)), node_name=part.name,
+        scene.add_geometry(coloured_mesh(part.mesh, part.rgba, material_name(part.rgba)), node_name=part.name,
                            geom_name=part.name)
     return bytes(scene.export(file_type="glb"))
 

@@ -74,7 +74,7 @@ def load_asset(
                 loaded.colors[(vis["link"], vis["index"])] = [*color, 1.0]
     if rng is not None or color is not None:
         for vis in entry.visuals:
-            set_visual_alpha(client, loaded, vis["link"], vis["index"], _default_alpha(vis["state"]))
+            set_visual_alpha(client, loaded, vis["link"], vis["index"], default_alpha(vis["state"]))
     return loaded
 
 
@@ -82,7 +82,7 @@ HIDDEN_STATES = ("on", "dirty", "open")
 """State visuals hidden when an asset is loaded (the URDF gives them alpha 0)."""
 
 
-def _default_alpha(state: str | None) -> float:
+def default_alpha(state: str | None) -> float:
     return 0.0 if state in HIDDEN_STATES else 1.0
 
 

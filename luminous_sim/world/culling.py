@@ -9,7 +9,7 @@ set to alpha 0. A culled link has no pixel in the frame, so the frame is the sam
 culled; the outdoors is, when no doorway or window can show it (`world.portals`). Only TinyRenderer is
 culled: the EGL path draws on the GPU.
 
-The test is vectorised: a table of every object link's box (`_Boxes`, made again when an object is added,
+The test is vectorised: a table of every object link's box (`Boxes`, made again when an object is added,
 removed or replaced), every pose asked of PyBullet into one array, the corners transformed again only for
 the boxes whose pose changed, and one product against the frustum's planes for all of them.
 
@@ -131,7 +131,7 @@ def _rotations(quats: np.ndarray) -> np.ndarray:
     ], axis=1)
 
 
-class _Boxes:
+class Boxes:
     """Every object link with a bounded visual, as flat arrays: the corners of its box in the frame PyBullet
     reports the link's pose in (for a base, its inertial frame), where its pose is asked for, and its world
     corners for the poses last seen. Made for one set of loaded assets (`loaded`); made again when it changes."""
@@ -261,7 +261,7 @@ class FrustumCuller:
         self.client = client
         """The client itself (not the `CullingClient` around it): the culled render draws through it."""
         self._objects = objects
-        self._table: _Boxes | None = None
+        self._table: Boxes | None = None
         self._stale = True
         self._hidden: dict[int, tuple[LoadedAsset, str, int, list[int]]] = {}
         """Links kept hidden, by box index: asset, link name, link index, the visuals to show again."""
@@ -290,7 +290,7 @@ class FrustumCuller:
         near = near_eye_plane(view, table.world_vertices)
         return bool(near.any()) and bool(near[table.triangles].all(axis=1).any())
 
-    def posed_boxes(self) -> _Boxes:
+    def posed_boxes(self) -> Boxes:
         """The box table with the poses of now (asked of PyBullet again only after a call that can move a body)."""
         return self._posed()
 
@@ -304,7 +304,7 @@ class FrustumCuller:
         """A body or link may have moved: ask every pose again at the next cull."""
         self._stale = True
 
-    def _boxes(self) -> _Boxes:
+    def _boxes(self) -> Boxes:
         """The box table for the objects now (made again when an object was added, removed or replaced: a body
         id can be reused after removeBody, so the assets themselves are compared)."""
         table = self._table
@@ -312,11 +312,11 @@ class FrustumCuller:
         if table is None or len(table.loaded) != len(objects) \
                 or any(a is not b for a, b in zip(table.loaded, objects, strict=True)):
             self.reveal()  # the hidden links are indexed by the old table
-            table = self._table = _Boxes(self.client, list(objects))
+            table = self._table = Boxes(self.client, list(objects))
             self._stale = True
         return table
 
-    def _posed(self) -> _Boxes:
+    def _posed(self) -> Boxes:
         """The box table with the poses of now (asked again only after a call that can move a body)."""
         table = self._boxes()
         if self._stale and table.keys:
@@ -324,7 +324,7 @@ class FrustumCuller:
             self._stale = False
         return table
 
-    def _outside(self, view_proj: np.ndarray, margin: tuple[float, float]) -> tuple[_Boxes, np.ndarray]:
+    def _outside(self, view_proj: np.ndarray, margin: tuple[float, float]) -> tuple[Boxes, np.ndarray]:
         table = self._posed()
         if not table.keys:
             return table, np.zeros(0, dtype=bool)

@@ -23,7 +23,7 @@ from luminous_sim.world.culling import link_visual_files, visual_obj_arrays
 
 if TYPE_CHECKING:
     from luminous_sim.world.asset_loader import LoadedAsset
-    from luminous_sim.world.culling import FrustumCuller, _Boxes
+    from luminous_sim.world.culling import Boxes, FrustumCuller
 
 # PyBullet's box visual (bullet3 examples/OpenGLWindow/ShapeData.h: cube_vertices_textured, cube_indices): each
 # corner's signs and normal, and the triangles, in PyBullet's order (the order sets the rounding of depth)
@@ -189,7 +189,7 @@ class RasterScene:
         self.models[items, :3, :3] = _rotations(poses[:, 3:])
         self.models[items, :3, 3] = poses[:, :3]
 
-    def update(self, table: _Boxes) -> None:
+    def update(self, table: Boxes) -> None:
         """The assets' model matrices for the culler's poses (set again only when its table or a pose changed)
         and their colours of now (read again only after `set_visual_alpha` changed one)."""
         if self._posed is None or self._posed[0] is not table or self._posed[1] != table.version:
@@ -231,7 +231,7 @@ class RasterScene:
             out[self._of_body.get(body, [])] = False
         return out
 
-    def render(self, view: list[float], proj: list[float], width: int, height: int, light, table: _Boxes,
+    def render(self, view: list[float], proj: list[float], width: int, height: int, light, table: Boxes,
                outside: np.ndarray, hidden_bodies: list[int]) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         """RGB (h, w, 3) uint8, PyBullet's depth buffer (h, w) float32 and segmentation (h, w) int32, as
         `getCameraImage` with TinyRenderer returns them for this view (rows top-down); `table` is the culler's

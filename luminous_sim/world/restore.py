@@ -25,7 +25,7 @@ import numpy as np
 
 from luminous_sim.states.model import WorldState
 from luminous_sim.world.agent import AgentPose
-from luminous_sim.world.asset_loader import _default_alpha, set_visual_alpha, show_state
+from luminous_sim.world.asset_loader import default_alpha, set_visual_alpha, show_state
 
 if TYPE_CHECKING:
     from luminous_sim.world.world import World
@@ -78,7 +78,7 @@ def restore(world: World, snap: StartSnapshot) -> None:
         loaded = world.built.objects[obj.id]
         for vis in loaded.entry.visuals:
             if vis["state"] is not None:
-                set_visual_alpha(c, loaded, vis["link"], vis["index"], _default_alpha(vis["state"]))
+                set_visual_alpha(c, loaded, vis["link"], vis["index"], default_alpha(vis["state"]))
         if obj.states.get("isToggled"):
             show_state(c, loaded, "on", True)
         if obj.states.get("isDirty"):

@@ -11,7 +11,7 @@ import pytest
 from pybullet_utils.bullet_client import BulletClient
 
 from luminous_sim.world.config import WorldConfig
-from luminous_sim.world.culling import _Boxes
+from luminous_sim.world.culling import Boxes
 from luminous_sim.world.raster_scene import RasterScene, UnsupportedGeometry, _visual_files
 from luminous_sim.world.world import World
 from tests.world.conftest import mug_into_fridge, obj
@@ -38,7 +38,7 @@ def test_a_box_is_drawn_as_tinyrenderer_draws_it():
         view = c.computeViewMatrix([-1.2, -0.7, 1.1], [1.0, 0.2, 0.3], [0, 0, 1])
         proj = c.computeProjectionMatrixFOV(60, 1, 0.05, 20)
         light = [0.4, -0.6, 1.0]
-        rgb, depth, seg = scene.render(view, proj, 64, 64, light, _Boxes(c, []), np.zeros(0, bool), [])
+        rgb, depth, seg = scene.render(view, proj, 64, 64, light, Boxes(c, []), np.zeros(0, bool), [])
         _, _, rgba, z, ref_seg = c.getCameraImage(64, 64, view, proj, renderer=pb.ER_TINY_RENDERER, shadow=0,
                                                   lightDirection=light,
                                                   flags=pb.ER_SEGMENTATION_MASK_OBJECT_AND_LINKINDEX)
