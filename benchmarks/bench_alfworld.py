@@ -138,6 +138,7 @@ def measure(build: Path, games: Path, splits: list[str], planner_sample: int = 0
         play_seconds = time.perf_counter() - start
         rows: dict[str, Counter] = defaultdict(Counter)
         causes: dict[str, Counter] = defaultdict(Counter)
+        lost: list[dict[str, str]] = []
         for record in (r for r in manifest if r["split"] == split):
             task_type = record["task_type"]
             cause = loss_cause(record, games, played)
@@ -147,10 +148,13 @@ def measure(build: Path, games: Path, splits: list[str], planner_sample: int = 0
             rows[task_type]["won"] += cause is None
             if cause is not None:
                 causes[task_type][cause] += 1
+                if not cause.startswith("skipped by ALFWorld"):
+                    lost.append({"trial": record.get("trial") or record["key"], "cause": cause})
         planner = play_planner(games / split, planner_sample) if planner_sample else {}
         steps = [v["steps"] for v in played.values() if v["won"]]
         out["splits"][split] = {"types": {t: dict(rows[t]) for t in sorted(rows)},
                                 "causes": {t: dict(causes[t]) for t in sorted(causes)},
+                                "lost": lost,
                                 "generate_seconds": round(seconds, 1), "play_seconds": round(play_seconds, 1),
                                 "games_played": len(played),
                                 "planner_sample": {"games": len(planner), "won": sum(planner.values())},
@@ -178,6 +182,8 @@ def table(result: dict[str, Any]) -> str:
         for task_type, causes in got["causes"].items():
             for cause, n in sorted(causes.items()):
                 lines.append(f"    loss {task_type}: {cause}: {n}")
+        for loss in got.get("lost", []):
+            lines.append(f"    lost (not skipped): {loss['trial']}: {loss['cause']}")
     return "\n".join(lines)
 
 
